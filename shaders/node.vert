@@ -1,0 +1,20 @@
+#version 330 core
+// One instance per node: a unit sphere scaled to the joint's radius, so bars meet smoothly.
+layout(location = 0) in vec3 unit_position;
+layout(location = 1) in vec3 unit_normal;
+layout(location = 2) in vec3 instance_center;
+layout(location = 3) in float instance_radius;
+layout(location = 4) in vec3 instance_color;
+
+uniform mat4 clip_from_world;
+
+out vec3 world_position;
+out vec3 world_normal;
+out vec3 base_color;
+
+void main() {
+  world_position = instance_center + instance_radius * unit_position;
+  world_normal = unit_normal;
+  base_color = instance_color;
+  gl_Position = clip_from_world * vec4(world_position, 1.0);
+}

@@ -1,0 +1,9 @@
+#version 330 core
+// A full-screen triangle drawn behind everything; no vertex buffer needed.
+out vec2 screen_uv;
+
+void main() {
+  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+  screen_uv = corner;
+  gl_Position = vec4(corner * 2.0 - 1.0, 1.0, 1.0);
+}

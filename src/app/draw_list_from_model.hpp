@@ -1,0 +1,21 @@
+#pragma once
+// The bridge from the physical model to what the renderer draws. It lives in app/ because it is
+// the one place that knows both sides.
+#include <vector>
+
+#include "render/draw_list.hpp"
+
+namespace dinam {
+
+struct Model;
+struct SceneDescription;
+
+// Bars become segments and nodes become joints, each object in its colour. A bar is drawn with
+// the object's render_radius, else its wire radius, but never thinner than 0.2 % of the model's
+// size, so a cloth of fine threads stays visible.
+DrawList make_draw_list(const SceneDescription& scene, const Model& model);
+
+// Node positions in single precision, for the renderer.
+void positions_for_render(const std::vector<Vec3>& x, std::vector<Vec3f>& out);
+
+}  // namespace dinam

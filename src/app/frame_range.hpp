@@ -1,0 +1,20 @@
+#pragma once
+// `--frames A-B`: 1-based, inclusive, within the scene's frames.
+#include <string>
+
+namespace dinam {
+
+struct FrameRange {
+  int first = 1;  // 1-based frame number
+  int last = 1;   // inclusive
+  int count() const { return last - first + 1; }
+};
+
+// Parses "A-B" or a single "A". Throws UserError (with no file location) when it is malformed or
+// outside 1..frame_count.
+FrameRange parse_frame_range(const std::string& text, int frame_count);
+
+// `--size WxH`, each between 16 and 8192. Throws UserError when malformed.
+void parse_image_size(const std::string& text, int& width, int& height);
+
+}  // namespace dinam

@@ -1,0 +1,35 @@
+#include "app/progress.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace dinam {
+
+Progress::Progress(int total, bool enabled)
+    : total_(total), enabled_(enabled && isatty(STDERR_FILENO) != 0) {}
+
+Progress::~Progress() {
+  if (drawn_) {
+    std::fputc('\n', stderr);
+  }
+}
+
+void Progress::update(int done, const std::string& detail) {
+  if (!enabled_) {
+    return;
+  }
+  // Redraw at most ten times a second, and always at the end.
+  const auto now = std::chrono::steady_clock::now();
+  if (drawn_ && done < total_ && now - last_ < std::chrono::milliseconds(100)) {
+    return;
+  }
+  last_ = now;
+  drawn_ = true;
+  fmt::print(stderr, "\r\033[Kframe {}/{} ({:.0f}%)  {}", done, total_, 100.0 * done / total_,
+             detail);
+  std::fflush(stderr);
+}
+
+}  // namespace dinam

@@ -1,0 +1,21 @@
+#pragma once
+// A one-line progress report, redrawn in place, only when stderr is a terminal.
+#include <chrono>
+#include <string>
+
+namespace dinam {
+
+class Progress {
+ public:
+  Progress(int total, bool enabled);
+  ~Progress();
+  void update(int done, const std::string& detail);
+
+ private:
+  int total_;
+  bool enabled_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point last_;
+};
+
+}  // namespace dinam

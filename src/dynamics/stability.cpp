@@ -1,0 +1,82 @@
+#include "dynamics/stability.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace dinam {
+
+double max_frequency_squared_bound(const Model& model) {
+  const Index n = model.node_count();
+  std::vector<Mat3> diagonal_block(n, Mat3::Zero());  // (n_nodes) Σ k n nᵀ, N/m
+  std::vector<double> coupling(n, 0.0);               // (n_nodes) Σ k/√(m_i m_j), 1/s²
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    const double k = model.bar_axial_stiffness[b];
+    const Vec3 direction = (model.node_initial_x[n1] - model.node_initial_x[n0]).normalized();
+    const Mat3 block = k * direction * direction.transpose();
+    diagonal_block[n0] += block;
+    diagonal_block[n1] += block;
+    if (!model.pinned(n0) && !model.pinned(n1)) {
+      const double c = k * std::sqrt(model.node_inv_mass[n0] * model.node_inv_mass[n1]);
+      coupling[n0] += c;
+      coupling[n1] += c;
+    }
+  }
+  double bound = 0.0;
+  for (Index i = 0; i < n; ++i) {
+    if (model.pinned(i)) {
+      continue;
+    }
+    Eigen::SelfAdjointEigenSolver<Mat3> solver;
+    solver.computeDirect(diagonal_block[i], Eigen::EigenvaluesOnly);
+    bound = std::max(bound, solver.eigenvalues().maxCoeff() * model.node_inv_mass[i] + coupling[i]);
+  }
+  return bound;
+}
+
+double critical_timestep(const Model& model) {
+  const double omega_squared = max_frequency_squared_bound(model);
+  if (omega_squared <= 0.0) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return 2.0 / std::sqrt(omega_squared);
+}
+
+TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,
+                         const FileLoc& where) {
+  TimeStep step;
+  step.critical = critical_timestep(model);
+  step.automatic = !requested.has_value();
+  const double frame_interval = 1.0 / fps;
+  double target = 0.0;
+  if (requested) {
+    if (*requested > step.critical) {
+      throw_user_error(where,
+                       "the time step {:.6g} s is above this model's stability limit {:.6g} s "
+                       "(2/ω_max); the central-difference integration would blow up. Use "
+                       "'timestep: auto' or a step of at most {:.6g} s",
+                       *requested, step.critical, step.critical);
+    }
+    target = *requested;
+  } else {
+    target = kAutoTimestepSafety * step.critical;
+  }
+  // Relative slack so that 0.05 s / 0.0005 s counts as exactly 100 steps despite rounding.
+  const double steps = std::ceil(frame_interval / target * (1.0 - 1e-9));
+  if (steps > 1e8) {
+    throw_user_error(where,
+                     "this model needs a time step of {:.3g} s, over {:.3g} steps per frame; "
+                     "stiffen less (lower youngs_modulus) or make the bars heavier",
+                     target, steps);
+  }
+  step.steps_per_frame = std::max(1, static_cast<int>(steps));
+  step.dt = frame_interval / step.steps_per_frame;
+  return step;
+}
+
+}  // namespace dinam

@@ -1,0 +1,147 @@
+#include "io/png_file.hpp"
+
+#include <png.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <system_error>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace dinam {
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using FilePtr = std::unique_ptr<std::FILE, FileCloser>;
+
+// libpng reports errors by longjmp to the setjmp point; these hand the message back as text.
+[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
+  auto* text = static_cast<std::string*>(png_get_error_ptr(png));
+  *text = message;
+  png_longjmp(png, 1);
+}
+
+void on_png_warning(png_structp /*png*/, png_const_charp /*message*/) {}
+
+// Writes without any C++ object needing destruction between setjmp and a possible longjmp.
+bool write_rows(std::FILE* file, const Image& image, const PngOptions& options,
+                std::string& error) {
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  if (png == nullptr) {
+    error = "out of memory";
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_init_io(png, file);
+  png_set_compression_level(png, options.compression_level);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE,
+                 options.filter_rows ? PNG_ALL_FILTERS : PNG_FILTER_NONE);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
+               static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 4;
+  for (int y = 0; y < image.height; ++y) {
+    png_write_row(png, image.rgba.data() + static_cast<std::size_t>(y) * row_bytes);
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+}  // namespace
+
+void write_png(const std::filesystem::path& path, const Image& image, const PngOptions& options) {
+  DINAM_CHECK(image.width > 0 && image.height > 0 &&
+              image.rgba.size() == static_cast<std::size_t>(image.width) * image.height * 4);
+  std::filesystem::path temporary = path;
+  temporary += ".tmp";
+  std::string error;
+  bool ok = false;
+  {
+    FilePtr file(std::fopen(temporary.c_str(), "wb"));
+    if (!file) {
+      throw RuntimeError(
+          fmt::format("cannot write {}: {}", temporary.string(), std::strerror(errno)));
+    }
+    ok = write_rows(file.get(), image, options, error);
+    ok = (std::fflush(file.get()) == 0) && ok;
+  }
+  std::error_code ec;
+  if (ok) {
+    std::filesystem::rename(temporary, path, ec);
+  }
+  if (!ok || ec) {
+    std::filesystem::remove(temporary, ec);
+    throw RuntimeError(fmt::format("cannot write {}: {}", path.string(),
+                                   error.empty() ? "disk full or not writable" : error));
+  }
+}
+
+namespace {
+
+bool read_rows(std::FILE* file, Image& image, std::string& error) {
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
+  if (png == nullptr) {
+    error = "out of memory";
+    return false;
+  }
+  png_infop info = png_create_info_struct(png);
+  if (info == nullptr || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
+  png_init_io(png, file);
+  png_read_info(png, info);
+  // Whatever the file holds, hand back 8-bit RGBA.
+  png_set_expand(png);
+  png_set_strip_16(png);
+  png_set_gray_to_rgb(png);
+  png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
+  png_read_update_info(png, info);
+  image.width = static_cast<int>(png_get_image_width(png, info));
+  image.height = static_cast<int>(png_get_image_height(png, info));
+  image.rgba.resize(static_cast<std::size_t>(image.width) * image.height * 4);
+  std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
+  for (int y = 0; y < image.height; ++y) {
+    rows[static_cast<std::size_t>(y)] =
+        image.rgba.data() + static_cast<std::size_t>(y) * image.width * 4;
+  }
+  png_read_image(png, rows.data());
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
+  return true;
+}
+
+}  // namespace
+
+Image read_png(const std::filesystem::path& path) {
+  FilePtr file(std::fopen(path.c_str(), "rb"));
+  if (!file) {
+    throw RuntimeError(fmt::format("cannot open {}: {}", path.string(), std::strerror(errno)));
+  }
+  unsigned char signature[8] = {};
+  if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0) {
+    throw RuntimeError(fmt::format("{} is not a PNG file", path.string()));
+  }
+  Image image;
+  std::string error;
+  std::rewind(file.get());
+  if (!read_rows(file.get(), image, error)) {
+    throw RuntimeError(fmt::format("cannot read {}: {}", path.string(), error));
+  }
+  return image;
+}
+
+}  // namespace dinam

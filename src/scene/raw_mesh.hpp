@@ -1,0 +1,32 @@
+#pragma once
+// A mesh as read from a file or made by a generator, before it becomes a structure: vertices,
+// closed polygon faces and open polylines. Vertices are not yet welded, so a triangle soup may
+// hold the same point many times; model/ welds them and extracts the unique edges.
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace dinam {
+
+struct RawMesh {
+  std::vector<Vec3> vertices;             // (n_vertices), metres, in world space
+  std::vector<std::vector<Index>> faces;  // closed loops of vertex ids: every side is an edge
+  std::vector<std::vector<Index>> lines;  // open chains of vertex ids: every segment is an edge
+
+  bool has_edges() const;
+};
+
+// Object-to-world placement, applied to a mesh as scale, then rotation, then translation.
+struct Transform {
+  Vec3 scale = Vec3::Ones();
+  Vec3 rotation_degrees = Vec3::Zero();  // about x, then y, then z (world axes)
+  Vec3 translation = Vec3::Zero();       // metres
+
+  Mat3 rotation() const;
+  Vec3 world_from_object(const Vec3& p) const;
+};
+
+void apply_transform(const Transform& transform, RawMesh& mesh);
+
+}  // namespace dinam

@@ -1,0 +1,195 @@
+#include "scene/yaml_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dinam {
+namespace {
+
+std::string describe(const YAML::Node& node) {
+  if (node.IsScalar()) {
+    return fmt::format("'{}'", node.Scalar());
+  }
+  if (node.IsSequence()) {
+    return "a list";
+  }
+  if (node.IsMap()) {
+    return "a map";
+  }
+  return "nothing";
+}
+
+// Levenshtein distance, for "did you mean" suggestions.
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) {
+    row[j] = j;
+  }
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+FileLoc loc_of(const YAML::Node& node, const std::string& file) {
+  const YAML::Mark mark = node.IsDefined() ? node.Mark() : YAML::Mark::null_mark();
+  if (mark.is_null()) {
+    return FileLoc{file, 0, 0};
+  }
+  return FileLoc{file, mark.line + 1, mark.column + 1};
+}
+
+double as_double(const YAML::Node& node, const std::string& file, const std::string& what) {
+  double value = 0.0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, value)) {
+    throw_user_error(loc_of(node, file), "'{}' must be a number, got {}", what, describe(node));
+  }
+  if (!std::isfinite(value)) {
+    throw_user_error(loc_of(node, file), "'{}' must be a finite number, got {}", what,
+                     describe(node));
+  }
+  return value;
+}
+
+int as_int(const YAML::Node& node, const std::string& file, const std::string& what) {
+  int value = 0;
+  if (!node.IsScalar() || !YAML::convert<int>::decode(node, value)) {
+    throw_user_error(loc_of(node, file), "'{}' must be a whole number, got {}", what,
+                     describe(node));
+  }
+  return value;
+}
+
+bool as_bool(const YAML::Node& node, const std::string& file, const std::string& what) {
+  bool value = false;
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, value)) {
+    throw_user_error(loc_of(node, file), "'{}' must be true or false, got {}", what,
+                     describe(node));
+  }
+  return value;
+}
+
+std::string as_string(const YAML::Node& node, const std::string& file, const std::string& what) {
+  if (!node.IsScalar()) {
+    throw_user_error(loc_of(node, file), "'{}' must be a text value, got {}", what, describe(node));
+  }
+  return node.Scalar();
+}
+
+Vec3 as_vec3(const YAML::Node& node, const std::string& file, const std::string& what) {
+  if (!node.IsSequence() || node.size() != 3) {
+    throw_user_error(loc_of(node, file), "'{}' must be a list of three numbers [x, y, z], got {}",
+                     what, describe(node));
+  }
+  return {as_double(node[0], file, what + "[0]"), as_double(node[1], file, what + "[1]"),
+          as_double(node[2], file, what + "[2]")};
+}
+
+YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
+    : node_(node), file_(std::move(file)), path_(std::move(path)) {
+  if (!node_.IsMap()) {
+    throw_user_error(loc_of(node_, file_), "'{}' must be a map of keys, got {}", name(),
+                     describe(node_));
+  }
+}
+
+std::string YamlMap::path(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+bool YamlMap::has(const std::string& key) const {
+  return static_cast<bool>(node_[key]);
+}
+
+YAML::Node YamlMap::get(const std::string& key) {
+  asked_.insert(key);
+  return node_[key];
+}
+
+YAML::Node YamlMap::required(const std::string& key) {
+  const YAML::Node value = get(key);
+  if (value) {
+    return value;
+  }
+  for (const auto& entry : node_) {
+    const std::string present = entry.first.Scalar();
+    if (!asked_.contains(present) && edit_distance(present, key) <= 2) {
+      throw_user_error(loc_of(entry.first, file_),
+                       "unknown key '{}' in '{}' (did you mean '{}'?); '{}' is required", present,
+                       name(), key, key);
+    }
+  }
+  throw_user_error(loc(), "'{}' is missing the required key '{}'", name(), key);
+}
+
+double YamlMap::number(const std::string& key, double fallback) {
+  const YAML::Node value = get(key);
+  return value ? as_double(value, file_, path(key)) : fallback;
+}
+
+double YamlMap::required_number(const std::string& key) {
+  return as_double(required(key), file_, path(key));
+}
+
+int YamlMap::integer(const std::string& key, int fallback) {
+  const YAML::Node value = get(key);
+  return value ? as_int(value, file_, path(key)) : fallback;
+}
+
+bool YamlMap::boolean(const std::string& key, bool fallback) {
+  const YAML::Node value = get(key);
+  return value ? as_bool(value, file_, path(key)) : fallback;
+}
+
+std::string YamlMap::string(const std::string& key, const std::string& fallback) {
+  const YAML::Node value = get(key);
+  return value ? as_string(value, file_, path(key)) : fallback;
+}
+
+Vec3 YamlMap::vec3(const std::string& key, const Vec3& fallback) {
+  const YAML::Node value = get(key);
+  return value ? as_vec3(value, file_, path(key)) : fallback;
+}
+
+Vec3 YamlMap::required_vec3(const std::string& key) {
+  return as_vec3(required(key), file_, path(key));
+}
+
+FileLoc YamlMap::loc(const std::string& key) const {
+  const YAML::Node value = node_[key];
+  return value ? loc_of(value, file_) : loc();
+}
+
+void YamlMap::finish() const {
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.Scalar();
+    if (asked_.contains(key)) {
+      continue;
+    }
+    std::string hint;
+    std::size_t best = 3;  // suggest only keys within two edits
+    for (const std::string& known : asked_) {
+      const std::size_t d = edit_distance(key, known);
+      if (d < best) {
+        best = d;
+        hint = fmt::format(" (did you mean '{}'?)", known);
+      }
+    }
+    std::string known_list;
+    for (const std::string& known : asked_) {
+      known_list += (known_list.empty() ? "" : ", ") + known;
+    }
+    throw_user_error(loc_of(entry.first, file_), "unknown key '{}' in '{}'{}; known keys: {}", key,
+                     name(), hint, known_list);
+  }
+}
+
+}  // namespace dinam

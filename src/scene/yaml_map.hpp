@@ -1,0 +1,65 @@
+#pragma once
+// Typed access to YAML with source locations. YamlMap remembers which keys were read; finish()
+// turns every key nobody read into an error, so a typo such as `densty:` is caught at its line
+// instead of silently falling back to a default (pbrt's ReportUnused).
+#include <yaml-cpp/yaml.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "core/types.hpp"
+
+namespace dinam {
+
+FileLoc loc_of(const YAML::Node& node, const std::string& file);
+
+// Conversions that name the location and the key on failure. `what` is the key path, e.g.
+// "objects[0].material.density".
+double as_double(const YAML::Node& node, const std::string& file, const std::string& what);
+int as_int(const YAML::Node& node, const std::string& file, const std::string& what);
+bool as_bool(const YAML::Node& node, const std::string& file, const std::string& what);
+std::string as_string(const YAML::Node& node, const std::string& file, const std::string& what);
+Vec3 as_vec3(const YAML::Node& node, const std::string& file, const std::string& what);
+
+class YamlMap {
+ public:
+  // Throws if `node` is not a map.
+  YamlMap(const YAML::Node& node, std::string file, std::string path);
+
+  bool has(const std::string& key) const;
+  // Marks `key` as read and returns it (an undefined node when absent).
+  YAML::Node get(const std::string& key);
+  // The same, but a missing key is an error. When a present key is a near miss (`densty` for
+  // `density`), the error is about that typo, at its line.
+  YAML::Node required(const std::string& key);
+
+  double number(const std::string& key, double fallback);
+  double required_number(const std::string& key);
+  int integer(const std::string& key, int fallback);
+  bool boolean(const std::string& key, bool fallback);
+  std::string string(const std::string& key, const std::string& fallback);
+  Vec3 vec3(const std::string& key, const Vec3& fallback);
+  Vec3 required_vec3(const std::string& key);
+
+  // Location of the value under `key` (of the map itself when absent).
+  FileLoc loc(const std::string& key) const;
+  FileLoc loc() const { return loc_of(node_, file_); }
+  std::string path(const std::string& key) const;
+  // The map's own key path, for messages ("objects[0].material"; "the scene" at the root).
+  std::string name() const { return path_.empty() ? "the scene" : path_; }
+  const std::string& file() const { return file_; }
+
+  // Throws on the first key that was never read, suggesting the nearest key that was asked for.
+  // Call it after every key this map may hold has been asked for.
+  void finish() const;
+
+ private:
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+  std::set<std::string> asked_;  // every key asked for, present or not
+};
+
+}  // namespace dinam

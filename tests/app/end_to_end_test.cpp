@@ -1,0 +1,186 @@
+// The program as a user runs it: a scene file in, frames and a movie out, exit codes and
+// messages for bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+
+#include "io/png_file.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs a shell command line and collects what it prints.
+CommandResult run(const std::string& command) {
+  CommandResult result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) {
+    return result;
+  }
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) {
+    result.output += buffer.data();
+  }
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string dinam(const std::string& arguments) {
+  return std::string("'") + DINAM_PROGRAM + "' " + arguments;
+}
+
+// A green rope hanging from a pinned end in front of the camera: 3 frames at 10 fps.
+const char* const kTinyScene = R"(version: 1
+name: tiny
+duration: 0.3
+fps: 10
+camera: {position: [0.5, -3, 1], look_at: [0.5, 0, 0.8], fov: 45}
+image: {width: 640, height: 480}
+objects:
+  - name: rope
+    mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]], segments: 8}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
+    pinned: {indices: [0]}
+    color: [0.1, 0.9, 0.1]
+    render_radius: 0.03
+)";
+
+class EndToEnd : public ::testing::Test {
+ protected:
+  std::filesystem::path write_scene(const std::string& name, const std::string& text) {
+    const std::filesystem::path path = folder_.path() / name;
+    std::ofstream(path) << text;
+    return path;
+  }
+  std::filesystem::path out() const { return folder_.path() / "out"; }
+
+  test::TemporaryFolder folder_{"e2e"};
+};
+
+bool is_green(const std::uint8_t* p) {
+  return p[1] > p[0] + 60 && p[1] > p[2] + 60;
+}
+
+TEST_F(EndToEnd, TinySceneGivesThreeFramesOfTheRequestedSizeAndAMovie) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const CommandResult result =
+      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "' --size 96x64"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* name : {"frame_0001.png", "frame_0002.png", "frame_0003.png"}) {
+    const Image image = read_png(out() / name);  // throws if it is not a valid PNG
+    EXPECT_EQ(image.width, 96) << name;
+    EXPECT_EQ(image.height, 64) << name;
+    int green = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        green += is_green(image.pixel(x, y)) ? 1 : 0;
+      }
+    }
+    // The sky and the ground have no green pixels; the rope covers dozens.
+    EXPECT_GT(green, 20) << name;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out() / "frame_0004.png"));
+  EXPECT_GT(std::filesystem::file_size(out() / "tiny.mp4"), 0u);
+  EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4.part"));
+
+  // ffprobe comes with ffmpeg: the movie holds the 3 frames as H.264 in yuv420p.
+  const CommandResult probe =
+      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+          "stream=codec_name,pix_fmt,nb_read_frames -of csv=p=0 '" +
+          (out() / "tiny.mp4").string() + "'");
+  ASSERT_EQ(probe.exit_code, 0) << probe.output;
+  EXPECT_EQ(probe.output, "h264,yuv420p,3\n");
+}
+
+TEST_F(EndToEnd, FrameRangeWritesOnlyThoseFrames) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
+                                         "' --size 64x48 --frames 2-3 --no-video --quiet"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_EQ(result.output, "");  // --quiet
+  EXPECT_FALSE(std::filesystem::exists(out() / "frame_0001.png"));
+  EXPECT_TRUE(std::filesystem::exists(out() / "frame_0002.png"));
+  EXPECT_TRUE(std::filesystem::exists(out() / "frame_0003.png"));
+  EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
+}
+
+TEST_F(EndToEnd, BadSceneExitsTwoNamingFileLineAndKeyAndWritesNothing) {
+  std::string text = kTinyScene;
+  text.replace(text.find("density: 1000"), 13, "density: -1");
+  const auto scene = write_scene("bad.yaml", text);
+  const CommandResult result =
+      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "'"));
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find(scene.string() + ":10:"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("density"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(EndToEnd, UnstableStepExitsTwoWithBothNumbers) {
+  std::string text = kTinyScene;
+  text.replace(text.find("fps: 10"), 7, "fps: 10\ntimestep: 0.01");
+  const auto scene = write_scene("unstable.yaml", text);
+  const CommandResult result =
+      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "'"));
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("unstable.yaml:5:"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("0.01 s is above"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("stability limit"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out()));
+}
+
+TEST_F(EndToEnd, MissingFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const CommandResult result =
+      run("PATH='" + folder_.path().string() + "' " +
+          dinam("render '" + scene.string() + "' -o '" + out().string() + "' --size 64x48"));
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("apt-get install ffmpeg"), std::string::npos) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(out() / "frame_0003.png"));
+  EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
+}
+
+TEST_F(EndToEnd, UsageErrorsExitTwoAndHelpExitsZero) {
+  EXPECT_EQ(run(dinam("--help")).exit_code, 0);
+  EXPECT_EQ(run(dinam("render --help")).exit_code, 0);
+  EXPECT_EQ(run(dinam("info --help")).exit_code, 0);
+  EXPECT_EQ(run(dinam("")).exit_code, 2);
+  EXPECT_EQ(run(dinam("render")).exit_code, 2);
+  EXPECT_EQ(run(dinam("render x.yaml --bogus")).exit_code, 2);
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  EXPECT_EQ(run(dinam("render '" + scene.string() + "' --frames 2-9")).exit_code, 2);
+  EXPECT_EQ(run(dinam("render '" + scene.string() + "' --size 10")).exit_code, 2);
+  EXPECT_EQ(run(dinam("info '" + (folder_.path() / "missing.yaml").string() + "'")).exit_code, 2);
+}
+
+TEST_F(EndToEnd, InfoPrintsTheModelSummary) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const CommandResult result = run(dinam("info '" + scene.string() + "'"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  for (const char* line :
+       {"nodes            9 (1 pinned)", "bars             8", "axial 8, bending 0, torsion 0",
+        "stability limit", "time step", "steps per frame", "frames           3 at 10 fps"}) {
+    EXPECT_NE(result.output.find(line), std::string::npos) << line << "\n" << result.output;
+  }
+}
+
+TEST(ShippedScenes, FlagIsA120FrameSixSecondScene) {
+  const SceneDescription scene =
+      read_scene(std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/flag.yaml");
+  EXPECT_EQ(scene.frame_count(), 120);
+  EXPECT_DOUBLE_EQ(scene.frame_count() / scene.fps, 6.0);
+  EXPECT_EQ(scene.image_width, 1280);
+  EXPECT_EQ(scene.image_height, 720);
+}
+
+}  // namespace
+}  // namespace dinam

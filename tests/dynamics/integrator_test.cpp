@@ -1,0 +1,134 @@
+#include "dynamics/integrator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "dynamics/stability.hpp"
+#include "model/model.hpp"
+#include "test_support.hpp"
+#include "tolerances.hpp"
+
+namespace dinam {
+namespace {
+
+// One bar along x from a pinned node to a free one: a single mass on a spring. With ρ = 1000,
+// A = 1e-4, L = 1, E = 1e6: k = EA/L = 100 N/m, m = ρAL/2 = 0.05 kg, ω = √(k/m) = √2000 rad/s.
+Model spring_mass_model(double initial_speed) {
+  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+gravity: [0, 0, 0]
+objects:
+  - mesh: {{polyline: {{points: [[0, 0, 0], [1, 0, 0]]}}}}
+    material: {{density: 1000, youngs_modulus: 1.0e6, area: 1.0e-4}}
+    pinned: {{indices: [0]}}
+    initial_velocity: [{}, 0, 0]
+)",
+                                                       initial_speed)));
+}
+
+constexpr double kSpringOmega = 44.721359549995796;  // √2000
+
+// Times of the upward zero crossings of the free node's displacement, linearly interpolated.
+std::vector<double> upward_crossings(const Model& model, double dt, int steps) {
+  State state = initial_state(model, dt);
+  const ForceSwitches forces;
+  std::vector<double> crossings;
+  double previous = state.x[1].x() - 1.0;
+  for (int n = 0; n < steps; ++n) {
+    step(model, dt, forces, state);
+    const double u = state.x[1].x() - 1.0;
+    if (previous < 0.0 && u >= 0.0) {
+      crossings.push_back(state.time - dt * u / (u - previous));
+    }
+    previous = u;
+  }
+  return crossings;
+}
+
+TEST(Integrator, SpringMassOscillatesAtItsNaturalFrequency) {
+  const Model model = spring_mass_model(-0.1);  // start moving left, so it crosses upwards
+  ASSERT_NEAR(model.node_mass[1], 0.05, 1e-15);
+  ASSERT_NEAR(model.bar_axial_stiffness[0], 100.0, 1e-12);
+  const double period = 2.0 * std::numbers::pi / kSpringOmega;
+  const double dt = period / 400.0;
+  const std::vector<double> crossings = upward_crossings(model, dt, 400 * 21);
+  ASSERT_GE(crossings.size(), 20u);
+  const double measured_period =
+      (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  const double measured_omega = 2.0 * std::numbers::pi / measured_period;
+  EXPECT_NEAR(measured_omega / kSpringOmega, 1.0, test::kFrequencyRelative);
+}
+
+TEST(Integrator, FreeFallIsExactForConstantAcceleration) {
+  // With v_{-½} = v0 − ½Δt g the leapfrog gives x_n = x0 + v0 t + ½ g t² exactly, and a rigidly
+  // falling bar keeps its length, so its spring stays at rest.
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+gravity: [0, 0, -9.81]
+objects:
+  - mesh: {polyline: {points: [[0, 0, 10], [1, 0, 10]]}}
+    material: {density: 1000, youngs_modulus: 1.0e6, area: 1.0e-4}
+    initial_velocity: [1, 0, 2]
+)"));
+  const double dt = 1e-3;
+  State state = initial_state(model, dt);
+  for (int n = 0; n < 1000; ++n) {
+    step(model, dt, {}, state);
+  }
+  const double t = state.time;
+  EXPECT_DOUBLE_EQ(t, 1.0);
+  const Vec3 expected = Vec3(0, 0, 10) + Vec3(1, 0, 2) * t + 0.5 * Vec3(0, 0, -9.81) * t * t;
+  EXPECT_NEAR((state.x[0] - expected).norm(), 0.0, test::kRoundingRelative * expected.norm());
+}
+
+TEST(Integrator, PinnedNodesNeverMove) {
+  const Model model = spring_mass_model(3.0);
+  State state = initial_state(model, 1e-4);
+  for (int n = 0; n < 5000; ++n) {
+    step(model, 1e-4, {}, state);
+  }
+  EXPECT_EQ(state.x[0], Vec3(0, 0, 0));
+}
+
+TEST(Integrator, DivergenceStopsWithNodeStepAndTime) {
+  const Model model = spring_mass_model(1.0);
+  const double dt = 10.0 * 2.0 / kSpringOmega;  // ten times the stability limit
+  State state = initial_state(model, dt);
+  try {
+    for (int n = 0; n < 100000; ++n) {
+      step(model, dt, {}, state);
+    }
+    FAIL() << "an unstable run did not stop";
+  } catch (const RuntimeError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("node 1 of object 'object0'"), std::string::npos) << message;
+    EXPECT_NE(message.find(fmt::format("at step {}", state.step)), std::string::npos) << message;
+    EXPECT_NE(message.find("t = "), std::string::npos) << message;
+  }
+}
+
+// The central-difference limit for one oscillator is Δt = 2/ω exactly (the amplification
+// matrix has |λ| = 1 below it and a real root beyond −1 above it). Just below, the motion
+// stays bounded by its amplitude; just above, it grows without bound.
+TEST(Integrator, StabilityLimitOfOneOscillatorIsTwoOverOmega) {
+  const Model model = spring_mass_model(1.0);
+  const double amplitude = 1.0 / kSpringOmega;  // v0 / ω
+  auto largest_displacement = [&](double dt) {
+    State state = initial_state(model, dt);
+    double largest = 0.0;
+    for (int n = 0; n < 3000 && largest < 1e3; ++n) {
+      step(model, dt, {}, state);
+      largest = std::max(largest, std::abs(state.x[1].x() - 1.0));
+    }
+    return largest;
+  };
+  // Near the limit the discrete motion's amplitude is v0 / (ω cos(ωΔt/2)-ish): a few times the
+  // continuous one, never a thousand times.
+  EXPECT_LT(largest_displacement(0.98 * 2.0 / kSpringOmega), 10.0 * amplitude);
+  EXPECT_GT(largest_displacement(1.02 * 2.0 / kSpringOmega), 1000.0 * amplitude);
+}
+
+}  // namespace
+}  // namespace dinam

@@ -1,0 +1,126 @@
+#include "dynamics/stability.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "model/model.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+// ω_max² of the model at rest, from a dense eigen-solve of M^{-½} K M^{-½} over the free
+// degrees of freedom, with K assembled here from k n nᵀ per bar (not from dynamics/).
+double exact_max_frequency_squared(const Model& model) {
+  std::vector<int> dof_of_node(model.node_count(), -1);
+  int n_dofs = 0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (!model.pinned(i)) {
+      dof_of_node[i] = n_dofs;
+      n_dofs += 3;
+    }
+  }
+  Eigen::MatrixXd k_matrix = Eigen::MatrixXd::Zero(n_dofs, n_dofs);
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    const Vec3 n = (model.node_initial_x[n1] - model.node_initial_x[n0]).normalized();
+    const Mat3 block = model.bar_axial_stiffness[b] * n * n.transpose();
+    const int d0 = dof_of_node[n0];
+    const int d1 = dof_of_node[n1];
+    if (d0 >= 0)
+      k_matrix.block<3, 3>(d0, d0) += block;
+    if (d1 >= 0)
+      k_matrix.block<3, 3>(d1, d1) += block;
+    if (d0 >= 0 && d1 >= 0) {
+      k_matrix.block<3, 3>(d0, d1) -= block;
+      k_matrix.block<3, 3>(d1, d0) -= block;
+    }
+  }
+  Eigen::VectorXd inv_sqrt_mass(n_dofs);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dof_of_node[i] >= 0) {
+      inv_sqrt_mass.segment<3>(dof_of_node[i]).setConstant(1.0 / std::sqrt(model.node_mass[i]));
+    }
+  }
+  const Eigen::MatrixXd d = inv_sqrt_mass.asDiagonal() * k_matrix * inv_sqrt_mass.asDiagonal();
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d, Eigen::EigenvaluesOnly)
+      .eigenvalues()
+      .maxCoeff();
+}
+
+Model model_of(const std::string& mesh, const std::string& pinned) {
+  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - mesh: {}
+    material: {{density: 1200, youngs_modulus: 2.0e7, radius: 0.001}}
+    pinned: {}
+)",
+                                                       mesh, pinned)));
+}
+
+TEST(Stability, BoundIsAboveTheTrueHighestFrequencyAndWithinAFactorTwo) {
+  const std::vector<Model> models = {
+      model_of("{grid: {width: 1.5, height: 1, columns: 9, rows: 6, diagonals: one}}",
+               "{indices: [0, 10, 20]}"),
+      model_of("{grid: {width: 1, height: 1, columns: 5, rows: 5, diagonals: both}}",
+               "{indices: [0]}"),
+      model_of("{file: cube_soup.stl}", "{indices: [0]}"),
+      model_of("{polyline: {points: [[0, 0, 0], [1, 0.3, 0]], segments: 12}}", "{indices: [0]}"),
+  };
+  for (const Model& model : models) {
+    const double exact = exact_max_frequency_squared(model);
+    const double bound = max_frequency_squared_bound(model);
+    EXPECT_GE(bound, exact * (1.0 - 1e-12));
+    EXPECT_LE(bound, 2.0 * exact * (1.0 + 1e-12));  // not so loose that auto wastes steps
+  }
+}
+
+TEST(Stability, LimitOfOneMassOnASpringIsExactlyTwoOverOmega) {
+  // A pinned node and a free one: ω² = k/m = (EA/L) / (ρAL/2) = 2E/(ρL²) = 2 × 2e7 / 1200.
+  const Model model =
+      model_of("{polyline: {points: [[0, 0, 0], [0, 0.6, 0.8]]}}", "{indices: [0]}");
+  const double omega = std::sqrt(2.0 * 2.0e7 / 1200.0);
+  EXPECT_NEAR(critical_timestep(model) * omega, 2.0, 1e-12);
+}
+
+TEST(Stability, ExplicitStepAboveTheLimitIsRefusedWithBothNumbers) {
+  const Model model =
+      model_of("{polyline: {points: [[0, 0, 0], [1, 0, 0]], segments: 10}}", "{indices: [0]}");
+  const double limit = critical_timestep(model);
+  const FileLoc where{"scene.yaml", 5, 11};
+  try {
+    choose_timestep(model, 1.5 * limit, 20.0, where);
+    FAIL() << "an unstable step was accepted";
+  } catch (const UserError& e) {
+    EXPECT_EQ(e.loc().line, 5);
+    const std::string message = e.what();
+    EXPECT_NE(message.find(fmt::format("{:.6g} s is above", 1.5 * limit)), std::string::npos)
+        << message;
+    EXPECT_NE(message.find(fmt::format("stability limit {:.6g} s", limit)), std::string::npos)
+        << message;
+  }
+}
+
+TEST(Stability, ChosenStepFitsWholeStepsIntoEachFrame) {
+  const Model model =
+      model_of("{polyline: {points: [[0, 0, 0], [1, 0, 0]], segments: 10}}", "{indices: [0]}");
+  const double limit = critical_timestep(model);
+  const TimeStep automatic = choose_timestep(model, std::nullopt, 20.0, {});
+  EXPECT_TRUE(automatic.automatic);
+  EXPECT_LE(automatic.dt, kAutoTimestepSafety * limit);
+  EXPECT_NEAR(automatic.dt * automatic.steps_per_frame, 1.0 / 20.0, 1e-15);
+
+  // 0.05 s / 0.0005 s is 100 steps despite the rounding of both numbers.
+  const Model soft =
+      model_of("{polyline: {points: [[0, 0, 0], [1, 0, 0]], segments: 2}}", "{indices: [0]}");
+  ASSERT_GT(critical_timestep(soft), 0.0005);
+  const TimeStep explicit_step = choose_timestep(soft, 0.0005, 20.0, {});
+  EXPECT_EQ(explicit_step.steps_per_frame, 100);
+  EXPECT_DOUBLE_EQ(explicit_step.dt, 0.0005);
+}
+
+}  // namespace
+}  // namespace dinam

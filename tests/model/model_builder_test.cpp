@@ -1,0 +1,99 @@
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "model/model.hpp"
+#include "model/vertex_welding.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+TEST(VertexWelding, CoincidentVerticesBecomeOneNodeInFirstOccurrenceOrder) {
+  const std::vector<Vec3> vertices = {{0, 0, 0}, {1, 0, 0}, {0, 0, 0}, {1, 1e-9, 0}, {2, 0, 0}};
+  const WeldResult weld = weld_vertices(vertices, weld_tolerance(vertices));
+  EXPECT_EQ(weld.nodes.size(), 3u);
+  EXPECT_EQ(weld.node_of_vertex, (std::vector<Index>{0, 1, 0, 1, 2}));
+}
+
+TEST(VertexWelding, PointsFartherThanTheToleranceStayApart) {
+  // Tolerance 1e-6 of the 1 m diagonal: 1e-6 m. Points 1e-5 m apart are distinct bars' ends.
+  const std::vector<Vec3> vertices = {{0, 0, 0}, {1e-5, 0, 0}, {1, 0, 0}};
+  const WeldResult weld = weld_vertices(vertices, weld_tolerance(vertices));
+  EXPECT_EQ(weld.nodes.size(), 3u);
+}
+
+const char* const kTwoQuads = R"(version: 1
+duration: 1
+objects:
+  - name: strip
+    mesh: {grid: {width: 2, height: 1, columns: 2, rows: 1, diagonals: none}}
+    material: {density: 2000, youngs_modulus: 3.0e6, area: 0.01}
+    pinned: {indices: [0]}
+    initial_velocity: [0, 0, 5]
+)";
+
+TEST(ModelBuilder, SharedEdgeIsOneBar) {
+  // Two unit squares side by side share their middle edge: 6 nodes, 7 bars, not 8.
+  const Model model = build_model(test::scene_from_yaml(kTwoQuads));
+  EXPECT_EQ(model.node_count(), 6);
+  EXPECT_EQ(model.bar_count(), 7);
+  EXPECT_EQ(model.face_count(), 2);
+}
+
+TEST(ModelBuilder, LumpsHalfOfEachBarOnEachEnd) {
+  const Model model = build_model(test::scene_from_yaml(kTwoQuads));
+  // ρ A = 2000 × 0.01 = 20 kg/m; 7 unit bars: 140 kg in all.
+  EXPECT_NEAR(model.total_mass(), 140.0, 1e-12);
+  // Corner node 0 ends two bars (10 kg each half); middle node 1 ends three.
+  EXPECT_NEAR(model.node_mass[0], 20.0, 1e-12);
+  EXPECT_NEAR(model.node_mass[1], 30.0, 1e-12);
+  // k = EA / L0 = 3e6 × 0.01 / 1.
+  for (const double k : model.bar_axial_stiffness) {
+    EXPECT_NEAR(k, 3.0e4, 1e-9);
+  }
+}
+
+TEST(ModelBuilder, PinnedNodesHaveNoInverseMassAndNoVelocity) {
+  const Model model = build_model(test::scene_from_yaml(kTwoQuads));
+  EXPECT_TRUE(model.pinned(0));
+  EXPECT_EQ(model.node_initial_v[0], Vec3::Zero());
+  for (Index i = 1; i < model.node_count(); ++i) {
+    EXPECT_FALSE(model.pinned(i));
+    EXPECT_EQ(model.node_initial_v[i], Vec3(0, 0, 5));
+    EXPECT_DOUBLE_EQ(model.node_inv_mass[i], 1.0 / model.node_mass[i]);
+  }
+}
+
+TEST(ModelBuilder, BoxPinsEveryNodeInside) {
+  std::string scene = kTwoQuads;
+  scene.replace(scene.find("{indices: [0]}"), 14,
+                "{box: {min: [1.5, -1, -1], max: [3, 2, 1]}}");  // the column at x = 2
+  const Model model = build_model(test::scene_from_yaml(scene));
+  for (Index i = 0; i < model.node_count(); ++i) {
+    EXPECT_EQ(model.pinned(i), model.node_initial_x[i].x() == 2.0) << i;
+  }
+}
+
+TEST(ModelBuilder, ObjectsGetContiguousRanges) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - name: a
+    mesh: {file: cube.obj}
+    material: {density: 1, youngs_modulus: 1, radius: 0.1}
+  - name: b
+    mesh: {file: rope.obj}
+    material: {density: 1, youngs_modulus: 1, radius: 0.1}
+)"));
+  ASSERT_EQ(model.objects.size(), 2u);
+  EXPECT_EQ(model.objects[1].first_node, 8);
+  EXPECT_EQ(model.objects[1].first_bar, 12);
+  for (Index b = 12; b < model.bar_count(); ++b) {
+    EXPECT_EQ(model.node_object[model.bar_nodes[2 * b]], 1);
+    EXPECT_EQ(model.node_object[model.bar_nodes[2 * b + 1]], 1);
+  }
+}
+
+}  // namespace
+}  // namespace dinam

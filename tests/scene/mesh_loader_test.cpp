@@ -1,0 +1,90 @@
+// Edge extraction from files read with assimp: each format gives the nodes and bars its shape
+// has, counted by hand in the comment of each data file.
+#include "scene/mesh_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include "model/model.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+// A one-object scene around a mesh file, built into a model.
+Model model_of_file(const std::string& file) {
+  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - mesh: {{file: {}}}
+    material: {{density: 1000, youngs_modulus: 1e6, radius: 0.01}}
+)",
+                                                       file)));
+}
+
+TEST(MeshLoader, CubeObjWithQuadFacesHasTwelveBars) {
+  const Model model = model_of_file("cube.obj");
+  EXPECT_EQ(model.node_count(), 8);
+  EXPECT_EQ(model.bar_count(), 12);  // every edge is shared by two faces, and appears once
+  EXPECT_EQ(model.face_count(), 6);
+  for (const double length : model.bar_rest_length) {
+    EXPECT_DOUBLE_EQ(length, 1.0);  // no diagonals: the quads were not triangulated
+  }
+}
+
+TEST(MeshLoader, TriangleSoupStlIsWeldedIntoOneStructure) {
+  const RawMesh raw = load_mesh_file(test::data_dir() / "cube_soup.stl", {});
+  EXPECT_EQ(raw.faces.size(), 12u);
+  EXPECT_GE(raw.vertices.size(), 8u);  // assimp keeps one vertex per triangle corner
+  const Model model = model_of_file("cube_soup.stl");
+  EXPECT_EQ(model.node_count(), 8);
+  EXPECT_EQ(model.bar_count(), 18);  // 12 cube edges + one diagonal on each of 6 faces
+}
+
+TEST(MeshLoader, ObjLineElementsBecomeAChain) {
+  const Model model = model_of_file("rope.obj");
+  EXPECT_EQ(model.node_count(), 5);
+  EXPECT_EQ(model.bar_count(), 4);
+  EXPECT_EQ(model.face_count(), 0);
+  for (const double length : model.bar_rest_length) {
+    EXPECT_DOUBLE_EQ(length, 0.25);
+  }
+}
+
+TEST(MeshLoader, PlyTetrahedronHasSixBars) {
+  const Model model = model_of_file("tetra.ply");
+  EXPECT_EQ(model.node_count(), 4);
+  EXPECT_EQ(model.bar_count(), 6);
+}
+
+TEST(MeshLoader, GltfPyramidKeepsItsNodeTransform) {
+  const Model model = model_of_file("pyramid.gltf");
+  EXPECT_EQ(model.node_count(), 5);
+  EXPECT_EQ(model.bar_count(), 9);  // 4 base sides + 1 base diagonal + 4 slant edges
+  double lowest = 1e9;
+  for (const Vec3& p : model.node_initial_x) {
+    lowest = std::min(lowest, p.z());
+  }
+  EXPECT_DOUBLE_EQ(lowest, 2.0);  // the glTF node's translation (0, 0, 2) was applied
+}
+
+TEST(MeshLoader, ZeroLengthEdgeIsAnErrorNamingTheVertices) {
+  test::expect_user_error([] { model_of_file("degenerate.obj"); }, 4,
+                          {"zero length", "vertices 1 and 2"});
+}
+
+TEST(MeshLoader, UnreadableFileIsAnError) {
+  test::expect_user_error(
+      [] {
+        load_mesh_file(test::data_dir() / "inline_not_a_mesh.txt", FileLoc{"s.yaml", 3, 7});
+      },
+      3, {"not found"});
+  // A file that exists but is not a mesh.
+  test::expect_user_error(
+      [] {
+        load_mesh_file(test::data_dir() / "cube.obj.notmesh", FileLoc{"s.yaml", 3, 7});
+      },
+      3, {"cannot read mesh file"});
+}
+
+}  // namespace
+}  // namespace dinam

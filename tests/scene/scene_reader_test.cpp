@@ -1,0 +1,176 @@
+#include "scene/scene_description.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+using test::expect_user_error;
+using test::scene_from_yaml;
+
+// A complete, valid scene; the error tests below each break one thing in it.
+const char* const kValidScene = R"(version: 1
+name: demo
+duration: 2.0
+fps: 25
+timestep: 0.001
+gravity: [0, 0, -9.0]
+ground: {height: -0.5, visible: false}
+camera: {position: [1, -5, 2], look_at: [0, 0, 1], up: [0, 0, 1], fov: 30}
+image: {width: 320, height: 180}
+output: renders/demo
+objects:
+  - name: cloth
+    mesh:
+      grid: {width: 2, height: 1, columns: 4, rows: 2, diagonals: none}
+      rotation: [90, 0, 0]
+      translation: [0, 0, 1]
+    material: {density: 1000, youngs_modulus: 1.0e6, shear_modulus: 4.0e5, radius: 0.002}
+    pinned: {indices: [0], box: {min: [-0.1, -0.1, 1.9], max: [0.1, 0.1, 2.1]}}
+    initial_velocity: [0, 1, 0]
+    color: [1, 0, 0]
+  - name: cube
+    mesh: {file: cube.obj, scale: 0.5, translation: [3, 0, 0]}
+    material: {density: 7800, youngs_modulus: 2.0e11, area: 1.0e-4}
+)";
+
+TEST(SceneReader, ReadsEveryKeyOfAValidScene) {
+  const SceneDescription scene = scene_from_yaml(kValidScene);
+  EXPECT_EQ(scene.name, "demo");
+  EXPECT_DOUBLE_EQ(scene.duration, 2.0);
+  EXPECT_DOUBLE_EQ(scene.fps, 25.0);
+  EXPECT_EQ(scene.frame_count(), 50);
+  ASSERT_TRUE(scene.timestep.has_value());
+  EXPECT_DOUBLE_EQ(*scene.timestep, 0.001);
+  EXPECT_EQ(scene.timestep_loc.line, 5);
+  EXPECT_TRUE(scene.gravity.isApprox(Vec3(0, 0, -9.0)));
+  EXPECT_DOUBLE_EQ(scene.ground.height, -0.5);
+  EXPECT_FALSE(scene.ground.visible);
+  EXPECT_DOUBLE_EQ(scene.camera.fov_degrees, 30.0);
+  EXPECT_EQ(scene.image_width, 320);
+  EXPECT_EQ(scene.image_height, 180);
+  EXPECT_EQ(scene.output, "renders/demo");
+  ASSERT_EQ(scene.objects.size(), 2u);
+
+  const ObjectDesc& cloth = scene.objects[0];
+  EXPECT_EQ(cloth.name, "cloth");
+  EXPECT_EQ(cloth.mesh.vertices.size(), 15u);  // (4 + 1) × (2 + 1)
+  // rotation [90, 0, 0] turns the grid's y into z; the far corner (2, 1) lands at (2, 0, 2).
+  EXPECT_TRUE(cloth.mesh.vertices.back().isApprox(Vec3(2, 0, 2), 1e-12));
+  const double r = 0.002;
+  EXPECT_DOUBLE_EQ(cloth.material.area, std::numbers::pi * r * r);
+  EXPECT_DOUBLE_EQ(cloth.material.area_moment, std::numbers::pi * std::pow(r, 4) / 4);
+  EXPECT_DOUBLE_EQ(cloth.material.polar_moment, std::numbers::pi * std::pow(r, 4) / 2);
+  EXPECT_DOUBLE_EQ(cloth.material.shear_modulus, 4.0e5);
+  EXPECT_EQ(cloth.pins.vertex_ids, std::vector<Index>{0});
+  ASSERT_EQ(cloth.pins.boxes.size(), 1u);
+  EXPECT_TRUE(cloth.initial_velocity.isApprox(Vec3(0, 1, 0)));
+
+  const ObjectDesc& cube = scene.objects[1];
+  Vec3 lo = cube.mesh.vertices.front();
+  Vec3 hi = lo;
+  for (const Vec3& p : cube.mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  EXPECT_TRUE(lo.isApprox(Vec3(3, 0, 0)));  // the unit cube scaled by 0.5, then moved
+  EXPECT_TRUE(hi.isApprox(Vec3(3.5, 0.5, 0.5)));
+  EXPECT_DOUBLE_EQ(cube.material.area, 1.0e-4);
+  // G defaults to E / 2.6 (Poisson's ratio 0.3); I to that of the circle of the same area.
+  EXPECT_DOUBLE_EQ(cube.material.shear_modulus, 2.0e11 / 2.6);
+  EXPECT_DOUBLE_EQ(cube.material.area_moment, 1.0e-8 / (4 * std::numbers::pi));
+}
+
+TEST(SceneReader, DefaultsFillWhatTheSceneLeavesOut) {
+  const SceneDescription scene = scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - mesh: {file: rope.obj}
+    material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}
+)");
+  EXPECT_EQ(scene.name, "inline");  // the file's stem
+  EXPECT_DOUBLE_EQ(scene.fps, 24.0);
+  EXPECT_FALSE(scene.timestep.has_value());  // auto
+  EXPECT_TRUE(scene.gravity.isApprox(Vec3(0, 0, -9.81)));
+  EXPECT_EQ(scene.output, "out/inline");
+  EXPECT_EQ(scene.objects[0].name, "object0");
+}
+
+// Replaces the first occurrence of `from` in the valid scene by `to`.
+std::string valid_scene_with(const std::string& from, const std::string& to) {
+  std::string text = kValidScene;
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(SceneReader, UnknownKeyIsAnErrorAtItsLineWithASuggestion) {
+  expect_user_error([] { scene_from_yaml(valid_scene_with("density: 1000", "densty: 1000")); }, 17,
+                    {"inline.yaml:17:", "unknown key 'densty'", "did you mean 'density'?"});
+  expect_user_error([] { scene_from_yaml(valid_scene_with("fps: 25", "fps: 25\nframerate: 3")); },
+                    5, {"unknown key 'framerate'"});
+}
+
+TEST(SceneReader, WrongTypeNamesTheKey) {
+  expect_user_error([] { scene_from_yaml(valid_scene_with("duration: 2.0", "duration: long")); }, 3,
+                    {"'duration' must be a number", "'long'"});
+  expect_user_error(
+      [] { scene_from_yaml(valid_scene_with("gravity: [0, 0, -9.0]", "gravity: [0, -9.0]")); }, 6,
+      {"'gravity' must be a list of three numbers"});
+  expect_user_error([] { scene_from_yaml(valid_scene_with("columns: 4", "columns: 4.5")); }, 14,
+                    {"objects[0].mesh.grid.columns", "whole number"});
+}
+
+TEST(SceneReader, MissingMeshFileIsAnErrorAtTheFileKey) {
+  expect_user_error([] { scene_from_yaml(valid_scene_with("cube.obj", "no_such_mesh.obj")); }, 22,
+                    {"mesh file", "no_such_mesh.obj", "not found"});
+}
+
+TEST(SceneReader, ImpossibleValuesAreErrors) {
+  expect_user_error([] { scene_from_yaml(valid_scene_with("density: 1000", "density: -1000")); },
+                    17, {"objects[0].material.density", "greater than zero"});
+  expect_user_error([] { scene_from_yaml(valid_scene_with("radius: 0.002", "radius: 0")); }, 17,
+                    {"radius", "greater than zero"});
+  expect_user_error([] { scene_from_yaml(valid_scene_with("fov: 30", "fov: 190")); }, 8,
+                    {"camera.fov"});
+  expect_user_error([] { scene_from_yaml(valid_scene_with("timestep: 0.001", "timestep: 0.5")); },
+                    5, {"longer than one frame"});
+  expect_user_error(
+      [] { scene_from_yaml(valid_scene_with("pinned: {indices: [0]", "pinned: {indices: [99]")); },
+      18, {"pinned vertex index 99 is out of range", "15 vertices"});
+  // A material needs exactly one way of giving the section.
+  expect_user_error(
+      [] { scene_from_yaml(valid_scene_with("area: 1.0e-4", "area: 1.0e-4, radius: 0.1")); }, 23,
+      {"either 'radius'", "not both"});
+}
+
+TEST(SceneReader, EmptyMeshIsAnError) {
+  expect_user_error([] { scene_from_yaml(valid_scene_with("cube.obj", "points_only.obj")); }, 22,
+                    {"points_only.obj", "no edges"});
+}
+
+TEST(SceneReader, StructuralMistakesAreErrors) {
+  expect_user_error([] { scene_from_yaml("duration: 1\nobjects: []\n"); }, 1,
+                    {"no 'version' key", "version: 1"});
+  expect_user_error([] { scene_from_yaml(valid_scene_with("version: 1", "version: 7")); }, 1,
+                    {"version 7 is not supported"});
+  expect_user_error([] { scene_from_yaml("version: 1\nduration: 1\nobjects: [\n"); }, 0,
+                    {"not valid YAML"});
+  expect_user_error([] { scene_from_yaml(valid_scene_with("name: cube", "name: cloth")); }, 21,
+                    {"two objects are named 'cloth'"});
+  expect_user_error(
+      [] {
+        scene_from_yaml(
+            valid_scene_with("    mesh: {file: cube.obj, ",
+                             "    mesh: {grid: {width: 1, height: 1}, file: cube.obj, "));
+      },
+      22, {"exactly one source"});
+}
+
+}  // namespace
+}  // namespace dinam

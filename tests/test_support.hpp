@@ -1,0 +1,67 @@
+#pragma once
+// Helpers shared by the tests: where the data lives, inline scenes, and checks on user errors.
+#include <gtest/gtest.h>
+
+#include <stdlib.h>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "core/error.hpp"
+#include "scene/scene_description.hpp"
+
+namespace dinam::test {
+
+inline std::filesystem::path data_dir() {
+  return DINAM_TEST_DATA_DIR;
+}
+
+// A scene from inline YAML, as if it were the file data/inline.yaml (so mesh paths resolve
+// against tests/data).
+inline SceneDescription scene_from_yaml(const std::string& yaml) {
+  return read_scene_text(yaml, data_dir() / "inline.yaml");
+}
+
+// A fresh empty folder under the system's temporary folder, removed by the destructor.
+class TemporaryFolder {
+ public:
+  explicit TemporaryFolder(const std::string& name) {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / ("dinam-test-" + name + "-XXXXXX")).string();
+    if (mkdtemp(pattern.data()) == nullptr) {
+      throw std::runtime_error("cannot create a temporary folder from " + pattern);
+    }
+    path_ = pattern;
+  }
+  ~TemporaryFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// Expects `action` to throw a UserError at `line` (1-based; 0 to skip) whose message contains
+// every one of `fragments`.
+inline void expect_user_error(const std::function<void()>& action, int line,
+                              std::initializer_list<std::string> fragments) {
+  try {
+    action();
+  } catch (const UserError& e) {
+    if (line > 0) {
+      EXPECT_EQ(e.loc().line, line) << e.what();
+      EXPECT_GT(e.loc().column, 0) << e.what();
+    }
+    for (const std::string& fragment : fragments) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos)
+          << "message lacks '" << fragment << "': " << e.what();
+    }
+    return;
+  }
+  ADD_FAILURE() << "expected a UserError";
+}
+
+}  // namespace dinam::test
