@@ -58,7 +58,8 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model) {
   const Vec3 center = 0.5 * (lo + hi);
   list.ground_center = Vec3f(static_cast<float>(center.x()), static_cast<float>(center.y()), 0.0f);
   const double view_distance = (scene.camera.look_at - scene.camera.position).norm();
-  list.ground_half_size = static_cast<float>(std::max(4.0 * extent, 3.0 * view_distance));
+  // Far enough that its edge, where the checker has faded out, lies near the horizon.
+  list.ground_half_size = static_cast<float>(std::max(15.0 * extent, 8.0 * view_distance));
   list.ground_tile = static_cast<float>(round_down_nice(extent / 5.0));
 
   list.camera.position = scene.camera.position.cast<float>();

@@ -25,7 +25,7 @@ struct DrawList {
   bool ground_visible = true;
   float ground_height = 0.0f;  // m, plane z = height
   Vec3f ground_center = Vec3f::Zero();
-  float ground_half_size = 10.0f;  // m
+  float ground_half_size = 10.0f;  // m; the checker fades out towards this distance from the eye
   float ground_tile = 0.5f;        // m, checker size
 
   RenderCamera camera;

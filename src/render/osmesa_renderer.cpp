@@ -180,6 +180,8 @@ void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& posi
     const Vec3f center(list.ground_center.x(), list.ground_center.y(), list.ground_height);
     set_vec3(ground_program_->uniform("center"), center);
     glUniform1f(ground_program_->uniform("half_size"), list.ground_half_size);
+    set_vec3(ground_program_->uniform("eye_position"), camera.position);
+    glUniform1f(ground_program_->uniform("fade_distance"), 0.9f * list.ground_half_size);
     glUniform1f(ground_program_->uniform("tile_size"), list.ground_tile);
     set_vec3(ground_program_->uniform("horizon_color"), kHorizonColor);
     glBindVertexArray(ground_vao_);
