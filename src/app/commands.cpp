@@ -86,6 +86,8 @@ int run_render(const RenderOptions& options) {
                                                          simulate_seconds, draw_seconds));
   }
 
+  progress.finish();
+
   int exit_code = kExitOk;
   std::string movie_note;
   if (options.video) {

@@ -7,7 +7,9 @@
 #include "app/commands.hpp"
 #include "core/error.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   using namespace dinam;
   CLI::App app{
       "dinam: physically simulated animation of flexible structures (rigid bar spring "
@@ -65,6 +67,17 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "dinam: error: {}\n", e.what());
-    return kExitFailure;
+    return dinam::kExitFailure;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Nothing may escape: even a failure to print the message exits with the failure code.
+  try {
+    return run(argc, argv);
+  } catch (...) {
+    return dinam::kExitFailure;
   }
 }

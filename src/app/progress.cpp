@@ -11,8 +11,13 @@ Progress::Progress(int total, bool enabled)
     : total_(total), enabled_(enabled && isatty(STDERR_FILENO) != 0) {}
 
 Progress::~Progress() {
+  finish();
+}
+
+void Progress::finish() {
   if (drawn_) {
     std::fputc('\n', stderr);
+    drawn_ = false;
   }
 }
 

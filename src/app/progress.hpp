@@ -10,6 +10,8 @@ class Progress {
   Progress(int total, bool enabled);
   ~Progress();
   void update(int done, const std::string& detail);
+  // Ends the line, so that what is printed next starts on its own; called by the destructor too.
+  void finish();
 
  private:
   int total_;

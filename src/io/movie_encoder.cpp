@@ -35,6 +35,7 @@ MovieOutcome encode_movie(const MovieRequest& request) {
   log += ".ffmpeg-log";
   const std::vector<std::string> arguments = ffmpeg_arguments(request, partial);
   std::vector<char*> argv;
+  argv.reserve(arguments.size() + 1);
   for (const std::string& argument : arguments) {
     argv.push_back(const_cast<char*>(argument.c_str()));
   }

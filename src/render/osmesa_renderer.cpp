@@ -18,8 +18,10 @@ constexpr int kNodeFloats = 7;
 const Vec3f kHorizonColor{0.78f, 0.82f, 0.86f};
 const Vec3f kZenithColor{0.30f, 0.45f, 0.68f};
 
+// OpenGL takes buffer offsets as pointers.
 const void* float_offset(int floats) {
-  return reinterpret_cast<const void*>(static_cast<std::uintptr_t>(floats) * sizeof(float));
+  const std::uintptr_t bytes = static_cast<std::uintptr_t>(floats) * sizeof(float);
+  return reinterpret_cast<const void*>(bytes);  // NOLINT(performance-no-int-to-ptr)
 }
 
 // Uploads a primitive into `vao`: attribute 0 position, 1 normal.
@@ -96,7 +98,7 @@ void OsmesaRenderer::create_buffers() {
   glGenBuffers(1, &cylinder_ebo_);
   glGenBuffers(1, &bar_instance_vbo_);
   cylinder_index_count_ =
-      upload_primitive(make_unit_cylinder(16), cylinder_vao_, cylinder_vbo_, cylinder_ebo_);
+      upload_primitive(make_unit_cylinder(10), cylinder_vao_, cylinder_vbo_, cylinder_ebo_);
   instance_attributes(bar_instance_vbo_, 2, {3, 3, 1, 3});
 
   glGenVertexArrays(1, &sphere_vao_);
@@ -104,7 +106,7 @@ void OsmesaRenderer::create_buffers() {
   glGenBuffers(1, &sphere_ebo_);
   glGenBuffers(1, &node_instance_vbo_);
   sphere_index_count_ =
-      upload_primitive(make_unit_sphere(12, 8), sphere_vao_, sphere_vbo_, sphere_ebo_);
+      upload_primitive(make_unit_sphere(8, 5), sphere_vao_, sphere_vbo_, sphere_ebo_);
   instance_attributes(node_instance_vbo_, 2, {3, 1, 3});
 
   glGenVertexArrays(1, &ground_vao_);

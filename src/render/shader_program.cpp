@@ -70,7 +70,7 @@ std::vector<std::filesystem::path> shader_search_path() {
 std::filesystem::path find_shader(const std::string& file) {
   std::string tried;
   for (const auto& folder : shader_search_path()) {
-    const std::filesystem::path candidate = folder / file;
+    std::filesystem::path candidate = folder / file;
     std::error_code ec;
     if (std::filesystem::is_regular_file(candidate, ec)) {
       return candidate;

@@ -78,19 +78,19 @@ MaterialDesc read_material(YamlMap map) {
                      "with optional 'area_moment' and 'polar_moment', m⁴), not both",
                      map.name());
   }
-  constexpr double pi = std::numbers::pi;
+  constexpr double kPi = std::numbers::pi;
   if (has_radius) {
     const double r = map.required_number("radius");
     require_positive(r, map.loc("radius"), map.path("radius"), "m");
     material.wire_radius = r;
-    material.area = pi * r * r;
-    material.area_moment = pi * std::pow(r, 4) / 4.0;
-    material.polar_moment = pi * std::pow(r, 4) / 2.0;
+    material.area = kPi * r * r;
+    material.area_moment = kPi * std::pow(r, 4) / 4.0;
+    material.polar_moment = kPi * std::pow(r, 4) / 2.0;
   } else {
     material.area = map.required_number("area");
     require_positive(material.area, map.loc("area"), map.path("area"), "m²");
     // Without I and J, those of the circle of the same area: I = A²/(4π), J = 2I.
-    material.area_moment = map.number("area_moment", material.area * material.area / (4.0 * pi));
+    material.area_moment = map.number("area_moment", material.area * material.area / (4.0 * kPi));
     require_positive(material.area_moment, map.loc("area_moment"), map.path("area_moment"), "m⁴");
     material.polar_moment = map.number("polar_moment", 2.0 * material.area_moment);
     require_positive(material.polar_moment, map.loc("polar_moment"), map.path("polar_moment"),
