@@ -2,6 +2,7 @@
 // A soft checkerboard that fades into the horizon colour with distance from the eye, so the
 // plane's far edge never shows.
 in vec3 world_position;
+in vec2 plane_position;
 
 uniform vec3 eye_position;
 uniform float fade_distance;  // m; fully faded at this distance from the eye
@@ -11,11 +12,10 @@ uniform vec3 horizon_color;  // linear RGB
 out vec4 out_color;
 
 void main() {
-  vec2 cell = floor(world_position.xy / tile_size);
+  vec2 cell = floor(plane_position / tile_size);
   float checker = mod(cell.x + cell.y, 2.0);
   vec3 color = mix(vec3(0.42, 0.40, 0.37), vec3(0.50, 0.48, 0.45), checker);
-  float distance_to_eye = length(world_position.xy - eye_position.xy);
-  float fade = smoothstep(0.15 * fade_distance, fade_distance, distance_to_eye);
+  float fade = smoothstep(0.15 * fade_distance, fade_distance, length(world_position - eye_position));
   color = mix(color, horizon_color, fade);
   out_color = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
 }

@@ -54,9 +54,11 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model) {
   }
 
   list.ground_visible = scene.ground.visible;
-  list.ground_height = static_cast<float>(scene.ground.height);
+  // The ground's centre is the foot of the model's centre on the plane.
   const Vec3 center = 0.5 * (lo + hi);
-  list.ground_center = Vec3f(static_cast<float>(center.x()), static_cast<float>(center.y()), 0.0f);
+  const Vec3& normal = scene.ground.normal;
+  list.ground_center = (center - (center - scene.ground.point).dot(normal) * normal).cast<float>();
+  list.ground_normal = normal.cast<float>();
   const double view_distance = (scene.camera.look_at - scene.camera.position).norm();
   // Far enough that its edge, where the checker has faded out, lies near the horizon.
   list.ground_half_size = static_cast<float>(std::max(15.0 * extent, 8.0 * view_distance));

@@ -23,8 +23,8 @@ struct DrawList {
   std::vector<Vec3f> point_color;     // (n_points) linear RGB
 
   bool ground_visible = true;
-  float ground_height = 0.0f;  // m, plane z = height
-  Vec3f ground_center = Vec3f::Zero();
+  Vec3f ground_center = Vec3f::Zero();   // m, a point of the ground plane under the scene
+  Vec3f ground_normal = Vec3f::UnitZ();  // unit
   float ground_half_size = 10.0f;  // m; the checker fades out towards this distance from the eye
   float ground_tile = 0.5f;        // m, checker size
 

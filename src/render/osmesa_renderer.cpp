@@ -4,6 +4,7 @@
 #include <GL/glcorearb.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "core/error.hpp"
@@ -179,8 +180,13 @@ void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& posi
     ground_program_->use();
     glUniformMatrix4fv(ground_program_->uniform("clip_from_world"), 1, GL_FALSE,
                        clip_from_world.data());
-    const Vec3f center(list.ground_center.x(), list.ground_center.y(), list.ground_height);
-    set_vec3(ground_program_->uniform("center"), center);
+    // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
+    const Vec3f normal = list.ground_normal.normalized();
+    const Vec3f seed = std::abs(normal.x()) < 0.9f ? Vec3f::UnitX() : Vec3f::UnitY();
+    const Vec3f axis_u = (seed - seed.dot(normal) * normal).normalized();
+    set_vec3(ground_program_->uniform("center"), list.ground_center);
+    set_vec3(ground_program_->uniform("axis_u"), axis_u);
+    set_vec3(ground_program_->uniform("axis_v"), normal.cross(axis_u));
     glUniform1f(ground_program_->uniform("half_size"), list.ground_half_size);
     set_vec3(ground_program_->uniform("eye_position"), camera.position);
     glUniform1f(ground_program_->uniform("fade_distance"), 0.9f * list.ground_half_size);

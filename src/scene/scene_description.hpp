@@ -2,7 +2,9 @@
 // The plain description of a scene as the file states it, validated and with meshes loaded, but
 // not yet a physical model. Every value a later stage might complain about keeps its FileLoc, so
 // that an error found there (an unstable step, a zero-length bar) still names file:line:column.
+#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,16 +14,36 @@
 
 namespace dinam {
 
-// Section and elastic properties of the bars of one object, SI units.
+inline constexpr double kNoYield = std::numeric_limits<double>::infinity();
+
+// Section, elastic and plastic properties of the bars of one object, SI units.
 struct MaterialDesc {
   double density = 0.0;         // kg/m³
   double youngs_modulus = 0.0;  // E, Pa
   double shear_modulus = 0.0;   // G, Pa
   double area = 0.0;            // A, m²
-  double area_moment = 0.0;     // I, m⁴ (bending; used by the bending springs)
-  double polar_moment = 0.0;    // J, m⁴ (torsion; used by the torsion springs)
+  double area_moment = 0.0;     // I, m⁴ (bending springs)
+  double polar_moment = 0.0;    // J, m⁴ (torsion springs)
   double wire_radius = 0.0;     // m, when the section was given as a circular wire; else 0
+  // Perfect elastoplasticity, decoupled per spring kind; kNoYield keeps a kind elastic.
+  double yield_axial_force = kNoYield;      // N
+  double yield_bending_moment = kNoYield;   // N·m
+  double yield_torsion_moment = kNoYield;   // N·m
   FileLoc loc;
+};
+
+// Which pairs of bars meeting at a node get a bending spring.
+enum class BendingPairs {
+  kMostCollinear,  // each bar with its most nearly collinear partner (a grid bends like beams)
+  kAll,            // every pair
+  kNone,
+};
+
+// Axial viscous dampers on the bars of one object: a coefficient, or a fraction of the critical
+// damping of each bar's axial mode, c = 2ζ√(k μ) with μ the reduced mass of its two end nodes.
+struct AxialDampingDesc {
+  double coefficient = 0.0;  // N·s/m
+  double ratio = 0.0;        // ζ, dimensionless
 };
 
 struct BoxDesc {
@@ -29,12 +51,22 @@ struct BoxDesc {
   Vec3 max = Vec3::Zero();
 };
 
-// Which vertices of an object are fixed in space. The union of all three choices.
-struct PinDesc {
+// A set of an object's vertices: the union of all three choices.
+struct NodeSelection {
   bool all = false;
   std::vector<Index> vertex_ids;  // ids into the object's own mesh vertices
   std::vector<BoxDesc> boxes;     // vertices inside any box (inclusive)
   FileLoc loc;
+
+  bool empty() const { return !all && vertex_ids.empty() && boxes.empty(); }
+};
+
+using PinDesc = NodeSelection;
+
+// An initial velocity for some of an object's nodes; later groups override earlier ones.
+struct VelocityGroupDesc {
+  NodeSelection nodes;
+  Vec3 velocity = Vec3::Zero();  // m/s
 };
 
 struct ObjectDesc {
@@ -45,6 +77,10 @@ struct ObjectDesc {
   MaterialDesc material;
   PinDesc pins;
   Vec3 initial_velocity = Vec3::Zero();  // m/s
+  std::vector<VelocityGroupDesc> velocity_groups;
+  BendingPairs bending_pairs = BendingPairs::kMostCollinear;
+  bool torsion = true;  // torsion springs wherever a bar has reference neighbours
+  AxialDampingDesc axial_damping;
   Vec3f color{0.8f, 0.8f, 0.8f};         // linear RGB in [0, 1]
   std::optional<double> render_radius;   // m; default: the wire radius, at least a visible minimum
 };
@@ -56,9 +92,56 @@ struct CameraDesc {
   double fov_degrees = 40.0;  // vertical field of view
 };
 
+// A multiplier of time for a force: constant 1, a step at t0, a ramp from 0 at t0 to 1 at t1,
+// or a sine.
+struct TimeProfile {
+  enum class Kind { kConstant, kStep, kRamp, kSine };
+  Kind kind = Kind::kConstant;
+  double start = 0.0;      // s, t0 (step, ramp; sine starts then too)
+  double end = 0.0;        // s, t1 (ramp)
+  double frequency = 0.0;  // Hz (sine)
+  double phase = 0.0;      // rad (sine)
+
+  double operator()(double t) const;
+};
+
+// A field force on some nodes: per unit mass (an acceleration, like gravity) or per node.
+struct FieldForceDesc {
+  Vec3 value = Vec3::Zero();  // m/s² when per_unit_mass, else N on each node
+  bool per_unit_mass = true;
+  std::string object;    // empty: every object
+  NodeSelection nodes;   // within `object`; empty: all its nodes
+  TimeProfile profile;
+  FileLoc loc;
+};
+
+// Wind: a velocity field that drags on mesh faces and on bare bars.
+struct WindDesc {
+  bool enabled = false;
+  Vec3 velocity = Vec3::Zero();  // m/s, the mean
+  double gust_amplitude = 0.0;   // m/s, along the mean direction
+  double gust_period = 4.0;      // s
+  double turbulence = 0.0;       // m/s, amplitude of smooth seeded noise in each direction
+  double turbulence_scale = 2.0; // m, length scale of the noise (its time scale follows the mean)
+  std::uint32_t seed = 1;
+  double air_density = 1.225;    // kg/m³
+  double face_drag = 1.0;        // drag coefficient of a face, normal flow
+  double bar_drag = 1.2;         // drag coefficient of a cylinder in cross flow
+  std::vector<std::string> objects;  // empty: every object
+};
+
 struct GroundDesc {
-  double height = 0.0;  // m; the plane z = height
+  Vec3 point = Vec3::Zero();  // m, a point of the plane
+  Vec3 normal = kWorldUp;     // unit, pointing out of the ground
   bool visible = true;
+  bool contact = true;
+  // Penalty stiffness per node: empty for auto (a contact frequency half the model's highest).
+  std::optional<double> stiffness;  // N/m
+  double damping_ratio = 0.3;       // of the contact oscillation; normal direction only
+  double static_friction = 0.5;     // μs
+  double kinetic_friction = 0.4;    // μk
+  bool stick = false;               // no sliding at all (the paper's falling ball)
+  FileLoc loc;
 };
 
 struct SceneDescription {
@@ -71,6 +154,9 @@ struct SceneDescription {
   std::optional<double> timestep;  // s; empty for `auto`
   FileLoc timestep_loc;
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
+  double global_damping = 0.0;    // 1/s, viscous friction −α m v on every node
+  std::vector<FieldForceDesc> fields;
+  WindDesc wind;
 
   GroundDesc ground;
   CameraDesc camera;

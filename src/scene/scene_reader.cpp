@@ -3,6 +3,7 @@
 // read here; keep the two together.
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -18,6 +19,9 @@ namespace dinam {
 namespace {
 
 constexpr int kSceneVersion = 1;
+constexpr double kPi = std::numbers::pi;
+
+NodeSelection read_nodes(YamlMap map, std::size_t vertex_count);
 
 void require_positive(double value, const FileLoc& loc, const std::string& what, const char* unit) {
   if (!(value > 0.0)) {
@@ -51,10 +55,159 @@ CameraDesc read_camera(YamlMap map) {
 
 GroundDesc read_ground(YamlMap map) {
   GroundDesc ground;
-  ground.height = map.number("height", ground.height);
+  ground.loc = map.loc();
+  if (map.has("height") && map.has("point")) {
+    throw_user_error(map.loc(), "'ground': give 'height' or 'point', not both");
+  }
+  ground.point = map.has("point") ? map.vec3("point", ground.point)
+                                  : Vec3(0, 0, map.number("height", 0.0));
+  ground.normal = map.vec3("normal", ground.normal);
+  if (ground.normal.norm() < 1e-9) {
+    throw_user_error(map.loc("normal"), "'ground.normal' must be a non-zero direction");
+  }
+  ground.normal.normalize();
   ground.visible = map.boolean("visible", ground.visible);
+  ground.contact = map.boolean("contact", ground.contact);
+  if (const YAML::Node stiffness = map.get("stiffness");
+      stiffness && !(stiffness.IsScalar() && stiffness.Scalar() == "auto")) {
+    ground.stiffness = as_double(stiffness, map.file(), "ground.stiffness");
+    require_positive(*ground.stiffness, map.loc("stiffness"), "ground.stiffness", "N/m");
+  }
+  ground.damping_ratio = map.number("damping_ratio", ground.damping_ratio);
+  if (ground.damping_ratio < 0.0 || ground.damping_ratio > 1.0) {
+    throw_user_error(map.loc("damping_ratio"), "'ground.damping_ratio' must be between 0 and 1");
+  }
+  if (map.has("friction")) {
+    YamlMap friction(map.get("friction"), map.file(), "ground.friction");
+    ground.stick = friction.boolean("stick", false);
+    ground.static_friction = friction.number("static", ground.static_friction);
+    ground.kinetic_friction = friction.number("kinetic", std::min(ground.kinetic_friction,
+                                                                  ground.static_friction));
+    if (ground.static_friction < 0.0 || ground.kinetic_friction < 0.0) {
+      throw_user_error(friction.loc(), "friction coefficients cannot be negative");
+    }
+    if (ground.kinetic_friction > ground.static_friction) {
+      throw_user_error(friction.loc("kinetic"),
+                       "'ground.friction.kinetic' ({}) must not exceed 'static' ({})",
+                       ground.kinetic_friction, ground.static_friction);
+    }
+    friction.finish();
+  }
   map.finish();
   return ground;
+}
+
+TimeProfile read_profile(YamlMap map) {
+  TimeProfile profile;
+  const std::string kind = map.string("type", "constant");
+  if (kind == "constant") {
+    profile.kind = TimeProfile::Kind::kConstant;
+  } else if (kind == "step") {
+    profile.kind = TimeProfile::Kind::kStep;
+    profile.start = map.number("start", 0.0);
+  } else if (kind == "ramp") {
+    profile.kind = TimeProfile::Kind::kRamp;
+    profile.start = map.number("start", 0.0);
+    profile.end = map.required_number("end");
+    if (!(profile.end > profile.start)) {
+      throw_user_error(map.loc("end"), "'{}' must be later than 'start'", map.path("end"));
+    }
+  } else if (kind == "sine") {
+    profile.kind = TimeProfile::Kind::kSine;
+    profile.start = map.number("start", 0.0);
+    profile.frequency = map.required_number("frequency");
+    require_positive(profile.frequency, map.loc("frequency"), map.path("frequency"), "Hz");
+    profile.phase = map.number("phase", 0.0) * kPi / 180.0;
+  } else {
+    throw_user_error(map.loc("type"), "'{}' must be constant, step, ramp or sine; got '{}'",
+                     map.path("type"), kind);
+  }
+  map.finish();
+  return profile;
+}
+
+WindDesc read_wind(YamlMap map) {
+  WindDesc wind;
+  wind.enabled = true;
+  wind.velocity = map.required_vec3("velocity");
+  if (map.has("gust")) {
+    YamlMap gust(map.get("gust"), map.file(), "wind.gust");
+    wind.gust_amplitude = gust.required_number("amplitude");
+    wind.gust_period = gust.number("period", wind.gust_period);
+    require_positive(wind.gust_period, gust.loc("period"), "wind.gust.period", "s");
+    gust.finish();
+  }
+  if (map.has("turbulence")) {
+    YamlMap turbulence(map.get("turbulence"), map.file(), "wind.turbulence");
+    wind.turbulence = turbulence.required_number("amplitude");
+    wind.turbulence_scale = turbulence.number("scale", wind.turbulence_scale);
+    require_positive(wind.turbulence_scale, turbulence.loc("scale"), "wind.turbulence.scale",
+                     "m");
+    const int seed = turbulence.integer("seed", 1);
+    wind.seed = static_cast<std::uint32_t>(seed);
+    turbulence.finish();
+  }
+  wind.air_density = map.number("air_density", wind.air_density);
+  require_positive(wind.air_density, map.loc("air_density"), "wind.air_density", "kg/m³");
+  wind.face_drag = map.number("face_drag", wind.face_drag);
+  wind.bar_drag = map.number("bar_drag", wind.bar_drag);
+  if (wind.face_drag < 0.0 || wind.bar_drag < 0.0) {
+    throw_user_error(map.loc(), "'wind': drag coefficients cannot be negative");
+  }
+  if (const YAML::Node objects = map.get("objects"); objects) {
+    if (!objects.IsSequence()) {
+      throw_user_error(map.loc("objects"), "'wind.objects' must be a list of object names");
+    }
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      wind.objects.push_back(as_string(objects[i], map.file(), "wind.objects"));
+    }
+  }
+  map.finish();
+  return wind;
+}
+
+const ObjectDesc* find_object(const std::vector<ObjectDesc>& objects, const std::string& name) {
+  for (const ObjectDesc& object : objects) {
+    if (object.name == name) {
+      return &object;
+    }
+  }
+  return nullptr;
+}
+
+FieldForceDesc read_field(YamlMap map, const std::vector<ObjectDesc>& objects) {
+  FieldForceDesc field;
+  field.loc = map.loc();
+  if (map.has("acceleration") == map.has("force")) {
+    throw_user_error(map.loc(),
+                     "'{}' needs 'acceleration' (m/s², per unit mass) or 'force' (N, on each "
+                     "node), not both",
+                     map.name());
+  }
+  field.per_unit_mass = map.has("acceleration");
+  field.value = field.per_unit_mass ? map.required_vec3("acceleration") : map.required_vec3("force");
+  field.object = map.string("object", "");
+  const ObjectDesc* object = nullptr;
+  if (!field.object.empty()) {
+    object = find_object(objects, field.object);
+    if (object == nullptr) {
+      throw_user_error(map.loc("object"), "'{}': there is no object named '{}'",
+                       map.path("object"), field.object);
+    }
+  }
+  if (map.has("nodes")) {
+    if (object == nullptr) {
+      throw_user_error(map.loc("nodes"), "'{}' needs 'object': node ids belong to one object",
+                       map.path("nodes"));
+    }
+    field.nodes =
+        read_nodes(YamlMap(map.get("nodes"), map.file(), map.path("nodes")), object->mesh.vertices.size());
+  }
+  if (map.has("profile")) {
+    field.profile = read_profile(YamlMap(map.get("profile"), map.file(), map.path("profile")));
+  }
+  map.finish();
+  return field;
 }
 
 MaterialDesc read_material(YamlMap map) {
@@ -78,7 +231,6 @@ MaterialDesc read_material(YamlMap map) {
                      "with optional 'area_moment' and 'polar_moment', m⁴), not both",
                      map.name());
   }
-  constexpr double kPi = std::numbers::pi;
   if (has_radius) {
     const double r = map.required_number("radius");
     require_positive(r, map.loc("radius"), map.path("radius"), "m");
@@ -95,6 +247,36 @@ MaterialDesc read_material(YamlMap map) {
     material.polar_moment = map.number("polar_moment", 2.0 * material.area_moment);
     require_positive(material.polar_moment, map.loc("polar_moment"), map.path("polar_moment"),
                      "m⁴");
+  }
+
+  // Yield: from a yield stress σy and the section, then any kind given directly overrides it.
+  // With r the wire radius (or that of the circle of the same area), the fully plastic values
+  // of a round section: Ny = σy A, My = (4/3) r³ σy, Ty = (2π/3) r³ τy with τy = σy/√3 (von
+  // Mises).
+  if (map.has("yield_stress")) {
+    const double sigma = map.number("yield_stress", 0.0);
+    require_positive(sigma, map.loc("yield_stress"), map.path("yield_stress"), "Pa");
+    const double r = std::sqrt(material.area / kPi);
+    material.yield_axial_force = sigma * material.area;
+    material.yield_bending_moment = 4.0 / 3.0 * r * r * r * sigma;
+    material.yield_torsion_moment = 2.0 * kPi / 3.0 * r * r * r * sigma / std::sqrt(3.0);
+  }
+  if (map.has("yield")) {
+    YamlMap yield(map.get("yield"), map.file(), map.path("yield"));
+    const std::pair<const char*, double*> kinds[] = {
+        {"axial", &material.yield_axial_force},
+        {"bending", &material.yield_bending_moment},
+        {"torsion", &material.yield_torsion_moment}};
+    for (const auto& [key, value] : kinds) {
+      if (yield.has(key)) {
+        *value = yield.number(key, 0.0);
+        require_positive(*value, yield.loc(key), yield.path(key),
+                         std::string(key) == "axial" ? "N" : "N·m");
+      } else {
+        yield.get(key);  // known, absent
+      }
+    }
+    yield.finish();
   }
   map.finish();
   return material;
@@ -201,8 +383,8 @@ BoxDesc read_box(YamlMap map) {
   return box;
 }
 
-PinDesc read_pins(YamlMap map, std::size_t vertex_count) {
-  PinDesc pins;
+NodeSelection read_nodes(YamlMap map, std::size_t vertex_count) {
+  NodeSelection pins;
   pins.loc = map.loc();
   pins.all = map.boolean("all", false);
   const YAML::Node indices = map.get("indices");
@@ -215,7 +397,7 @@ PinDesc read_pins(YamlMap map, std::size_t vertex_count) {
       const int id = as_int(indices[i], map.file(), fmt::format("{}[{}]", map.path("indices"), i));
       if (id < 0 || static_cast<std::size_t>(id) >= vertex_count) {
         throw_user_error(loc_of(indices[i], map.file()),
-                         "pinned vertex index {} is out of range: the mesh has {} vertices "
+                         "vertex index {} is out of range: the mesh has {} vertices "
                          "(0 to {})",
                          id, vertex_count, vertex_count - 1);
       }
@@ -245,10 +427,51 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   object.material =
       read_material(YamlMap(map.required("material"), map.file(), map.path("material")));
   if (map.has("pinned")) {
-    object.pins = read_pins(YamlMap(map.get("pinned"), map.file(), map.path("pinned")),
-                            object.mesh.vertices.size());
+    object.pins = read_nodes(YamlMap(map.get("pinned"), map.file(), map.path("pinned")),
+                             object.mesh.vertices.size());
   }
   object.initial_velocity = map.vec3("initial_velocity", object.initial_velocity);
+  if (const YAML::Node groups = map.get("velocity_groups"); groups) {
+    if (!groups.IsSequence()) {
+      throw_user_error(map.loc("velocity_groups"),
+                       "'{}' must be a list of {{nodes: ..., velocity: [x, y, z]}}",
+                       map.path("velocity_groups"));
+    }
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+      YamlMap group(groups[i], map.file(), fmt::format("{}[{}]", map.path("velocity_groups"), i));
+      VelocityGroupDesc desc;
+      desc.nodes = read_nodes(YamlMap(group.required("nodes"), map.file(), group.path("nodes")),
+                              object.mesh.vertices.size());
+      desc.velocity = group.required_vec3("velocity");
+      group.finish();
+      object.velocity_groups.push_back(std::move(desc));
+    }
+  }
+  const std::string pairs = map.string("bending_pairs", "collinear");
+  if (pairs == "collinear") {
+    object.bending_pairs = BendingPairs::kMostCollinear;
+  } else if (pairs == "all") {
+    object.bending_pairs = BendingPairs::kAll;
+  } else if (pairs == "none") {
+    object.bending_pairs = BendingPairs::kNone;
+  } else {
+    throw_user_error(map.loc("bending_pairs"), "'{}' must be collinear, all or none; got '{}'",
+                     map.path("bending_pairs"), pairs);
+  }
+  object.torsion = map.boolean("torsion", object.torsion);
+  if (map.has("damping")) {
+    YamlMap damping(map.get("damping"), map.file(), map.path("damping"));
+    if (damping.has("axial") && damping.has("axial_ratio")) {
+      throw_user_error(damping.loc(), "'{}': give 'axial' (N·s/m) or 'axial_ratio', not both",
+                       damping.name());
+    }
+    object.axial_damping.coefficient = damping.number("axial", 0.0);
+    object.axial_damping.ratio = damping.number("axial_ratio", 0.0);
+    if (object.axial_damping.coefficient < 0.0 || object.axial_damping.ratio < 0.0) {
+      throw_user_error(damping.loc(), "'{}': damping cannot be negative", damping.name());
+    }
+    damping.finish();
+  }
   const Vec3 color = map.vec3("color", object.color.cast<double>());
   if ((color.array() < 0.0).any() || (color.array() > 1.0).any()) {
     throw_user_error(map.loc("color"), "'{}' must be [r, g, b] with each between 0 and 1",
@@ -316,6 +539,14 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     scene.timestep = dt;
   }
   scene.gravity = map.vec3("gravity", scene.gravity);
+  if (map.has("damping")) {
+    YamlMap damping(map.get("damping"), file, "damping");
+    scene.global_damping = damping.number("global", 0.0);
+    if (scene.global_damping < 0.0) {
+      throw_user_error(damping.loc("global"), "'damping.global' cannot be negative (1/s)");
+    }
+    damping.finish();
+  }
 
   if (map.has("ground")) {
     scene.ground = read_ground(YamlMap(map.get("ground"), file, "ground"));
@@ -353,11 +584,42 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     }
     scene.objects.push_back(std::move(object));
   }
+  if (const YAML::Node fields = map.get("forces"); fields) {
+    if (!fields.IsSequence()) {
+      throw_user_error(map.loc("forces"), "'forces' must be a list of field forces");
+    }
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      scene.fields.push_back(
+          read_field(YamlMap(fields[i], file, fmt::format("forces[{}]", i)), scene.objects));
+    }
+  }
+  if (map.has("wind")) {
+    scene.wind = read_wind(YamlMap(map.get("wind"), file, "wind"));
+    for (const std::string& name : scene.wind.objects) {
+      if (find_object(scene.objects, name) == nullptr) {
+        throw_user_error(map.loc("wind"), "'wind.objects' names '{}', which is no object", name);
+      }
+    }
+  }
   map.finish();
   return scene;
 }
 
 }  // namespace
+
+double TimeProfile::operator()(double t) const {
+  switch (kind) {
+    case Kind::kConstant:
+      return 1.0;
+    case Kind::kStep:
+      return t >= start ? 1.0 : 0.0;
+    case Kind::kRamp:
+      return std::clamp((t - start) / (end - start), 0.0, 1.0);
+    case Kind::kSine:
+      return t >= start ? std::sin(2.0 * kPi * frequency * (t - start) + phase) : 0.0;
+  }
+  return 1.0;
+}
 
 int SceneDescription::frame_count() const {
   return static_cast<int>(std::llround(duration * fps));

@@ -49,7 +49,7 @@ TEST(SceneReader, ReadsEveryKeyOfAValidScene) {
   EXPECT_DOUBLE_EQ(*scene.timestep, 0.001);
   EXPECT_EQ(scene.timestep_loc.line, 5);
   EXPECT_TRUE(scene.gravity.isApprox(Vec3(0, 0, -9.0)));
-  EXPECT_DOUBLE_EQ(scene.ground.height, -0.5);
+  EXPECT_TRUE(scene.ground.point.isApprox(Vec3(0, 0, -0.5)));
   EXPECT_FALSE(scene.ground.visible);
   EXPECT_DOUBLE_EQ(scene.camera.fov_degrees, 30.0);
   EXPECT_EQ(scene.image_width, 320);
@@ -142,7 +142,7 @@ TEST(SceneReader, ImpossibleValuesAreErrors) {
                     5, {"longer than one frame"});
   expect_user_error(
       [] { scene_from_yaml(valid_scene_with("pinned: {indices: [0]", "pinned: {indices: [99]")); },
-      18, {"pinned vertex index 99 is out of range", "15 vertices"});
+      18, {"vertex index 99 is out of range", "15 vertices"});
   // A material needs exactly one way of giving the section.
   expect_user_error(
       [] { scene_from_yaml(valid_scene_with("area: 1.0e-4", "area: 1.0e-4, radius: 0.1")); }, 23,
