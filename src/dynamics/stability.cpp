@@ -5,39 +5,10 @@
 #include <limits>
 #include <vector>
 
+#include "model/frequency_bound.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
-
-double max_frequency_squared_bound(const Model& model) {
-  const Index n = model.node_count();
-  std::vector<Mat3> diagonal_block(n, Mat3::Zero());  // (n_nodes) Σ k n nᵀ, N/m
-  std::vector<double> coupling(n, 0.0);               // (n_nodes) Σ k/√(m_i m_j), 1/s²
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    const Index n0 = model.bar_nodes[2 * b];
-    const Index n1 = model.bar_nodes[2 * b + 1];
-    const double k = model.bar_axial_stiffness[b];
-    const Vec3 direction = (model.node_initial_x[n1] - model.node_initial_x[n0]).normalized();
-    const Mat3 block = k * direction * direction.transpose();
-    diagonal_block[n0] += block;
-    diagonal_block[n1] += block;
-    if (!model.pinned(n0) && !model.pinned(n1)) {
-      const double c = k * std::sqrt(model.node_inv_mass[n0] * model.node_inv_mass[n1]);
-      coupling[n0] += c;
-      coupling[n1] += c;
-    }
-  }
-  double bound = 0.0;
-  for (Index i = 0; i < n; ++i) {
-    if (model.pinned(i)) {
-      continue;
-    }
-    Eigen::SelfAdjointEigenSolver<Mat3> solver;
-    solver.computeDirect(diagonal_block[i], Eigen::EigenvaluesOnly);
-    bound = std::max(bound, solver.eigenvalues().maxCoeff() * model.node_inv_mass[i] + coupling[i]);
-  }
-  return bound;
-}
 
 double critical_timestep(const Model& model) {
   const double omega_squared = max_frequency_squared_bound(model);

@@ -5,21 +5,13 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "model/frequency_bound.hpp"
 
 namespace dinam {
 
 struct Model;
 
-// An upper bound of ω_max², rad²/s², by the block Gershgorin theorem on D = M^{-½} K M^{-½}
-// over the free nodes, K the axial stiffness at rest (a bar b between i and j adds k n nᵀ to
-// the blocks ii and jj and −k n nᵀ to ij and ji). Every eigenvalue of D lies within
-// Σ_j ‖D_ij‖ of an eigenvalue of some diagonal block, so
-//   ω_max² ≤ max over free nodes i of  λ_max(Σ_b k_b n_b n_bᵀ) / m_i + Σ_{b to free j} k_b / √(m_i
-//   m_j).
-// It is exact for one mass on a spring and for the highest mode of a uniform chain; pinned
-// neighbours stiffen the diagonal block but add no coupling, and pinned nodes themselves do not
-// move and are left out.
-double max_frequency_squared_bound(const Model& model);
+
 
 // 2 / ω_max from the bound above, s; infinite when nothing can vibrate.
 double critical_timestep(const Model& model);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "scene/scene_description.hpp"
 
 namespace dinam {
 
@@ -22,6 +23,33 @@ struct ModelObject {
   double render_radius = 0.0;  // m; 0 means "choose from the wire radius and the scene size"
 };
 
+// A field force resolved to node ids.
+struct FieldForce {
+  Vec3 value = Vec3::Zero();  // m/s² when per_unit_mass, else N on each node
+  bool per_unit_mass = true;
+  std::vector<Index> nodes;   // (n_targets)
+  TimeProfile profile;
+};
+
+// The ground as the dynamics sees it: a rigid half-space with penalty contact and friction.
+struct GroundContact {
+  bool enabled = false;
+  Vec3 point = Vec3::Zero();
+  Vec3 normal = kWorldUp;
+  std::vector<double> node_stiffness;  // (n_nodes) N/m, normal and tangential (stick) penalty
+  std::vector<double> node_damping;    // (n_nodes) N·s/m, normal direction only
+  double static_friction = 0.5;        // μs
+  double kinetic_friction = 0.4;       // μk
+  bool stick = false;                  // never slide
+};
+
+// Wind as the dynamics sees it: the field's parameters and what it drags on.
+struct WindLoad {
+  WindDesc field;
+  std::vector<Index> faces;  // (n_wind_faces) face ids that feel pressure drag
+  std::vector<Index> bars;   // (n_wind_bars) bars on no such face, which feel cross-flow drag
+};
+
 struct Model {
   // Nodes: point masses without rotational inertia.
   std::vector<Vec3> node_initial_x;   // (n_nodes) m
@@ -30,10 +58,27 @@ struct Model {
   std::vector<double> node_inv_mass;  // (n_nodes) 1/kg; 0 for pinned nodes, which never move
   std::vector<Index> node_object;     // (n_nodes) object id
 
-  // Bars: one per unique mesh edge, an axial spring k = EA/L0 between nodes n0 and n1.
+  // Bars: one per unique mesh edge, an axial spring k = EA/L0 and a damper between n0 and n1.
   std::vector<Index> bar_nodes;             // (n_bars × 2) n0, n1
   std::vector<double> bar_rest_length;      // (n_bars) m
   std::vector<double> bar_axial_stiffness;  // (n_bars) N/m, EA / L0
+  std::vector<double> bar_yield_force;      // (n_bars) N; infinite when elastic
+  std::vector<double> bar_damping;          // (n_bars) N·s/m, on the relative axial velocity
+  std::vector<double> bar_radius;           // (n_bars) m, of the round section of equal area
+
+  // Bending springs: at node c between bars c–a and c–b, on the angle θ between them.
+  std::vector<Index> bend_nodes;          // (n_bends × 3) a, c, b
+  std::vector<double> bend_rest_angle;    // (n_bends) rad, in [0, π]
+  std::vector<double> bend_stiffness;     // (n_bends) N·m/rad, 2 E I / (L_ca + L_cb)
+  std::vector<double> bend_yield_moment;  // (n_bends) N·m; infinite when elastic
+
+  // Torsion springs: on bar i–j, the dihedral angle between the planes (a, i, j) and (i, j, b)
+  // of its reference neighbours i–a and j–b.
+  std::vector<Index> torsion_nodes;          // (n_torsions × 4) a, i, j, b
+  std::vector<double> torsion_rest_angle;    // (n_torsions) rad, in (−π, π]
+  std::vector<double> torsion_stiffness;     // (n_torsions) N·m/rad, G J / L0
+  std::vector<double> torsion_yield_moment;  // (n_torsions) N·m; infinite when elastic
+  Index bars_without_torsion = 0;            // bars with no usable reference neighbours
 
   // Mesh faces as loops of node ids (for drawing surfaces and for wind later):
   // face k has nodes face_nodes[face_offsets[k] .. face_offsets[k + 1]).
@@ -42,15 +87,19 @@ struct Model {
 
   std::vector<ModelObject> objects;
   Vec3 gravity = Vec3::Zero();  // m/s²
+  double global_damping = 0.0;  // 1/s: every free node feels −α m v
+  std::vector<FieldForce> fields;
+  WindLoad wind;
+  GroundContact ground;
 
   Index node_count() const { return static_cast<Index>(node_mass.size()); }
   Index bar_count() const { return static_cast<Index>(bar_rest_length.size()); }
+  Index bend_count() const { return static_cast<Index>(bend_rest_angle.size()); }
+  Index torsion_count() const { return static_cast<Index>(torsion_rest_angle.size()); }
   Index face_count() const { return static_cast<Index>(face_offsets.size()) - 1; }
   bool pinned(Index node) const { return node_inv_mass[node] == 0.0; }
   double total_mass() const;
 };
-
-struct SceneDescription;
 
 // Builds the model: welds coincident vertices of each object, turns every unique edge into a bar
 // and lumps the bar masses onto the nodes. Throws UserError for a zero-length bar or a pinned

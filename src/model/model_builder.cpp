@@ -1,6 +1,9 @@
 #include <algorithm>
+#include <cmath>
 
+#include "model/frequency_bound.hpp"
 #include "model/model.hpp"
+#include "model/spring_builders.hpp"
 #include "model/vertex_welding.hpp"
 #include "scene/scene_description.hpp"
 
@@ -45,7 +48,43 @@ bool inside(const BoxDesc& box, const Vec3& p) {
   return (p.array() >= box.min.array()).all() && (p.array() <= box.max.array()).all();
 }
 
-void add_object(const ObjectDesc& object, Index object_id, Model& model) {
+// Where an object's mesh vertices went: the node of each vertex, −1 for vertices on no edge.
+struct ObjectNodes {
+  const ObjectDesc* desc = nullptr;
+  Index object_id = 0;
+  std::vector<Index> node_of_vertex;  // (n_vertices)
+};
+
+// The nodes a selection names, in increasing order. A listed vertex on no edge is an error.
+std::vector<Index> select_nodes(const NodeSelection& selection, const ObjectNodes& object,
+                                const Model& model) {
+  const ModelObject& info = model.objects[object.object_id];
+  std::vector<bool> chosen(info.node_count, selection.all);
+  for (const Index vertex : selection.vertex_ids) {
+    const Index node = object.node_of_vertex[vertex];
+    if (node < 0) {
+      throw_user_error(selection.loc,
+                       "object '{}': vertex {} is on no edge of the mesh, so it is not a node of "
+                       "the structure",
+                       info.name, vertex);
+    }
+    chosen[node - info.first_node] = true;
+  }
+  for (Index local = 0; local < info.node_count; ++local) {
+    for (const BoxDesc& box : selection.boxes) {
+      chosen[local] = chosen[local] || inside(box, model.node_initial_x[info.first_node + local]);
+    }
+  }
+  std::vector<Index> nodes;
+  for (Index local = 0; local < info.node_count; ++local) {
+    if (chosen[local]) {
+      nodes.push_back(info.first_node + local);
+    }
+  }
+  return nodes;
+}
+
+ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) {
   const WeldResult weld = weld_vertices(object.mesh.vertices, weld_tolerance(object.mesh.vertices));
   const std::vector<Edge> edges = unique_edges(object, weld);
   if (edges.empty()) {
@@ -82,6 +121,7 @@ void add_object(const ObjectDesc& object, Index object_id, Model& model) {
 
   // Each bar's mass ρ A L0 goes half to each end.
   const MaterialDesc& material = object.material;
+  const double bar_radius = std::sqrt(material.area / std::numbers::pi);
   for (const auto& [a, b] : edges) {
     const Index n0 = node_of_welded[a];
     const Index n1 = node_of_welded[b];
@@ -90,38 +130,14 @@ void add_object(const ObjectDesc& object, Index object_id, Model& model) {
     model.bar_nodes.push_back(n1);
     model.bar_rest_length.push_back(rest_length);
     model.bar_axial_stiffness.push_back(material.youngs_modulus * material.area / rest_length);
+    model.bar_yield_force.push_back(material.yield_axial_force);
+    model.bar_radius.push_back(bar_radius);
+    model.bar_damping.push_back(0.0);  // set below, once the node masses are known
     const double half_mass = 0.5 * material.density * material.area * rest_length;
     model.node_mass[n0] += half_mass;
     model.node_mass[n1] += half_mass;
   }
   info.bar_count = static_cast<Index>(edges.size());
-
-  // Pins: the union of `all`, vertex ids and boxes. A pinned node never moves.
-  std::vector<bool> pinned(info.node_count, object.pins.all);
-  for (const Index vertex : object.pins.vertex_ids) {
-    const Index node = node_of_welded[weld.node_of_vertex[vertex]];
-    if (node < 0) {
-      throw_user_error(object.pins.loc,
-                       "object '{}': pinned vertex {} is on no edge of the mesh, so it is not a "
-                       "node of the structure",
-                       object.name, vertex);
-    }
-    pinned[node - info.first_node] = true;
-  }
-  for (Index local = 0; local < info.node_count; ++local) {
-    const Vec3& p = model.node_initial_x[info.first_node + local];
-    for (const BoxDesc& box : object.pins.boxes) {
-      pinned[local] = pinned[local] || inside(box, p);
-    }
-  }
-  for (Index local = 0; local < info.node_count; ++local) {
-    const Index node = info.first_node + local;
-    if (pinned[local]) {
-      model.node_initial_v[node].setZero();
-    } else {
-      model.node_inv_mass[node] = 1.0 / model.node_mass[node];
-    }
-  }
 
   for (const auto& face : object.mesh.faces) {
     for (const Index vertex : face) {
@@ -130,6 +146,131 @@ void add_object(const ObjectDesc& object, Index object_id, Model& model) {
     model.face_offsets.push_back(static_cast<Index>(model.face_nodes.size()));
   }
   model.objects.push_back(std::move(info));
+
+  ObjectNodes nodes{&object, object_id, {}};
+  nodes.node_of_vertex.reserve(weld.node_of_vertex.size());
+  for (const Index w : weld.node_of_vertex) {
+    nodes.node_of_vertex.push_back(node_of_welded[w]);
+  }
+  return nodes;
+}
+
+// Pins, initial velocities and axial dampers: everything that needs the node masses.
+void add_object_conditions(const ObjectNodes& object, Model& model) {
+  const ObjectDesc& desc = *object.desc;
+  const ModelObject& info = model.objects[object.object_id];
+  for (const VelocityGroupDesc& group : desc.velocity_groups) {
+    for (const Index node : select_nodes(group.nodes, object, model)) {
+      model.node_initial_v[node] = group.velocity;
+    }
+  }
+  std::vector<Index> pinned;
+  if (!desc.pins.empty()) {
+    pinned = select_nodes(desc.pins, object, model);
+  }
+  for (Index node = info.first_node; node < info.first_node + info.node_count; ++node) {
+    model.node_inv_mass[node] = 1.0 / model.node_mass[node];
+  }
+  for (const Index node : pinned) {
+    model.node_inv_mass[node] = 0.0;
+    model.node_initial_v[node].setZero();
+  }
+  // c = 2ζ √(k μ), μ the reduced mass of the two ends: ζ of the bar's own axial vibration.
+  for (Index b = info.first_bar; b < info.first_bar + info.bar_count; ++b) {
+    const double m0 = model.node_mass[model.bar_nodes[2 * b]];
+    const double m1 = model.node_mass[model.bar_nodes[2 * b + 1]];
+    const double reduced_mass = m0 * m1 / (m0 + m1);
+    model.bar_damping[b] =
+        desc.axial_damping.coefficient +
+        2.0 * desc.axial_damping.ratio * std::sqrt(model.bar_axial_stiffness[b] * reduced_mass);
+  }
+}
+
+void add_fields(const SceneDescription& scene, const std::vector<ObjectNodes>& objects,
+                Model& model) {
+  for (const FieldForceDesc& desc : scene.fields) {
+    FieldForce field{desc.value, desc.per_unit_mass, {}, desc.profile};
+    for (const ObjectNodes& object : objects) {
+      if (!desc.object.empty() && object.desc->name != desc.object) {
+        continue;
+      }
+      NodeSelection selection = desc.nodes;
+      selection.all = selection.all || desc.nodes.empty();
+      const std::vector<Index> nodes = select_nodes(selection, object, model);
+      field.nodes.insert(field.nodes.end(), nodes.begin(), nodes.end());
+    }
+    model.fields.push_back(std::move(field));
+  }
+}
+
+void add_wind(const SceneDescription& scene, Model& model) {
+  model.wind.field = scene.wind;
+  if (!scene.wind.enabled) {
+    return;
+  }
+  auto feels_wind = [&](Index object) {
+    const auto& names = scene.wind.objects;
+    return names.empty() ||
+           std::find(names.begin(), names.end(), model.objects[object].name) != names.end();
+  };
+  // Faces take pressure drag; a bar on no face is a bare wire and takes cross-flow drag.
+  std::vector<bool> on_face(model.bar_count(), false);
+  std::vector<std::vector<std::pair<Index, Index>>> bars_of_node(model.node_count());
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    bars_of_node[n0].emplace_back(n1, b);
+    bars_of_node[n1].emplace_back(n0, b);
+  }
+  for (Index f = 0; f < model.face_count(); ++f) {
+    const Index begin = model.face_offsets[f];
+    const Index end = model.face_offsets[f + 1];
+    if (!feels_wind(model.node_object[model.face_nodes[begin]])) {
+      continue;
+    }
+    model.wind.faces.push_back(f);
+    for (Index k = begin; k < end; ++k) {
+      const Index a = model.face_nodes[k];
+      const Index b = model.face_nodes[k + 1 < end ? k + 1 : begin];
+      for (const auto& [other, bar] : bars_of_node[a]) {
+        if (other == b) {
+          on_face[bar] = true;
+        }
+      }
+    }
+  }
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    if (!on_face[b] && feels_wind(model.node_object[model.bar_nodes[2 * b]])) {
+      model.wind.bars.push_back(b);
+    }
+  }
+}
+
+void add_ground(const SceneDescription& scene, Model& model) {
+  const GroundDesc& desc = scene.ground;
+  GroundContact& ground = model.ground;
+  ground.enabled = desc.contact;
+  ground.point = desc.point;
+  ground.normal = desc.normal;
+  ground.static_friction = desc.static_friction;
+  ground.kinetic_friction = desc.kinetic_friction;
+  ground.stick = desc.stick;
+  if (!ground.enabled) {
+    return;
+  }
+  // Auto: every node gets the same contact frequency ω_c = ½ ω_max of the structure, so the
+  // ground stiffens the model's highest frequency by about 12 % and penetration at impact speed
+  // v stays near v / ω_c.
+  const double structure = max_frequency_squared_bound(model, false);
+  const double contact_omega_squared = structure > 0.0 ? 0.25 * structure : 1e4;
+  ground.node_stiffness.resize(model.node_count());
+  ground.node_damping.resize(model.node_count());
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const double m = model.node_mass[i];
+    const double k = desc.stiffness ? *desc.stiffness : m * contact_omega_squared;
+    ground.node_stiffness[i] = k;
+    ground.node_damping[i] = 2.0 * desc.damping_ratio * std::sqrt(k * m);
+  }
 }
 
 }  // namespace
@@ -145,10 +286,26 @@ double Model::total_mass() const {
 Model build_model(const SceneDescription& scene) {
   Model model;
   model.gravity = scene.gravity;
+  model.global_damping = scene.global_damping;
   model.face_offsets.push_back(0);
+  std::vector<ObjectNodes> objects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    add_object(scene.objects[i], static_cast<Index>(i), model);
+    objects.push_back(add_object(scene.objects[i], static_cast<Index>(i), model));
   }
+  for (const ObjectNodes& object : objects) {
+    add_object_conditions(object, model);
+    const ModelObject& info = model.objects[object.object_id];
+    const NodeAdjacency adjacency = node_adjacency(model, info);
+    add_bending_springs(object.desc->material, object.desc->bending_pairs, info, adjacency, model);
+    if (object.desc->torsion) {
+      add_torsion_springs(object.desc->material, info, adjacency, model);
+    } else {
+      model.bars_without_torsion += info.bar_count;
+    }
+  }
+  add_fields(scene, objects, model);
+  add_wind(scene, model);
+  add_ground(scene, model);
   return model;
 }
 

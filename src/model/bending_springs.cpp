@@ -1,0 +1,75 @@
+#include <algorithm>
+
+#include "core/geometry.hpp"
+#include "model/spring_builders.hpp"
+
+namespace dinam {
+
+NodeAdjacency node_adjacency(const Model& model, const ModelObject& object) {
+  NodeAdjacency adjacency(object.node_count);
+  for (Index b = object.first_bar; b < object.first_bar + object.bar_count; ++b) {
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    adjacency[n0 - object.first_node].emplace_back(n1, b);
+    adjacency[n1 - object.first_node].emplace_back(n0, b);
+  }
+  return adjacency;
+}
+
+void add_bending_springs(const MaterialDesc& material, BendingPairs pairs,
+                         const ModelObject& object, const NodeAdjacency& adjacency, Model& model) {
+  if (pairs == BendingPairs::kNone) {
+    return;
+  }
+  const double ei = material.youngs_modulus * material.area_moment;
+  for (Index local = 0; local < object.node_count; ++local) {
+    const Index c = object.first_node + local;
+    const auto& bars = adjacency[local];
+    const Vec3& xc = model.node_initial_x[c];
+    std::vector<std::pair<int, int>> chosen;  // indices into `bars`, first < second
+    if (pairs == BendingPairs::kAll) {
+      for (int p = 0; p < static_cast<int>(bars.size()); ++p) {
+        for (int q = p + 1; q < static_cast<int>(bars.size()); ++q) {
+          chosen.emplace_back(p, q);
+        }
+      }
+    } else {
+      // Each bar with the partner that makes the widest angle with it (closest to straight).
+      for (int p = 0; p < static_cast<int>(bars.size()); ++p) {
+        int best = -1;
+        double widest = -1.0;
+        for (int q = 0; q < static_cast<int>(bars.size()); ++q) {
+          if (q == p) {
+            continue;
+          }
+          const double angle = bend_angle(model.node_initial_x[bars[p].first], xc,
+                                          model.node_initial_x[bars[q].first]);
+          if (angle > widest) {
+            widest = angle;
+            best = q;
+          }
+        }
+        if (best >= 0) {
+          chosen.emplace_back(std::min(p, best), std::max(p, best));
+        }
+      }
+      std::sort(chosen.begin(), chosen.end());
+      chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+    }
+    for (const auto& [p, q] : chosen) {
+      const Index a = bars[p].first;
+      const Index b = bars[q].first;
+      const double l1 = model.bar_rest_length[bars[p].second];
+      const double l2 = model.bar_rest_length[bars[q].second];
+      model.bend_nodes.insert(model.bend_nodes.end(), {a, c, b});
+      model.bend_rest_angle.push_back(
+          bend_angle(model.node_initial_x[a], xc, model.node_initial_x[b]));
+      // A beam's bending energy ∫ EI κ²/2 over the length (L1 + L2)/2 that the node stands for,
+      // with κ ≈ Δθ / ((L1 + L2)/2), is ½ k Δθ² with k = 2 EI / (L1 + L2).
+      model.bend_stiffness.push_back(2.0 * ei / (l1 + l2));
+      model.bend_yield_moment.push_back(material.yield_bending_moment);
+    }
+  }
+}
+
+}  // namespace dinam

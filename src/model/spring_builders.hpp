@@ -1,0 +1,22 @@
+#pragma once
+// The builders of the springs that span more than one bar. Each works on one object's range of
+// nodes and bars, after its bars exist; adjacency is found from the bars themselves.
+#include "model/model.hpp"
+
+namespace dinam {
+
+// The bars at each node of an object, as (other node, bar id).
+using NodeAdjacency = std::vector<std::vector<std::pair<Index, Index>>>;  // (object's n_nodes)
+NodeAdjacency node_adjacency(const Model& model, const ModelObject& object);
+
+// Bending springs k = 2 E I / (L1 + L2) between the chosen pairs of bars at each node.
+void add_bending_springs(const MaterialDesc& material, BendingPairs pairs,
+                         const ModelObject& object, const NodeAdjacency& adjacency, Model& model);
+
+// One torsion spring k = G J / L0 per bar that has a usable reference neighbour at each end: the
+// bar most nearly perpendicular to it, at least kMinReferenceSine away from collinear.
+inline constexpr double kMinReferenceSine = 0.2;  // about 11.5°
+void add_torsion_springs(const MaterialDesc& material, const ModelObject& object,
+                         const NodeAdjacency& adjacency, Model& model);
+
+}  // namespace dinam
