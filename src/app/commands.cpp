@@ -128,12 +128,13 @@ int run_info(const std::filesystem::path& scene_path) {
   }
   fmt::print("nodes            {} ({} pinned)\n", model.node_count(), pinned);
   fmt::print("bars             {}\n", model.bar_count());
-  fmt::print(
-      "springs          axial {}, bending 0, torsion 0 (bending and torsion are not "
-      "modelled yet)\n",
-      model.bar_count());
+  fmt::print("springs          axial {}, bending {}, torsion {}\n", model.bar_count(),
+             model.bend_count(), model.torsion_count());
+  fmt::print("no torsion       {} bars (no usable reference neighbour at an end)\n",
+             model.bars_without_torsion);
   fmt::print("total mass       {:.6g} kg\n", model.total_mass());
-  fmt::print("stability limit  {:.6g} s (2/ω_max, ω_max bounded from above)\n", timestep.critical);
+  fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
+             timestep.critical);
   fmt::print("time step        {:.6g} s ({})\n", timestep.dt,
              timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
                                 : "from the scene, fitted to whole steps per frame");

@@ -4,24 +4,48 @@
 
 namespace dinam {
 
-void add_axial_spring_forces(const Model& model, const std::vector<Vec3>& x,
-                             std::vector<Vec3>& force) {
+void add_axial_spring_forces(ForceContext& context) {
+  const Model& model = context.model;
+  State& state = context.state;
   const Index n_bars = model.bar_count();
   for (Index b = 0; b < n_bars; ++b) {
     const Index n0 = model.bar_nodes[2 * b];
     const Index n1 = model.bar_nodes[2 * b + 1];
     const AxialSpringResult r =
-        axial_spring(x[n0], x[n1], model.bar_rest_length[b], model.bar_axial_stiffness[b]);
-    force[n0] += r.force_on_n0;
-    force[n1] -= r.force_on_n0;
+        axial_spring(state.x[n0], state.x[n1], model.bar_rest_length[b],
+                     model.bar_axial_stiffness[b], state.bar_plastic_set[b],
+                     model.bar_yield_force[b]);
+    context.force[n0] += r.force_on_n0;
+    context.force[n1] -= r.force_on_n0;
+    if (context.update_history) {
+      state.bar_plastic_set[b] = r.plastic_set;
+      state.energy.plastic_dissipation += r.dissipated;
+    }
   }
 }
 
-double axial_spring_energy(const Model& model, const std::vector<Vec3>& x) {
+void add_axial_damper_forces(ForceContext& context) {
+  const Model& model = context.model;
+  const State& state = context.state;
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    if (model.bar_damping[b] == 0.0) {
+      continue;
+    }
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    const Vec3 f0 = axial_damper(state.x[n0], state.x[n1], state.v_half[n0], state.v_half[n1],
+                                 model.bar_damping[b]);
+    context.force[n0] += f0;
+    context.force[n1] -= f0;
+  }
+}
+
+double axial_spring_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index b = 0; b < model.bar_count(); ++b) {
-    energy += axial_spring(x[model.bar_nodes[2 * b]], x[model.bar_nodes[2 * b + 1]],
-                           model.bar_rest_length[b], model.bar_axial_stiffness[b])
+    energy += axial_spring(state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
+                          model.bar_rest_length[b], model.bar_axial_stiffness[b],
+                          state.bar_plastic_set[b], model.bar_yield_force[b])
                   .energy;
   }
   return energy;

@@ -1,37 +1,53 @@
 #pragma once
-// Axial springs: one per bar, k = EA / L0, linear in the change of length.
-#include <vector>
+// Axial springs and dampers: one per bar, k = EA / L0, elastoplastic in the extension, with a
+// viscous damper on the relative axial velocity of the two ends.
+#include <limits>
 
 #include "core/types.hpp"
+#include "dynamics/elastoplastic.hpp"
+#include "dynamics/force_context.hpp"
 
 namespace dinam {
 
-struct Model;
-
 struct AxialSpringResult {
   Vec3 force_on_n0;  // N; the force on n1 is its negative
-  double energy;     // J, ½ k (L − L0)²
+  double energy;     // J, ½ k (L − L0 − p)²
+  double plastic_set = 0.0;
+  double dissipated = 0.0;
 };
 
-// The kernel over one bar's two nodes. With d = x1 − x0, L = |d|, n = d / L:
-// f0 = k (L − L0) n (a stretched bar pulls n0 towards n1), f1 = −f0.
+// The kernel over one bar's two nodes. With d = x1 − x0, L = |d|, n = d / L and the axial force
+// N = k (L − L0 − p) (tension positive, flattened at ±Ny): f0 = N n, f1 = −f0.
 // A bar of zero current length has no direction and gives no force.
 inline AxialSpringResult axial_spring(const Vec3& x0, const Vec3& x1, double rest_length,
-                                      double stiffness) {
+                                      double stiffness, double plastic_set = 0.0,
+                                      double yield = std::numeric_limits<double>::infinity()) {
   const Vec3 d = x1 - x0;
   const double length = d.norm();
-  const double extension = length - rest_length;
+  const ElastoplasticResult r = elastoplastic(length - rest_length, plastic_set, stiffness, yield);
   if (length <= 0.0) {
-    return {Vec3::Zero(), 0.5 * stiffness * extension * extension};
+    return {Vec3::Zero(), r.energy, r.plastic_set, r.dissipated};
   }
-  return {(stiffness * extension / length) * d, 0.5 * stiffness * extension * extension};
+  return {(r.force / length) * d, r.energy, r.plastic_set, r.dissipated};
 }
 
-// Adds every bar's axial force to `force` (n_nodes).
-void add_axial_spring_forces(const Model& model, const std::vector<Vec3>& x,
-                             std::vector<Vec3>& force);
+// The damper's force on n0: c ((v1 − v0)·n) n, pulling the ends' separation speed to zero.
+inline Vec3 axial_damper(const Vec3& x0, const Vec3& x1, const Vec3& v0, const Vec3& v1,
+                         double coefficient) {
+  const Vec3 d = x1 - x0;
+  const double length_squared = d.squaredNorm();
+  if (length_squared <= 0.0) {
+    return Vec3::Zero();
+  }
+  return (coefficient * (v1 - v0).dot(d) / length_squared) * d;
+}
 
-// Σ ½ k (L − L0)² over all bars, J.
-double axial_spring_energy(const Model& model, const std::vector<Vec3>& x);
+// Adds every bar's spring force; updates the plastic sets when the context allows.
+void add_axial_spring_forces(ForceContext& context);
+// Adds every bar's damper force, from the velocities v_{n−½}.
+void add_axial_damper_forces(ForceContext& context);
+
+// Σ ½ k (L − L0 − p)² over all bars, J.
+double axial_spring_energy(const Model& model, const State& state);
 
 }  // namespace dinam

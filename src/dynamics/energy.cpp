@@ -1,5 +1,9 @@
 #include "dynamics/energy.hpp"
 
+#include "dynamics/axial_spring.hpp"
+#include "dynamics/bending_spring.hpp"
+#include "dynamics/ground_contact.hpp"
+#include "dynamics/torsion_spring.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -20,6 +24,24 @@ double gravitational_energy(const Model& model, const std::vector<Vec3>& x) {
     energy -= model.node_mass[i] * model.gravity.dot(x[i]);
   }
   return energy;
+}
+
+EnergyReport energy_report(const Model& model, const State& state,
+                           const std::vector<Vec3>& v_whole) {
+  EnergyReport report;
+  report.time = state.time;
+  report.kinetic = kinetic_energy(model, v_whole);
+  report.axial = axial_spring_energy(model, state);
+  report.bending = bending_spring_energy(model, state);
+  report.torsion = torsion_spring_energy(model, state);
+  report.gravitational = gravitational_energy(model, state.x);
+  report.contact = ground_contact_energy(model, state);
+  report.accounts = state.energy;
+  const EnergyAccounts& a = report.accounts;
+  report.total = report.kinetic + report.axial + report.bending + report.torsion +
+                 report.gravitational + report.contact + a.plastic_dissipation - a.damping_work -
+                 a.friction_work - a.contact_damping_work - a.wind_work - a.field_work;
+  return report;
 }
 
 }  // namespace dinam

@@ -4,10 +4,21 @@
 
 namespace dinam {
 
-void add_gravity_forces(const Model& model, std::vector<Vec3>& force) {
+void add_gravity_forces(ForceContext& context) {
+  const Model& model = context.model;
   const Index n = model.node_count();
   for (Index i = 0; i < n; ++i) {
-    force[i] += model.node_mass[i] * model.gravity;
+    context.force[i] += model.node_mass[i] * model.gravity;
+  }
+}
+
+void add_field_forces(ForceContext& context) {
+  const Model& model = context.model;
+  for (const FieldForce& field : model.fields) {
+    const Vec3 value = field.profile(context.state.time) * field.value;
+    for (const Index i : field.nodes) {
+      context.force[i] += field.per_unit_mass ? Vec3(model.node_mass[i] * value) : value;
+    }
   }
 }
 

@@ -1,13 +1,11 @@
 #pragma once
-// Field forces: gravity, m g on every node.
-#include <vector>
-
-#include "core/types.hpp"
+// Field forces: gravity m g on every node, and the scene's fields (per unit mass or per node,
+// scaled by their time profile).
+#include "dynamics/force_context.hpp"
 
 namespace dinam {
 
-struct Model;
-
-void add_gravity_forces(const Model& model, std::vector<Vec3>& force);
+void add_gravity_forces(ForceContext& context);
+void add_field_forces(ForceContext& context);  // at the state's time
 
 }  // namespace dinam

@@ -4,7 +4,13 @@
 
 #include "core/error.hpp"
 #include "dynamics/axial_spring.hpp"
+#include "dynamics/bending_spring.hpp"
+#include "dynamics/energy.hpp"
 #include "dynamics/field_forces.hpp"
+#include "dynamics/global_damping.hpp"
+#include "dynamics/ground_contact.hpp"
+#include "dynamics/torsion_spring.hpp"
+#include "dynamics/wind.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -27,29 +33,113 @@ void check_finite(const Model& model, const State& state) {
   }
 }
 
-}  // namespace
-
-void compute_forces(const Model& model, const ForceSwitches& switches, State& state) {
-  // 1. Clear.
-  for (Vec3& f : state.force) {
+void clear(std::vector<Vec3>& forces) {
+  for (Vec3& f : forces) {
     f.setZero();
-  }
-  // 2. External field forces.
-  if (switches.gravity) {
-    add_gravity_forces(model, state.force);
-  }
-  // 3. Internal elastic forces.
-  if (switches.axial_springs) {
-    add_axial_spring_forces(model, state.x, state.force);
   }
 }
 
-State initial_state(const Model& model, double dt, const ForceSwitches& switches) {
+void add_into(std::vector<Vec3>& total, const std::vector<Vec3>& part) {
+  for (std::size_t i = 0; i < total.size(); ++i) {
+    total[i] += part[i];
+  }
+}
+
+// Σ F_i · Δx_i with Δx = Δt v_{n+½}: the work a force kind did over the step, J.
+double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_half, double dt) {
+  double w = 0.0;
+  for (std::size_t i = 0; i < force.size(); ++i) {
+    w += force[i].dot(v_half[i]);
+  }
+  return w * dt;
+}
+
+}  // namespace
+
+void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
+                    bool update_history) {
+  EnergyWorkspace& ledger = state.energy_workspace;
+  const bool split = ledger.enabled;
+  // Without energy tracking every kind adds straight into the total.
+  auto target = [&](std::vector<Vec3>& own) -> std::vector<Vec3>& {
+    return split ? own : state.force;
+  };
+  clear(state.force);
+  if (split) {
+    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
+                       &ledger.field}) {
+      clear(*part);
+    }
+  }
+  ForceContext total{model, state, state.force, update_history};
+
+  // 1. External fields: gravity (a potential) and the scene's fields at t_n.
+  if (switches.gravity) {
+    add_gravity_forces(total);
+  }
+  if (switches.fields) {
+    ForceContext fields{model, state, target(ledger.field), update_history};
+    add_field_forces(fields);
+  }
+  // 2. Aerodynamic drag.
+  if (switches.wind) {
+    ForceContext wind{model, state, target(ledger.wind), update_history};
+    add_wind_forces(wind);
+  }
+  // 3. Internal elastoplastic springs.
+  if (switches.axial_springs) {
+    add_axial_spring_forces(total);
+  }
+  if (switches.bending) {
+    add_bending_spring_forces(total);
+  }
+  if (switches.torsion) {
+    add_torsion_spring_forces(total);
+  }
+  // 4. Viscous damping: axial dampers and global friction.
+  ForceContext damping{model, state, target(ledger.damping), update_history};
+  if (switches.axial_dampers) {
+    add_axial_damper_forces(damping);
+  }
+  if (switches.global_damping) {
+    add_global_damping_forces(damping);
+  }
+  // 5. Boundary conditions: the ground.
+  if (switches.ground) {
+    add_ground_contact_forces(total, split ? &ledger.contact_damping : nullptr,
+                              split ? &ledger.friction : nullptr);
+  }
+  if (split) {
+    for (const auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction,
+                             &ledger.wind, &ledger.field}) {
+      add_into(state.force, *part);
+    }
+  }
+}
+
+State initial_state(const Model& model, double dt, const ForceSwitches& switches,
+                    bool track_energy) {
+  const std::size_t n = model.node_count();
   State state;
   state.x = model.node_initial_x;
   state.v_half = model.node_initial_v;
-  state.force.assign(model.node_count(), Vec3::Zero());
-  compute_forces(model, switches, state);
+  state.force.assign(n, Vec3::Zero());
+  state.bar_plastic_set.assign(model.bar_count(), 0.0);
+  state.bend_plastic_set.assign(model.bend_count(), 0.0);
+  state.torsion_plastic_set.assign(model.torsion_count(), 0.0);
+  state.contact_anchor.assign(n, Vec3::Zero());
+  state.contact_touching.assign(n, 0);
+  state.contact_sliding.assign(n, 0);
+  EnergyWorkspace& ledger = state.energy_workspace;
+  ledger.enabled = track_energy;
+  if (track_energy) {
+    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
+                       &ledger.field, &ledger.v_previous}) {
+      part->assign(n, Vec3::Zero());
+    }
+    ledger.last = energy_report(model, state, state.v_half);
+  }
+  compute_forces(model, switches, state, false);
   for (Index i = 0; i < model.node_count(); ++i) {
     state.v_half[i] -= 0.5 * dt * model.node_inv_mass[i] * state.force[i];
   }
@@ -57,11 +147,32 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
 }
 
 void step(const Model& model, double dt, const ForceSwitches& switches, State& state) {
-  compute_forces(model, switches, state);
-  // Integrate. Pinned nodes have zero inverse mass and zero velocity, so they stay put.
+  EnergyWorkspace& ledger = state.energy_workspace;
+  // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
+  compute_forces(model, switches, state, true);
+  if (ledger.enabled) {
+    ledger.v_previous = state.v_half;
+  }
+  // 2. Velocities to n + ½. Pinned nodes have zero inverse mass and zero velocity.
   const Index n = model.node_count();
   for (Index i = 0; i < n; ++i) {
     state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i];
+  }
+  // 3. Energy at t_n (velocities averaged across it), then the work of this step's forces.
+  if (ledger.enabled) {
+    for (Index i = 0; i < n; ++i) {
+      ledger.v_previous[i] = 0.5 * (ledger.v_previous[i] + state.v_half[i]);
+    }
+    ledger.last = energy_report(model, state, ledger.v_previous);
+    EnergyAccounts& a = state.energy;
+    a.damping_work += work(ledger.damping, state.v_half, dt);
+    a.contact_damping_work += work(ledger.contact_damping, state.v_half, dt);
+    a.friction_work += work(ledger.friction, state.v_half, dt);
+    a.wind_work += work(ledger.wind, state.v_half, dt);
+    a.field_work += work(ledger.field, state.v_half, dt);
+  }
+  // 4. Positions to n + 1.
+  for (Index i = 0; i < n; ++i) {
     state.x[i] += dt * state.v_half[i];
   }
   state.step += 1;

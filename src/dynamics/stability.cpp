@@ -1,6 +1,7 @@
 #include "dynamics/stability.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -10,12 +11,44 @@
 
 namespace dinam {
 
+double max_damping_rate_bound(const Model& model) {
+  const Index n = model.node_count();
+  std::vector<double> rate(n, model.global_damping);  // α m / m
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const double c = model.bar_damping[b];
+    if (c == 0.0) {
+      continue;
+    }
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    const double coupling = c * std::sqrt(model.node_inv_mass[n0] * model.node_inv_mass[n1]);
+    rate[n0] += c * model.node_inv_mass[n0] + coupling;
+    rate[n1] += c * model.node_inv_mass[n1] + coupling;
+  }
+  if (model.ground.enabled) {
+    for (Index i = 0; i < n; ++i) {
+      rate[i] += model.ground.node_damping[i] * model.node_inv_mass[i];
+    }
+  }
+  double bound = 0.0;
+  for (Index i = 0; i < n; ++i) {
+    if (!model.pinned(i)) {
+      bound = std::max(bound, rate[i]);
+    }
+  }
+  return bound;
+}
+
 double critical_timestep(const Model& model) {
   const double omega_squared = max_frequency_squared_bound(model);
+  const double gamma = max_damping_rate_bound(model);
   if (omega_squared <= 0.0) {
-    return std::numeric_limits<double>::infinity();
+    // Pure damping: v_{n+½} = (1 − γΔt) v_{n−½} is stable for γΔt < 2.
+    return gamma > 0.0 ? 2.0 / gamma : std::numeric_limits<double>::infinity();
   }
-  return 2.0 / std::sqrt(omega_squared);
+  const double omega = std::sqrt(omega_squared);
+  const double zeta = gamma / (2.0 * omega);
+  return 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
 }
 
 TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,

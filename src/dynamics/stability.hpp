@@ -13,7 +13,14 @@ struct Model;
 
 
 
-// 2 / ω_max from the bound above, s; infinite when nothing can vibrate.
+// An upper bound of the damping rates, 1/s: λ_max(M⁻¹C) by the same Gershgorin argument as the
+// frequency bound, over the global friction α, the axial dampers and the ground's normal damping.
+double max_damping_rate_bound(const Model& model);
+
+// The stability limit, s: with ω from the frequency bound and ζ = γ / (2ω) from the damping
+// bound, the central-difference limit with damping evaluated at the half step,
+//   Δt ≤ (2/ω) (√(1 + ζ²) − ζ)   (Belytschko, Liu and Moran, 2000, §6.4),
+// which is 2/ω undamped. Infinite when nothing can vibrate.
 double critical_timestep(const Model& model);
 
 struct TimeStep {

@@ -7,15 +7,63 @@
 
 namespace dinam {
 
-struct Model;
+// Work done and energy lost since t = 0, J, by what is not a potential of the positions.
+struct EnergyAccounts {
+  double damping_work = 0.0;          // axial dampers and global viscous friction (≤ 0)
+  double plastic_dissipation = 0.0;   // Σ yield × |Δ plastic set| (≥ 0)
+  double friction_work = 0.0;         // tangential ground forces (≤ 0 over a slide)
+  double contact_damping_work = 0.0;  // the ground's normal damping (≤ 0)
+  double wind_work = 0.0;             // aerodynamic drag
+  double field_work = 0.0;            // field forces other than gravity
+};
+
+// The energy of the system at one whole step, and what has come in and gone out since t = 0.
+// The balance `total` stays constant up to the integrator's error: potential and kinetic energy
+// plus what the dissipative forces took, minus what driving forces gave.
+struct EnergyReport {
+  double time = 0.0;           // s
+  double kinetic = 0.0;        // J, Σ ½ m |v_n|², v_n = ½ (v_{n−½} + v_{n+½})
+  double axial = 0.0;          // J, elastic energy of the axial springs
+  double bending = 0.0;        // J
+  double torsion = 0.0;        // J
+  double gravitational = 0.0;  // J, Σ −m g·x
+  double contact = 0.0;        // J, elastic energy of the ground's normal penalty
+  EnergyAccounts accounts;
+  double total = 0.0;  // kinetic + elastic + gravitational + contact − works + dissipation
+};
+
+// Per-kind force arrays and the last report, kept only when energy is tracked.
+struct EnergyWorkspace {
+  bool enabled = false;
+  std::vector<Vec3> damping;          // (n_nodes) N
+  std::vector<Vec3> contact_damping;  // (n_nodes) N
+  std::vector<Vec3> friction;         // (n_nodes) N
+  std::vector<Vec3> wind;             // (n_nodes) N
+  std::vector<Vec3> field;            // (n_nodes) N
+  std::vector<Vec3> v_previous;       // (n_nodes) m/s, v_{n−½} during a step
+  EnergyReport last;                  // at the last step taken
+};
 
 // Leapfrog state at step n: positions at whole steps, velocities at half steps.
 struct State {
   double time = 0.0;         // s, t_n
   std::int64_t step = 0;     // n
   std::vector<Vec3> x;       // (n_nodes) m, x_n
-  std::vector<Vec3> v_half;  // (n_nodes) m/s, v_{n-½}
+  std::vector<Vec3> v_half;  // (n_nodes) m/s, v_{n−½}
   std::vector<Vec3> force;   // (n_nodes) N, scratch: the total force at t_n on each node
+
+  std::vector<double> bar_plastic_set;      // (n_bars) m
+  std::vector<double> bend_plastic_set;     // (n_bends) rad
+  std::vector<double> torsion_plastic_set;  // (n_torsions) rad
+
+  // Ground contact history: where each node's stick spring is anchored on the plane, and
+  // whether it is sliding (kinetic friction) or sticking (static).
+  std::vector<Vec3> contact_anchor;           // (n_nodes) m
+  std::vector<std::uint8_t> contact_touching; // (n_nodes) 1 while below the plane
+  std::vector<std::uint8_t> contact_sliding;  // (n_nodes) 1 while sliding
+
+  EnergyAccounts energy;
+  EnergyWorkspace energy_workspace;
 };
 
 }  // namespace dinam

@@ -1,0 +1,18 @@
+#include "dynamics/global_damping.hpp"
+
+#include "model/model.hpp"
+
+namespace dinam {
+
+void add_global_damping_forces(ForceContext& context) {
+  const Model& model = context.model;
+  const double alpha = model.global_damping;
+  if (alpha == 0.0) {
+    return;
+  }
+  for (Index i = 0; i < model.node_count(); ++i) {
+    context.force[i] -= (alpha * model.node_mass[i]) * context.state.v_half[i];
+  }
+}
+
+}  // namespace dinam

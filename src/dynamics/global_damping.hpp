@@ -1,0 +1,10 @@
+#pragma once
+// Global viscous friction: −α m v on every node, from the velocities v_{n−½}, in the world frame
+// (the paper's "atrito viscoso em relação ao sistema global").
+#include "dynamics/force_context.hpp"
+
+namespace dinam {
+
+void add_global_damping_forces(ForceContext& context);
+
+}  // namespace dinam
