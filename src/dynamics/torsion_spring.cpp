@@ -32,8 +32,8 @@ TorsionSpringResult torsion_spring(const Vec3& xa, const Vec3& xi, const Vec3& x
   const Vec3 grad_b = (b2_norm / n2_squared) * n2;
   const double s1 = b1.dot(b2) / (b2_norm * b2_norm);
   const double s3 = b3.dot(b2) / (b2_norm * b2_norm);
-  const Vec3 grad_i = (s1 - 1.0) * grad_a - s3 * grad_b;
-  const Vec3 grad_j = (s3 - 1.0) * grad_b - s1 * grad_a;
+  const Vec3 grad_i = -(1.0 + s1) * grad_a + s3 * grad_b;
+  const Vec3 grad_j = -(1.0 + s3) * grad_b + s1 * grad_a;
   result.force_a = -r.force * grad_a;
   result.force_i = -r.force * grad_i;
   result.force_j = -r.force * grad_j;

@@ -17,10 +17,13 @@ struct TorsionSpringResult {
 };
 
 // With b1 = xi − xa, b2 = xj − xi, b3 = xb − xj, n1 = b1 × b2, n2 = b2 × b3 and φ as in
-// core/geometry.hpp, the gradients are (Blondel and Karplus, 1996)
+// core/geometry.hpp, the gradients are (Bekker's form, as in GROMACS's dihedral forces, with
+// our sign of φ)
 //   ∂φ/∂xa = −|b2| n1 / |n1|²,   ∂φ/∂xb = |b2| n2 / |n2|²,
-//   ∂φ/∂xi = (b1·b2/|b2|² − 1) ∂φ/∂xa − (b3·b2/|b2|²) ∂φ/∂xb,
-//   ∂φ/∂xj = (b3·b2/|b2|² − 1) ∂φ/∂xb − (b1·b2/|b2|²) ∂φ/∂xa,
+//   ∂φ/∂xi = −(1 + b1·b2/|b2|²) ∂φ/∂xa + (b3·b2/|b2|²) ∂φ/∂xb,
+//   ∂φ/∂xj = −(1 + b3·b2/|b2|²) ∂φ/∂xb + (b1·b2/|b2|²) ∂φ/∂xa,
+// which sum to zero (a rigid translation does not twist); tests/dynamics/kernels_test.cpp checks
+// them against finite differences of the energy.
 // and the force is −T ∇φ with T = k wrap(φ − φ0 − p) flattened at ±Ty. If a reference bar
 // swings into line with the axis (|n| → 0) the plane is lost and the force is left out for that
 // configuration rather than made infinite.

@@ -1,0 +1,192 @@
+// The force kernels one at a time: each elastic force is minus the gradient of its energy
+// (finite differences), the singular configurations stay finite, plasticity and time profiles.
+#include <gtest/gtest.h>
+
+#include <numbers>
+#include <random>
+
+#include "core/geometry.hpp"
+#include "dynamics/axial_spring.hpp"
+#include "dynamics/bending_spring.hpp"
+#include "dynamics/elastoplastic.hpp"
+#include "dynamics/ground_contact.hpp"
+#include "dynamics/torsion_spring.hpp"
+#include "model/model.hpp"
+#include "tolerances.hpp"
+
+namespace dinam {
+namespace {
+
+constexpr double kStep = 1e-6;  // m, finite-difference step
+
+// Checks f_p = −∂E/∂x_p for every node p by central differences of `energy`.
+template <typename Energy>
+void expect_force_is_minus_gradient(std::vector<Vec3> x, const std::vector<Vec3>& force,
+                                    const Energy& energy) {
+  double scale = 1.0;
+  for (const Vec3& f : force) {
+    scale = std::max(scale, f.norm());
+  }
+  for (std::size_t p = 0; p < x.size(); ++p) {
+    for (int c = 0; c < 3; ++c) {
+      const double saved = x[p][c];
+      x[p][c] = saved + kStep;
+      const double plus = energy(x);
+      x[p][c] = saved - kStep;
+      const double minus = energy(x);
+      x[p][c] = saved;
+      EXPECT_NEAR(force[p][c], -(plus - minus) / (2 * kStep), test::kGradientRelative * scale)
+          << "node " << p << " component " << c;
+    }
+  }
+}
+
+std::vector<Vec3> random_points(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  std::vector<Vec3> points;
+  for (int i = 0; i < count; ++i) {
+    points.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
+  }
+  return points;
+}
+
+TEST(BendingSpring, ForceIsMinusTheEnergyGradient) {
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 30; ++trial) {
+    const std::vector<Vec3> x = random_points(rng, 3);
+    const double rest = 0.3 + 2.5 * (trial % 10) / 10.0;  // rest angles across (0, π)
+    const double plastic_set = trial % 3 == 0 ? 0.2 : 0.0;
+    const double k = 3.0;
+    const BendingSpringResult r = bending_spring(x[0], x[1], x[2], rest, k, plastic_set);
+    expect_force_is_minus_gradient(x, {r.force_a, r.force_c, r.force_b}, [&](const auto& y) {
+      return bending_spring(y[0], y[1], y[2], rest, k, plastic_set).energy;
+    });
+  }
+}
+
+TEST(TorsionSpring, ForceIsMinusTheEnergyGradient) {
+  std::mt19937 rng(12);
+  for (int trial = 0; trial < 30; ++trial) {
+    const std::vector<Vec3> x = random_points(rng, 4);
+    const double rest = -3.0 + 6.0 * (trial % 10) / 10.0;
+    const double plastic_set = trial % 3 == 0 ? -0.4 : 0.0;
+    const double k = 2.0;
+    const TorsionSpringResult r = torsion_spring(x[0], x[1], x[2], x[3], rest, k, plastic_set);
+    expect_force_is_minus_gradient(
+        x, {r.force_a, r.force_i, r.force_j, r.force_b}, [&](const auto& y) {
+          return torsion_spring(y[0], y[1], y[2], y[3], rest, k, plastic_set).energy;
+        });
+  }
+}
+
+TEST(AxialSpring, ForceWithPlasticSetIsMinusTheEnergyGradient) {
+  std::mt19937 rng(13);
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::vector<Vec3> x = random_points(rng, 2);
+    const AxialSpringResult r = axial_spring(x[0], x[1], 0.8, 50.0, 0.05);
+    expect_force_is_minus_gradient(x, {r.force_on_n0, Vec3(-r.force_on_n0)}, [&](const auto& y) {
+      return axial_spring(y[0], y[1], 0.8, 50.0, 0.05).energy;
+    });
+  }
+}
+
+TEST(GroundContact, NormalForceIsMinusTheGradientOfThePenaltyEnergy) {
+  GroundContact ground;
+  ground.enabled = true;
+  ground.point = Vec3(0.1, -0.2, 0.3);
+  ground.normal = Vec3(0.2, -0.1, 1.0).normalized();
+  const double k = 400.0;
+  const std::vector<Vec3> x = {Vec3(0.3, 0.1, 0.1)};  // below the plane
+  ASSERT_LT((x[0] - ground.point).dot(ground.normal), 0.0);
+  const ContactForces f = ground_contact(ground, k, 0.0, x[0], Vec3::Zero(), x[0], false);
+  expect_force_is_minus_gradient(x, {f.normal_elastic}, [&](const auto& y) {
+    return ground_contact(ground, k, 0.0, y[0], Vec3::Zero(), y[0], false).energy;
+  });
+}
+
+TEST(GroundContact, OnlyEverPushes) {
+  GroundContact ground;
+  ground.enabled = true;
+  // Barely below the plane but leaving it fast: the damper would pull; the clip stops that.
+  const ContactForces f =
+      ground_contact(ground, 1e4, 50.0, Vec3(0, 0, -1e-4), Vec3(0, 0, 10.0), Vec3::Zero(), false);
+  EXPECT_GE((f.normal_elastic + f.normal_damping).dot(ground.normal), 0.0);
+  EXPECT_NEAR((f.normal_elastic + f.normal_damping).norm(), 0.0, 1e-12);
+}
+
+// Straight bars: the angle is π, the direction of bending is undefined. The force must stay
+// finite and small near there, and vanish at the straight rest shape.
+TEST(BendingSpring, StraightBarsGiveNoNaNAndNoSpike) {
+  const double k = 5.0;
+  const double pi = std::numbers::pi;
+  for (const double offset : {0.0, 1e-14, 1e-10, 1e-6, 1e-3}) {
+    const Vec3 xa(-1, 0, 0), xc(0, 0, 0), xb(1, offset, 0);
+    for (const double rest : {pi, 2.0}) {
+      const BendingSpringResult r = bending_spring(xa, xc, xb, rest, k);
+      ASSERT_TRUE(r.force_a.allFinite() && r.force_b.allFinite() && r.force_c.allFinite());
+      // |f_b| = |M| / L_b with |M| ≤ k |θ − θ0|: never more than the moment over the arm.
+      const double moment_bound = k * std::abs(bend_angle(xa, xc, xb) - rest);
+      EXPECT_LE(r.force_b.norm(), moment_bound / 1.0 + 1e-12) << offset;
+      if (rest == pi) {
+        EXPECT_LE(r.force_b.norm(), k * 2.0 * offset + 1e-12) << offset;  // fades with the kink
+      }
+    }
+  }
+}
+
+// An axial bar pulled past yield and released: the force plateaus at Ny once the extension
+// passes Ny/k, and after unloading to zero force the bar keeps Δmax − Ny/k.
+TEST(Elastoplastic, AxialPlateauAndPermanentSet) {
+  const double k = 1000.0;      // N/m
+  const double yield = 50.0;    // N: yields at 0.05 m
+  const double stretch = 0.12;  // m, Δmax
+  double plastic_set = 0.0;
+  for (int i = 0; i <= 120; ++i) {  // load in 1 mm steps
+    const double extension = stretch * i / 120.0;
+    const ElastoplasticResult r = elastoplastic(extension, plastic_set, k, yield);
+    plastic_set = r.plastic_set;
+    EXPECT_NEAR(r.force, std::min(k * extension, yield), 1e-9) << extension;
+  }
+  double extension = stretch;
+  for (; extension > 0.0; extension -= 0.001) {  // unload until the force reaches zero
+    const ElastoplasticResult r = elastoplastic(extension, plastic_set, k, yield);
+    plastic_set = r.plastic_set;
+    if (r.force <= 0.0) {
+      break;
+    }
+  }
+  EXPECT_NEAR(plastic_set, stretch - yield / k, 1e-12);
+  EXPECT_NEAR(extension, stretch - yield / k, 1.5e-3);  // within the unloading increment
+}
+
+TEST(Elastoplastic, DissipationIsYieldTimesPlasticFlow) {
+  const ElastoplasticResult r = elastoplastic(0.2, 0.0, 1000.0, 50.0);
+  EXPECT_NEAR(r.plastic_set, 0.15, 1e-12);
+  EXPECT_NEAR(r.dissipated, 50.0 * 0.15, 1e-12);
+  EXPECT_NEAR(r.energy, 0.5 * 50.0 * 50.0 / 1000.0, 1e-12);
+}
+
+TEST(TimeProfile, StepRampAndSine) {
+  TimeProfile step{TimeProfile::Kind::kStep, 0.5};
+  EXPECT_EQ(step(0.49), 0.0);
+  EXPECT_EQ(step(0.5), 1.0);
+  TimeProfile ramp{TimeProfile::Kind::kRamp, 1.0, 3.0};
+  EXPECT_EQ(ramp(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(ramp(2.5), 0.75);
+  EXPECT_EQ(ramp(4.0), 1.0);
+  TimeProfile sine{TimeProfile::Kind::kSine, 1.0, 0.0, 2.0, 0.0};
+  EXPECT_EQ(sine(0.9), 0.0);
+  EXPECT_NEAR(sine(1.125), 1.0, 1e-12);  // a quarter period of 2 Hz after the start
+}
+
+TEST(Geometry, DihedralAngleAndWrap) {
+  // a above the x axis in the x-y plane, b rotated by +30° about the axis i→j = +x.
+  const double angle = std::numbers::pi / 6;
+  const Vec3 a(0, 1, 0), i(0, 0, 0), j(1, 0, 0), b(1, std::cos(angle), std::sin(angle));
+  EXPECT_NEAR(std::abs(dihedral_angle(a, i, j, b)), angle, 1e-12);
+  EXPECT_NEAR(wrap_angle(3.5 * std::numbers::pi), -0.5 * std::numbers::pi, 1e-12);
+  EXPECT_NEAR(wrap_angle(-0.25), -0.25, 1e-15);
+}
+
+}  // namespace
+}  // namespace dinam
