@@ -11,10 +11,9 @@ void add_axial_spring_forces(ForceContext& context) {
   for (Index b = 0; b < n_bars; ++b) {
     const Index n0 = model.bar_nodes[2 * b];
     const Index n1 = model.bar_nodes[2 * b + 1];
-    const AxialSpringResult r =
-        axial_spring(state.x[n0], state.x[n1], model.bar_rest_length[b],
-                     model.bar_axial_stiffness[b], state.bar_plastic_set[b],
-                     model.bar_yield_force[b]);
+    const AxialSpringResult r = axial_spring(state.x[n0], state.x[n1], model.bar_rest_length[b],
+                                             model.bar_axial_stiffness[b], state.bar_plastic_set[b],
+                                             model.bar_yield_force[b]);
     context.force[n0] += r.force_on_n0;
     context.force[n1] -= r.force_on_n0;
     if (context.update_history) {
@@ -44,8 +43,8 @@ double axial_spring_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index b = 0; b < model.bar_count(); ++b) {
     energy += axial_spring(state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
-                          model.bar_rest_length[b], model.bar_axial_stiffness[b],
-                          state.bar_plastic_set[b], model.bar_yield_force[b])
+                           model.bar_rest_length[b], model.bar_axial_stiffness[b],
+                           state.bar_plastic_set[b], model.bar_yield_force[b])
                   .energy;
   }
   return energy;

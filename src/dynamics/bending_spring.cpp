@@ -45,10 +45,9 @@ void add_bending_spring_forces(ForceContext& context) {
     const Index a = model.bend_nodes[3 * s];
     const Index c = model.bend_nodes[3 * s + 1];
     const Index b = model.bend_nodes[3 * s + 2];
-    const BendingSpringResult r =
-        bending_spring(state.x[a], state.x[c], state.x[b], model.bend_rest_angle[s],
-                       model.bend_stiffness[s], state.bend_plastic_set[s],
-                       model.bend_yield_moment[s]);
+    const BendingSpringResult r = bending_spring(
+        state.x[a], state.x[c], state.x[b], model.bend_rest_angle[s], model.bend_stiffness[s],
+        state.bend_plastic_set[s], model.bend_yield_moment[s]);
     context.force[a] += r.force_a;
     context.force[c] += r.force_c;
     context.force[b] += r.force_b;

@@ -18,9 +18,11 @@ ContactForces ground_contact(const GroundContact& ground, double stiffness, doub
   result.normal_damping = (normal_force - elastic) * n;
   result.energy = 0.5 * elastic * penetration;
 
-  // Tangential: the stick spring from the anchor to the node's foot on the plane.
+  // Tangential: the stick spring from the anchor to the node's foot on the plane, with the same
+  // damper as the normal direction, so that landing on a slope loads both directions alike.
   const Vec3 foot = x + penetration * n;
-  const Vec3 trial = -stiffness * (foot - anchor);
+  const Vec3 tangential_velocity = v - v.dot(n) * n;
+  const Vec3 trial = -stiffness * (foot - anchor) - damping * tangential_velocity;
   const double trial_norm = trial.norm();
   const double limit = (sliding ? ground.kinetic_friction : ground.static_friction) * normal_force;
   if (ground.stick || trial_norm <= limit) {

@@ -7,7 +7,9 @@
 // it is pushed back for as long as it is below.
 //
 // Tangential: Coulomb friction regularised by a stick spring. On touching, a node is anchored
-// where it meets the plane; the trial force −k (x_t − anchor) holds it while |F_t| ≤ μs N
+// where it meets the plane; the trial force −k (x_t − anchor) − c v_t (the same k and c as the
+// normal direction, so a block landing on a slope loads both in proportion) holds it while
+// |F_t| ≤ μs N
 // (sticking: it moves only by the spring's elastic give, |F_t|/k). Beyond that it slides, with
 // the force μk N against the trial direction and the anchor dragged along, until the trial
 // force falls back to μk N. With `stick` it never slides (the paper's falling ball).
@@ -26,7 +28,7 @@ struct ContactForces {
   Vec3 friction = Vec3::Zero();        // N, tangential
   Vec3 anchor = Vec3::Zero();          // the stick anchor after this evaluation
   bool sliding = false;
-  double energy = 0.0;                 // J, ½ k d²
+  double energy = 0.0;  // J, ½ k d²
 };
 
 // One node below the plane. `anchor` and `sliding` are its history from the last step.

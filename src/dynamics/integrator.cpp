@@ -45,11 +45,14 @@ void add_into(std::vector<Vec3>& total, const std::vector<Vec3>& part) {
   }
 }
 
-// Σ F_i · Δx_i with Δx = Δt v_{n+½}: the work a force kind did over the step, J.
-double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_half, double dt) {
+// Δt Σ F_i · v_i with the whole-step velocity v_n = ½ (v_{n−½} + v_{n+½}): the work of a force
+// kind over the step around t_n. It is the trapezoid rule ½ (F_n + F_{n+1}) · Δx summed by parts,
+// and pairs with the kinetic energy reported at whole steps; F_n · Δt v_{n+½} instead would book
+// spurious work in modes that flip sign every step.
+double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_whole, double dt) {
   double w = 0.0;
   for (std::size_t i = 0; i < force.size(); ++i) {
-    w += force[i].dot(v_half[i]);
+    w += force[i].dot(v_whole[i]);
   }
   return w * dt;
 }
@@ -158,18 +161,31 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
   for (Index i = 0; i < n; ++i) {
     state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i];
   }
-  // 3. Energy at t_n (velocities averaged across it), then the work of this step's forces.
+  // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
+  //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
   if (ledger.enabled) {
     for (Index i = 0; i < n; ++i) {
       ledger.v_previous[i] = 0.5 * (ledger.v_previous[i] + state.v_half[i]);
     }
-    ledger.last = energy_report(model, state, ledger.v_previous);
+    const std::vector<Vec3>& v_whole = ledger.v_previous;
+    EnergyAccounts step_work;
+    step_work.damping_work = work(ledger.damping, v_whole, dt);
+    step_work.contact_damping_work = work(ledger.contact_damping, v_whole, dt);
+    step_work.friction_work = work(ledger.friction, v_whole, dt);
+    step_work.wind_work = work(ledger.wind, v_whole, dt);
+    step_work.field_work = work(ledger.field, v_whole, dt);
     EnergyAccounts& a = state.energy;
-    a.damping_work += work(ledger.damping, state.v_half, dt);
-    a.contact_damping_work += work(ledger.contact_damping, state.v_half, dt);
-    a.friction_work += work(ledger.friction, state.v_half, dt);
-    a.wind_work += work(ledger.wind, state.v_half, dt);
-    a.field_work += work(ledger.field, state.v_half, dt);
+    a.damping_work += 0.5 * step_work.damping_work;
+    a.contact_damping_work += 0.5 * step_work.contact_damping_work;
+    a.friction_work += 0.5 * step_work.friction_work;
+    a.wind_work += 0.5 * step_work.wind_work;
+    a.field_work += 0.5 * step_work.field_work;
+    ledger.last = energy_report(model, state, v_whole);
+    a.damping_work += 0.5 * step_work.damping_work;
+    a.contact_damping_work += 0.5 * step_work.contact_damping_work;
+    a.friction_work += 0.5 * step_work.friction_work;
+    a.wind_work += 0.5 * step_work.wind_work;
+    a.field_work += 0.5 * step_work.field_work;
   }
   // 4. Positions to n + 1.
   for (Index i = 0; i < n; ++i) {

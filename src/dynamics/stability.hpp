@@ -11,8 +11,6 @@ namespace dinam {
 
 struct Model;
 
-
-
 // An upper bound of the damping rates, 1/s: λ_max(M⁻¹C) by the same Gershgorin argument as the
 // frequency bound, over the global friction α, the axial dampers and the ground's normal damping.
 double max_damping_rate_bound(const Model& model);

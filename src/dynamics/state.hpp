@@ -58,9 +58,9 @@ struct State {
 
   // Ground contact history: where each node's stick spring is anchored on the plane, and
   // whether it is sliding (kinetic friction) or sticking (static).
-  std::vector<Vec3> contact_anchor;           // (n_nodes) m
-  std::vector<std::uint8_t> contact_touching; // (n_nodes) 1 while below the plane
-  std::vector<std::uint8_t> contact_sliding;  // (n_nodes) 1 while sliding
+  std::vector<Vec3> contact_anchor;            // (n_nodes) m
+  std::vector<std::uint8_t> contact_touching;  // (n_nodes) 1 while below the plane
+  std::vector<std::uint8_t> contact_sliding;   // (n_nodes) 1 while sliding
 
   EnergyAccounts energy;
   EnergyWorkspace energy_workspace;

@@ -19,7 +19,7 @@ TorsionSpringResult torsion_spring(const Vec3& xa, const Vec3& xi, const Vec3& x
   // The plastic set accumulates unwrapped; only the elastic part is taken the short way round.
   const double deformation = plastic_set + wrap_angle(angle - rest_angle - plastic_set);
   const ElastoplasticResult r = elastoplastic(deformation, plastic_set, stiffness, yield);
-  TorsionSpringResult result{Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(),
+  TorsionSpringResult result{Vec3::Zero(), Vec3::Zero(),  Vec3::Zero(), Vec3::Zero(),
                              r.energy,     r.plastic_set, r.dissipated};
   const double n1_squared = n1.squaredNorm();
   const double n2_squared = n2.squaredNorm();
@@ -46,10 +46,10 @@ void add_torsion_spring_forces(ForceContext& context) {
   State& state = context.state;
   for (Index s = 0; s < model.torsion_count(); ++s) {
     const Index* nodes = &model.torsion_nodes[4 * s];
-    const TorsionSpringResult r = torsion_spring(
-        state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]], state.x[nodes[3]],
-        model.torsion_rest_angle[s], model.torsion_stiffness[s], state.torsion_plastic_set[s],
-        model.torsion_yield_moment[s]);
+    const TorsionSpringResult r =
+        torsion_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]], state.x[nodes[3]],
+                       model.torsion_rest_angle[s], model.torsion_stiffness[s],
+                       state.torsion_plastic_set[s], model.torsion_yield_moment[s]);
     context.force[nodes[0]] += r.force_a;
     context.force[nodes[1]] += r.force_i;
     context.force[nodes[2]] += r.force_j;
@@ -65,11 +65,11 @@ double torsion_spring_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index s = 0; s < model.torsion_count(); ++s) {
     const Index* nodes = &model.torsion_nodes[4 * s];
-    energy += torsion_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]],
-                             state.x[nodes[3]], model.torsion_rest_angle[s],
-                             model.torsion_stiffness[s], state.torsion_plastic_set[s],
-                             model.torsion_yield_moment[s])
-                  .energy;
+    energy +=
+        torsion_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]], state.x[nodes[3]],
+                       model.torsion_rest_angle[s], model.torsion_stiffness[s],
+                       state.torsion_plastic_set[s], model.torsion_yield_moment[s])
+            .energy;
   }
   return energy;
 }

@@ -79,8 +79,8 @@ Vec3 face_drag(const Vec3& area_vector, const Vec3& relative_velocity, double ai
          normal;
 }
 
-Vec3 bar_drag(const Vec3& axis, double diameter, const Vec3& relative_velocity,
-              double air_density, double drag_coefficient) {
+Vec3 bar_drag(const Vec3& axis, double diameter, const Vec3& relative_velocity, double air_density,
+              double drag_coefficient) {
   const double length = axis.norm();
   if (length <= 0.0) {
     return Vec3::Zero();
@@ -130,10 +130,9 @@ void add_wind_forces(ForceContext& context) {
     const Index n1 = model.bar_nodes[2 * b + 1];
     const Vec3 middle = 0.5 * (state.x[n0] + state.x[n1]);
     const Vec3 velocity = 0.5 * (state.v_half[n0] + state.v_half[n1]);
-    const Vec3 force =
-        0.5 * bar_drag(state.x[n1] - state.x[n0], 2.0 * model.bar_radius[b],
-                       wind_velocity(wind.field, middle, state.time) - velocity, rho,
-                       wind.field.bar_drag);
+    const Vec3 force = 0.5 * bar_drag(state.x[n1] - state.x[n0], 2.0 * model.bar_radius[b],
+                                      wind_velocity(wind.field, middle, state.time) - velocity, rho,
+                                      wind.field.bar_drag);
     context.force[n0] += force;
     context.force[n1] += force;
   }

@@ -20,8 +20,8 @@ Vec3 face_drag(const Vec3& area_vector, const Vec3& relative_velocity, double ai
 
 // Cross-flow drag on a cylinder of diameter D and length L along unit t:
 // F = ½ ρ Cd D L |v⊥| v⊥, v⊥ = v_rel − (v_rel·t) t.
-Vec3 bar_drag(const Vec3& axis, double diameter, const Vec3& relative_velocity,
-              double air_density, double drag_coefficient);
+Vec3 bar_drag(const Vec3& axis, double diameter, const Vec3& relative_velocity, double air_density,
+              double drag_coefficient);
 
 void add_wind_forces(ForceContext& context);
 

@@ -23,9 +23,9 @@ struct GershgorinSums {
       diagonal[nodes[p]] += k * norms[p] * norms[p] * Mat3::Identity();
       for (int q = 0; q < count; ++q) {
         if (q != p && !model.pinned(nodes[p]) && !model.pinned(nodes[q])) {
-          coupling[nodes[p]] += k * norms[p] * norms[q] *
-                                std::sqrt(model.node_inv_mass[nodes[p]] *
-                                          model.node_inv_mass[nodes[q]]);
+          coupling[nodes[p]] +=
+              k * norms[p] * norms[q] *
+              std::sqrt(model.node_inv_mass[nodes[p]] * model.node_inv_mass[nodes[q]]);
         }
       }
     }

@@ -27,7 +27,7 @@ struct ModelObject {
 struct FieldForce {
   Vec3 value = Vec3::Zero();  // m/s² when per_unit_mass, else N on each node
   bool per_unit_mass = true;
-  std::vector<Index> nodes;   // (n_targets)
+  std::vector<Index> nodes;  // (n_targets)
   TimeProfile profile;
 };
 

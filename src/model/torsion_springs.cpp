@@ -32,8 +32,7 @@ void add_torsion_springs(const MaterialDesc& material, const ModelObject& object
         if (bar_b == bar || b == a) {
           continue;
         }
-        const double sine_b =
-            sine_between(model.node_initial_x[b] - model.node_initial_x[j], axis);
+        const double sine_b = sine_between(model.node_initial_x[b] - model.node_initial_x[j], axis);
         const double worse = std::min(sine_a, sine_b);
         if (worse >= best_sine) {
           best_sine = worse;

@@ -26,9 +26,9 @@ struct MaterialDesc {
   double polar_moment = 0.0;    // J, m⁴ (torsion springs)
   double wire_radius = 0.0;     // m, when the section was given as a circular wire; else 0
   // Perfect elastoplasticity, decoupled per spring kind; kNoYield keeps a kind elastic.
-  double yield_axial_force = kNoYield;      // N
-  double yield_bending_moment = kNoYield;   // N·m
-  double yield_torsion_moment = kNoYield;   // N·m
+  double yield_axial_force = kNoYield;     // N
+  double yield_bending_moment = kNoYield;  // N·m
+  double yield_torsion_moment = kNoYield;  // N·m
   FileLoc loc;
 };
 
@@ -81,8 +81,8 @@ struct ObjectDesc {
   BendingPairs bending_pairs = BendingPairs::kMostCollinear;
   bool torsion = true;  // torsion springs wherever a bar has reference neighbours
   AxialDampingDesc axial_damping;
-  Vec3f color{0.8f, 0.8f, 0.8f};         // linear RGB in [0, 1]
-  std::optional<double> render_radius;   // m; default: the wire radius, at least a visible minimum
+  Vec3f color{0.8f, 0.8f, 0.8f};        // linear RGB in [0, 1]
+  std::optional<double> render_radius;  // m; default: the wire radius, at least a visible minimum
 };
 
 struct CameraDesc {
@@ -109,8 +109,8 @@ struct TimeProfile {
 struct FieldForceDesc {
   Vec3 value = Vec3::Zero();  // m/s² when per_unit_mass, else N on each node
   bool per_unit_mass = true;
-  std::string object;    // empty: every object
-  NodeSelection nodes;   // within `object`; empty: all its nodes
+  std::string object;   // empty: every object
+  NodeSelection nodes;  // within `object`; empty: all its nodes
   TimeProfile profile;
   FileLoc loc;
 };
@@ -118,15 +118,15 @@ struct FieldForceDesc {
 // Wind: a velocity field that drags on mesh faces and on bare bars.
 struct WindDesc {
   bool enabled = false;
-  Vec3 velocity = Vec3::Zero();  // m/s, the mean
-  double gust_amplitude = 0.0;   // m/s, along the mean direction
-  double gust_period = 4.0;      // s
-  double turbulence = 0.0;       // m/s, amplitude of smooth seeded noise in each direction
-  double turbulence_scale = 2.0; // m, length scale of the noise (its time scale follows the mean)
+  Vec3 velocity = Vec3::Zero();   // m/s, the mean
+  double gust_amplitude = 0.0;    // m/s, along the mean direction
+  double gust_period = 4.0;       // s
+  double turbulence = 0.0;        // m/s, amplitude of smooth seeded noise in each direction
+  double turbulence_scale = 2.0;  // m, length scale of the noise (its time scale follows the mean)
   std::uint32_t seed = 1;
-  double air_density = 1.225;    // kg/m³
-  double face_drag = 1.0;        // drag coefficient of a face, normal flow
-  double bar_drag = 1.2;         // drag coefficient of a cylinder in cross flow
+  double air_density = 1.225;        // kg/m³
+  double face_drag = 1.0;            // drag coefficient of a face, normal flow
+  double bar_drag = 1.2;             // drag coefficient of a cylinder in cross flow
   std::vector<std::string> objects;  // empty: every object
 };
 

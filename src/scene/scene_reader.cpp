@@ -59,8 +59,8 @@ GroundDesc read_ground(YamlMap map) {
   if (map.has("height") && map.has("point")) {
     throw_user_error(map.loc(), "'ground': give 'height' or 'point', not both");
   }
-  ground.point = map.has("point") ? map.vec3("point", ground.point)
-                                  : Vec3(0, 0, map.number("height", 0.0));
+  ground.point =
+      map.has("point") ? map.vec3("point", ground.point) : Vec3(0, 0, map.number("height", 0.0));
   ground.normal = map.vec3("normal", ground.normal);
   if (ground.normal.norm() < 1e-9) {
     throw_user_error(map.loc("normal"), "'ground.normal' must be a non-zero direction");
@@ -81,8 +81,8 @@ GroundDesc read_ground(YamlMap map) {
     YamlMap friction(map.get("friction"), map.file(), "ground.friction");
     ground.stick = friction.boolean("stick", false);
     ground.static_friction = friction.number("static", ground.static_friction);
-    ground.kinetic_friction = friction.number("kinetic", std::min(ground.kinetic_friction,
-                                                                  ground.static_friction));
+    ground.kinetic_friction =
+        friction.number("kinetic", std::min(ground.kinetic_friction, ground.static_friction));
     if (ground.static_friction < 0.0 || ground.kinetic_friction < 0.0) {
       throw_user_error(friction.loc(), "friction coefficients cannot be negative");
     }
@@ -141,8 +141,7 @@ WindDesc read_wind(YamlMap map) {
     YamlMap turbulence(map.get("turbulence"), map.file(), "wind.turbulence");
     wind.turbulence = turbulence.required_number("amplitude");
     wind.turbulence_scale = turbulence.number("scale", wind.turbulence_scale);
-    require_positive(wind.turbulence_scale, turbulence.loc("scale"), "wind.turbulence.scale",
-                     "m");
+    require_positive(wind.turbulence_scale, turbulence.loc("scale"), "wind.turbulence.scale", "m");
     const int seed = turbulence.integer("seed", 1);
     wind.seed = static_cast<std::uint32_t>(seed);
     turbulence.finish();
@@ -185,14 +184,15 @@ FieldForceDesc read_field(YamlMap map, const std::vector<ObjectDesc>& objects) {
                      map.name());
   }
   field.per_unit_mass = map.has("acceleration");
-  field.value = field.per_unit_mass ? map.required_vec3("acceleration") : map.required_vec3("force");
+  field.value =
+      field.per_unit_mass ? map.required_vec3("acceleration") : map.required_vec3("force");
   field.object = map.string("object", "");
   const ObjectDesc* object = nullptr;
   if (!field.object.empty()) {
     object = find_object(objects, field.object);
     if (object == nullptr) {
-      throw_user_error(map.loc("object"), "'{}': there is no object named '{}'",
-                       map.path("object"), field.object);
+      throw_user_error(map.loc("object"), "'{}': there is no object named '{}'", map.path("object"),
+                       field.object);
     }
   }
   if (map.has("nodes")) {
@@ -200,8 +200,8 @@ FieldForceDesc read_field(YamlMap map, const std::vector<ObjectDesc>& objects) {
       throw_user_error(map.loc("nodes"), "'{}' needs 'object': node ids belong to one object",
                        map.path("nodes"));
     }
-    field.nodes =
-        read_nodes(YamlMap(map.get("nodes"), map.file(), map.path("nodes")), object->mesh.vertices.size());
+    field.nodes = read_nodes(YamlMap(map.get("nodes"), map.file(), map.path("nodes")),
+                             object->mesh.vertices.size());
   }
   if (map.has("profile")) {
     field.profile = read_profile(YamlMap(map.get("profile"), map.file(), map.path("profile")));
@@ -263,10 +263,9 @@ MaterialDesc read_material(YamlMap map) {
   }
   if (map.has("yield")) {
     YamlMap yield(map.get("yield"), map.file(), map.path("yield"));
-    const std::pair<const char*, double*> kinds[] = {
-        {"axial", &material.yield_axial_force},
-        {"bending", &material.yield_bending_moment},
-        {"torsion", &material.yield_torsion_moment}};
+    const std::pair<const char*, double*> kinds[] = {{"axial", &material.yield_axial_force},
+                                                     {"bending", &material.yield_bending_moment},
+                                                     {"torsion", &material.yield_torsion_moment}};
     for (const auto& [key, value] : kinds) {
       if (yield.has(key)) {
         *value = yield.number(key, 0.0);

@@ -167,8 +167,9 @@ TEST_F(EndToEnd, InfoPrintsTheModelSummary) {
   const CommandResult result = run(dinam("info '" + scene.string() + "'"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   for (const char* line :
-       {"nodes            9 (1 pinned)", "bars             8", "axial 8, bending 7, torsion 0", "no torsion       8 bars",
-        "stability limit", "time step", "steps per frame", "frames           3 at 10 fps"}) {
+       {"nodes            9 (1 pinned)", "bars             8", "axial 8, bending 7, torsion 0",
+        "no torsion       8 bars", "stability limit", "time step", "steps per frame",
+        "frames           3 at 10 fps"}) {
     EXPECT_NE(result.output.find(line), std::string::npos) << line << "\n" << result.output;
   }
 }

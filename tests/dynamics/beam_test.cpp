@@ -72,7 +72,8 @@ double measured_first_frequency(int segments) {
   const double dt = automatic_step(model);
   State state = initial_state(model, dt);
   const double beta = 1.8751 / kLength;
-  const double sigma = (std::cosh(1.8751) + std::cos(1.8751)) / (std::sinh(1.8751) + std::sin(1.8751));
+  const double sigma =
+      (std::cosh(1.8751) + std::cos(1.8751)) / (std::sinh(1.8751) + std::sin(1.8751));
   for (Index i = 2; i < model.node_count(); ++i) {
     const double x = model.node_initial_x[i].x();
     const double shape = std::cosh(beta * x) - std::cos(beta * x) -
@@ -147,7 +148,9 @@ double elastica_tip_deflection(double alpha) {
     double z = 0.0;
     for (int i = 0; i < n; ++i) {
       // State (θ, θ', z); z' = sin θ.
-      auto f = [alpha](double t, double w) { return std::array<double, 3>{w, alpha * std::cos(t), std::sin(t)}; };
+      auto f = [alpha](double t, double w) {
+        return std::array<double, 3>{w, alpha * std::cos(t), std::sin(t)};
+      };
       const auto k1 = f(theta, omega);
       const auto k2 = f(theta + 0.5 * ds * k1[0], omega + 0.5 * ds * k1[1]);
       const auto k3 = f(theta + 0.5 * ds * k2[0], omega + 0.5 * ds * k2[1]);
@@ -172,7 +175,7 @@ double elastica_tip_deflection(double alpha) {
 
 TEST(Cantilever, LargeDeflectionFollowsTheElastica) {
   const double reference = elastica_tip_deflection(1.0);
-  EXPECT_NEAR(reference, 0.3017, 2e-4);  // Bisshopp and Drucker (1945) tabulate 0.3017
+  EXPECT_NEAR(reference, 0.3017, 2e-4);           // Bisshopp and Drucker (1945) tabulate 0.3017
   const double load = kEI / (kLength * kLength);  // PL²/EI = 1
   const double deflection = static_tip_deflection(40, load) / kLength;
   // Discretisation ~1/(2N²) and the bar's axial give P/EA = 4e-4 leave it well inside 0.5 %.
@@ -236,9 +239,10 @@ TEST(Shaft, TwistIsTorqueTimesLengthOverGJ) {
       "v -0.1 0 0\nv 0 0 0\nv {} 0 0\nv 0 {} 0\nv {} {} 0\nl 1 2\nl 2 3\nl 2 4\nl 3 5\n", length,
       arm, length, arm);
   const double g = 8.0e10;
-  const double j = 1.0e-9;  // GJ = 80 N·m²
+  const double j = 1.0e-9;   // GJ = 80 N·m²
   const double force = 8.0;  // T = 0.8 N·m: φ = 0.01 rad
-  const std::string scene = fmt::format(R"(version: 1
+  const std::string scene = fmt::format(
+      R"(version: 1
 duration: 1
 gravity: [0, 0, 0]
 ground: {{contact: false}}
@@ -253,9 +257,8 @@ forces:
   - {{force: [0, 0, {}], object: shaft, nodes: {{box: {b}}}, profile: {{type: ramp, end: 0.02}}}}
   - {{force: [0, 0, {}], object: shaft, nodes: {{box: {j}}}, profile: {{type: ramp, end: 0.02}}}}
 )",
-                                        g, j, force, -force,
-                                        fmt::arg("b", "{min: [0.99, 0.09, -0.01], max: [1.01, 0.11, 0.01]}"),
-                                        fmt::arg("j", "{min: [0.99, -0.01, -0.01], max: [1.01, 0.01, 0.01]}"));
+      g, j, force, -force, fmt::arg("b", "{min: [0.99, 0.09, -0.01], max: [1.01, 0.11, 0.01]}"),
+      fmt::arg("j", "{min: [0.99, -0.01, -0.01], max: [1.01, 0.01, 0.01]}"));
   const Model model = build_model(read_scene_text(scene, folder.path() / "shaft.yaml"));
   ASSERT_EQ(model.torsion_count(), 1);  // only the shaft has references at both ends
   const double dt = automatic_step(model);

@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "test_support.hpp"
 
@@ -80,6 +81,96 @@ TEST(Stability, BoundIsAboveTheTrueHighestFrequencyAndWithinAFactorTwo) {
     EXPECT_GE(bound, exact * (1.0 - 1e-12));
     EXPECT_LE(bound, 2.0 * exact * (1.0 + 1e-12));  // not so loose that auto wastes steps
   }
+}
+
+// ω_max² of the full model at rest from a dense eigen-solve, with the stiffness matrix taken by
+// central differences of the real forces (every spring kind), not from the bound's formulas.
+double finite_difference_max_frequency_squared(const Model& model) {
+  ForceSwitches elastic;
+  elastic.gravity = elastic.fields = elastic.wind = elastic.ground = false;
+  elastic.axial_dampers = elastic.global_damping = false;
+  State state = initial_state(model, 1e-6, elastic);
+  std::vector<int> dof_of_node(model.node_count(), -1);
+  int n_dofs = 0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (!model.pinned(i)) {
+      dof_of_node[i] = n_dofs;
+      n_dofs += 3;
+    }
+  }
+  Eigen::MatrixXd k_matrix = Eigen::MatrixXd::Zero(n_dofs, n_dofs);
+  const double h = 1e-7;
+  for (Index j = 0; j < model.node_count(); ++j) {
+    for (int c = 0; c < 3 && dof_of_node[j] >= 0; ++c) {
+      state.x = model.node_initial_x;
+      state.x[j][c] += h;
+      compute_forces(model, elastic, state);
+      const std::vector<Vec3> plus = state.force;
+      state.x[j][c] -= 2 * h;
+      compute_forces(model, elastic, state);
+      for (Index i = 0; i < model.node_count(); ++i) {
+        if (dof_of_node[i] >= 0) {
+          k_matrix.block<3, 1>(dof_of_node[i], dof_of_node[j] + c) =
+              -(plus[i] - state.force[i]) / (2 * h);
+        }
+      }
+    }
+  }
+  Eigen::VectorXd inv_sqrt_mass(n_dofs);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dof_of_node[i] >= 0) {
+      inv_sqrt_mass.segment<3>(dof_of_node[i]).setConstant(1.0 / std::sqrt(model.node_mass[i]));
+    }
+  }
+  Eigen::MatrixXd d = inv_sqrt_mass.asDiagonal() * k_matrix * inv_sqrt_mass.asDiagonal();
+  d = 0.5 * (d + d.transpose());  // the finite differences are symmetric only to rounding
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d, Eigen::EigenvaluesOnly)
+      .eigenvalues()
+      .maxCoeff();
+}
+
+TEST(Stability, BoundCoversBendingAndTorsion) {
+  for (const std::string& mesh :
+       {std::string("{grid: {width: 0.6, height: 0.4, columns: 6, rows: 4, diagonals: one}}"),
+        std::string("{file: cube_soup.stl, scale: 0.2}"),
+        std::string(
+            "{polyline: {points: [[0, 0, 0], [0.3, 0.1, 0], [0.5, 0.4, 0.2]], segments: 5}}")}) {
+    // A thick section, so bending and torsion matter next to the axial springs.
+    const Model model = build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+ground: {{contact: false}}
+objects:
+  - mesh: {}
+    material: {{density: 1200, youngs_modulus: 2.0e7, area: 1.0e-4, area_moment: 1.0e-8}}
+    pinned: {{indices: [0]}}
+    bending_pairs: all
+)",
+                                                                      mesh)));
+    ASSERT_GT(model.bend_count(), 0) << mesh;
+    const double exact = finite_difference_max_frequency_squared(model);
+    const double bound = max_frequency_squared_bound(model);
+    EXPECT_GE(bound, exact * (1.0 - 1e-6)) << mesh;
+    EXPECT_LE(bound, 4.0 * exact) << mesh;  // within a factor 2 in the step
+  }
+}
+
+TEST(Stability, DampingShortensTheLimit) {
+  const std::string scene = R"(version: 1
+duration: 1
+ground: {{contact: false}}
+damping: {{global: {}}}
+objects:
+  - mesh: {{polyline: {{points: [[0, 0, 0], [0, 0.6, 0.8]]}}}}
+    material: {{density: 1200, youngs_modulus: 2.0e7, radius: 0.001}}
+    pinned: {{indices: [0]}}
+)";
+  const Model undamped = build_model(test::scene_from_yaml(fmt::format(fmt::runtime(scene), 0)));
+  const double omega = std::sqrt(2.0 * 2.0e7 / 1200.0);
+  const double gamma = 0.5 * omega;  // ζ = ¼
+  const Model damped = build_model(test::scene_from_yaml(fmt::format(fmt::runtime(scene), gamma)));
+  const double zeta = gamma / (2 * omega);
+  EXPECT_NEAR(critical_timestep(damped) / critical_timestep(undamped),
+              std::sqrt(1 + zeta * zeta) - zeta, 1e-12);
 }
 
 TEST(Stability, LimitOfOneMassOnASpringIsExactlyTwoOverOmega) {
