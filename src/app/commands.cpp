@@ -4,9 +4,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <system_error>
 
 #include "app/draw_list_from_model.hpp"
+#include "app/energy_csv.hpp"
 #include "app/frame_range.hpp"
 #include "app/progress.hpp"
 #include "core/error.hpp"
@@ -56,7 +58,12 @@ int run_render(const RenderOptions& options) {
   const DrawList draw_list = make_draw_list(scene, model);
   OsmesaRenderer renderer(scene.image_width, scene.image_height);
   const ForceSwitches forces;
-  State state = initial_state(model, timestep.dt, forces);
+  State state = initial_state(model, timestep.dt, forces, options.energy_csv);
+  std::optional<EnergyCsv> energy_csv;
+  if (options.energy_csv) {
+    energy_csv.emplace(folder / "energy.csv");
+    energy_csv->write(state.energy_workspace.last);
+  }
   std::vector<Vec3f> positions;
   Image image;
   const int digits = frame_number_digits(scene.frame_count());
@@ -74,6 +81,9 @@ int run_render(const RenderOptions& options) {
       }
     }
     simulate_seconds += seconds_since(simulate_start);
+    if (energy_csv && frame > 1) {
+      energy_csv->write(state.energy_workspace.last);
+    }
     if (frame < range.first) {
       continue;
     }
@@ -87,6 +97,9 @@ int run_render(const RenderOptions& options) {
   }
 
   progress.finish();
+  if (energy_csv) {
+    energy_csv->close();
+  }
 
   int exit_code = kExitOk;
   std::string movie_note;

@@ -18,6 +18,7 @@ struct RenderOptions {
   std::optional<std::string> size;              // "WxH"
   bool video = true;
   bool quiet = false;
+  bool energy_csv = false;  // write DIR/energy.csv, one row per frame
 };
 
 // Simulates the scene, writes DIR/frame_NNNN.png and DIR/<name>.mp4. Throws UserError for bad

@@ -31,6 +31,10 @@ int run(int argc, char** argv) {
   bool no_video = false;
   render_command->add_flag("--no-video", no_video, "Write the PNG frames only, no movie");
   render_command->add_flag("-q,--quiet", render.quiet, "Print nothing but errors");
+  render_command->add_flag("--energy", render.energy_csv,
+                           "Also write DIR/energy.csv: kinetic, elastic, gravitational and contact "
+                           "energy, and what damping, plasticity, friction, wind and fields did, "
+                           "one row per frame");
 
   std::filesystem::path info_scene;
   CLI::App* info_command =

@@ -113,6 +113,27 @@ TEST_F(EndToEnd, FrameRangeWritesOnlyThoseFrames) {
   EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
 }
 
+TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
+                                         "' --size 64x48 --no-video --energy -q"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream csv(out() / "energy.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.substr(0, 26), "time_s,kinetic_J,axial_J,b");
+  std::vector<double> totals;
+  for (std::string line; std::getline(csv, line);) {
+    totals.push_back(std::stod(line.substr(line.rfind(',') + 1)));
+  }
+  ASSERT_EQ(totals.size(), 3u);  // one row per frame
+  // The rope is undamped: its energy balance holds to the integrator's error.
+  for (const double total : totals) {
+    EXPECT_NEAR(total, totals.front(), 1e-3 * std::abs(totals.front()));
+  }
+  EXPECT_FALSE(std::filesystem::exists(out() / "energy.csv.tmp"));
+}
+
 TEST_F(EndToEnd, BadSceneExitsTwoNamingFileLineAndKeyAndWritesNothing) {
   std::string text = kTinyScene;
   text.replace(text.find("density: 1000"), 13, "density: -1");

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 #include "model/model.hpp"
@@ -72,6 +73,55 @@ TEST(ModelBuilder, BoxPinsEveryNodeInside) {
   const Model model = build_model(test::scene_from_yaml(scene));
   for (Index i = 0; i < model.node_count(); ++i) {
     EXPECT_EQ(model.pinned(i), model.node_initial_x[i].x() == 2.0) << i;
+  }
+}
+
+TEST(ModelBuilder, VelocityGroupsOverrideTheObjectVelocity) {
+  std::string scene = kTwoQuads;
+  scene +=
+      "    velocity_groups: [{nodes: {box: {min: [1.5, -1, -1], max: [3, 2, 1]}}, velocity: [1, 2, "
+      "3]}]\n";
+  const Model model = build_model(test::scene_from_yaml(scene));
+  for (Index i = 1; i < model.node_count(); ++i) {
+    const Vec3 expected = model.node_initial_x[i].x() == 2.0 ? Vec3(1, 2, 3) : Vec3(0, 0, 5);
+    EXPECT_EQ(model.node_initial_v[i], expected) << i;
+  }
+}
+
+TEST(ModelBuilder, BendingPairsAndTorsionReferences) {
+  // A straight polyline of 4 bars: 3 collinear pairs by default, 0 torsion springs (no bar has a
+  // reference that is not in line with it).
+  const std::string line = R"(version: 1
+duration: 1
+objects:
+  - mesh: {polyline: {points: [[0, 0, 0], [1, 0, 0]], segments: 4}}
+    material: {density: 1, youngs_modulus: 1, radius: 0.1}
+)";
+  const Model chain = build_model(test::scene_from_yaml(line));
+  EXPECT_EQ(chain.bend_count(), 3);
+  EXPECT_EQ(chain.torsion_count(), 0);
+  EXPECT_EQ(chain.bars_without_torsion, 4);
+  // k = 2EI / (L1 + L2) with E = 1, I = π r⁴/4, L = 0.25.
+  EXPECT_NEAR(chain.bend_stiffness[0], 2 * std::numbers::pi * 1e-4 / 4 / 0.5, 1e-15);
+  EXPECT_NEAR(chain.bend_rest_angle[0], std::numbers::pi, 1e-12);
+
+  // The cube's corners have three bars at right angles: `all` gives 3 pairs per corner, the
+  // default one partner per bar (3 bars, 2 or 3 distinct pairs); each of the 12 edges has
+  // perpendicular references at both ends.
+  const std::string cube = R"(version: 1
+duration: 1
+objects:
+  - mesh: {file: cube.obj}
+    material: {density: 1, youngs_modulus: 1, radius: 0.1}
+    bending_pairs: all
+)";
+  const Model all = build_model(test::scene_from_yaml(cube));
+  EXPECT_EQ(all.bend_count(), 8 * 3);
+  EXPECT_EQ(all.torsion_count(), 12);
+  // Both references of an edge lie along the cube's other axes: the rest twist is 0 or ±π/2.
+  for (Index s = 0; s < all.torsion_count(); ++s) {
+    const double quarter_turns = all.torsion_rest_angle[s] / (std::numbers::pi / 2);
+    EXPECT_NEAR(quarter_turns, std::round(quarter_turns), 1e-6);
   }
 }
 

@@ -86,6 +86,70 @@ TEST(SceneReader, ReadsEveryKeyOfAValidScene) {
   EXPECT_DOUBLE_EQ(cube.material.area_moment, 1.0e-8 / (4 * std::numbers::pi));
 }
 
+TEST(SceneReader, ReadsThePhysicalModelKeys) {
+  const SceneDescription scene = scene_from_yaml(R"(version: 1
+duration: 1
+damping: {global: 0.3}
+ground: {point: [0, 0, -1], normal: [0, 0, 2], stiffness: 5000, damping_ratio: 0.5,
+         friction: {static: 0.6, kinetic: 0.4}}
+wind: {velocity: [4, 0, 0], gust: {amplitude: 2, period: 3}, turbulence: {amplitude: 1, seed: 9},
+       air_density: 1.2, objects: [rope]}
+forces:
+  - {acceleration: [1, 0, 0], profile: {type: ramp, start: 1, end: 2}}
+  - {force: [0, 0, 5], object: rope, nodes: {indices: [4]}, profile: {type: sine, frequency: 2}}
+objects:
+  - name: rope
+    mesh: {file: rope.obj}
+    material: {density: 1000, youngs_modulus: 1e6, radius: 0.01, yield_stress: 2e6,
+               yield: {torsion: 3}}
+    bending_pairs: all
+    torsion: false
+    damping: {axial_ratio: 0.1}
+)");
+  EXPECT_DOUBLE_EQ(scene.global_damping, 0.3);
+  EXPECT_TRUE(scene.ground.normal.isApprox(Vec3(0, 0, 1)));  // normalised
+  EXPECT_DOUBLE_EQ(*scene.ground.stiffness, 5000);
+  EXPECT_DOUBLE_EQ(scene.ground.static_friction, 0.6);
+  EXPECT_TRUE(scene.wind.enabled);
+  EXPECT_EQ(scene.wind.seed, 9u);
+  EXPECT_EQ(scene.wind.objects, std::vector<std::string>{"rope"});
+  ASSERT_EQ(scene.fields.size(), 2u);
+  EXPECT_TRUE(scene.fields[0].per_unit_mass);
+  EXPECT_DOUBLE_EQ(scene.fields[0].profile(1.5), 0.5);
+  EXPECT_FALSE(scene.fields[1].per_unit_mass);
+  const MaterialDesc& m = scene.objects[0].material;
+  // Ny = σy A; My = (4/3) r³ σy; Ty given directly.
+  EXPECT_DOUBLE_EQ(m.yield_axial_force, 2e6 * m.area);
+  EXPECT_NEAR(m.yield_bending_moment, 4.0 / 3.0 * 1e-6 * 2e6, 1e-9);
+  EXPECT_DOUBLE_EQ(m.yield_torsion_moment, 3.0);
+  EXPECT_EQ(scene.objects[0].bending_pairs, BendingPairs::kAll);
+  EXPECT_FALSE(scene.objects[0].torsion);
+  EXPECT_DOUBLE_EQ(scene.objects[0].axial_damping.ratio, 0.1);
+}
+
+TEST(SceneReader, PhysicalModelMistakesAreErrors) {
+  const std::string base =
+      "version: 1\nduration: 1\nobjects:\n  - name: rope\n    mesh: {file: rope.obj}\n    "
+      "material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}\n";
+  expect_user_error(
+      [&] { scene_from_yaml(base + "forces: [{acceleration: [1, 0, 0], object: nope}]\n"); }, 7,
+      {"no object named 'nope'"});
+  expect_user_error(
+      [&] { scene_from_yaml(base + "forces: [{acceleration: [1, 0, 0], force: [1, 0, 0]}]\n"); }, 7,
+      {"not both"});
+  expect_user_error(
+      [&] { scene_from_yaml(base + "ground: {friction: {static: 0.2, kinetic: 0.5}}\n"); }, 7,
+      {"must not exceed"});
+  expect_user_error(
+      [&] {
+        scene_from_yaml(base + "forces: [{acceleration: [1, 0, 0], profile: {type: pulse}}]\n");
+      },
+      7, {"constant, step, ramp or sine"});
+  expect_user_error(
+      [&] { scene_from_yaml(base + "wind: {velocity: [1, 0, 0], objects: [flag]}\n"); }, 7,
+      {"'flag', which is no object"});
+}
+
 TEST(SceneReader, DefaultsFillWhatTheSceneLeavesOut) {
   const SceneDescription scene = scene_from_yaml(R"(version: 1
 duration: 1
