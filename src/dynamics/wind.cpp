@@ -57,7 +57,8 @@ Vec3 wind_velocity(const WindDesc& wind, const Vec3& x, double t) {
     for (int c = 0; c < 3; ++c) {
       double sum = 0.0;
       for (int k = 0; k < kTurbulenceWaves; ++k) {
-        const TurbulenceWave& wave = waves[static_cast<std::size_t>(c * kTurbulenceWaves + k)];
+        const TurbulenceWave& wave =
+            waves[static_cast<std::size_t>(c) * kTurbulenceWaves + static_cast<std::size_t>(k)];
         // A slow drift in time as well, so the noise lives even where the mean wind is calm.
         sum += std::sin(wave.wavenumber.dot(carried) + wave.phase + 0.7 * t * (k + 1));
       }

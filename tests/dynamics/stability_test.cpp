@@ -11,44 +11,64 @@
 namespace dinam {
 namespace {
 
+// The free degrees of freedom of a model: 3 per free node, in node order.
+struct FreeDofs {
+  std::vector<int> dof_of_node;  // (n_nodes) first dof of each free node, −1 when pinned
+  int count = 0;
+};
+
+FreeDofs free_dofs(const Model& model) {
+  FreeDofs dofs;
+  dofs.dof_of_node.assign(model.node_count(), -1);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (!model.pinned(i)) {
+      dofs.dof_of_node[i] = dofs.count;
+      dofs.count += 3;
+    }
+  }
+  return dofs;
+}
+
+// λ_max of M^{-½} K M^{-½}: ω_max² of the stiffness matrix over the free dofs.
+double max_frequency_squared(const Model& model, const FreeDofs& dofs, const Eigen::MatrixXd& k) {
+  Eigen::VectorXd inv_sqrt_mass(dofs.count);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dofs.dof_of_node[i] >= 0) {
+      inv_sqrt_mass.segment<3>(dofs.dof_of_node[i])
+          .setConstant(1.0 / std::sqrt(model.node_mass[i]));
+    }
+  }
+  Eigen::MatrixXd d = inv_sqrt_mass.asDiagonal() * k * inv_sqrt_mass.asDiagonal();
+  d = 0.5 * (d + d.transpose());  // a finite-difference K is symmetric only to rounding
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d, Eigen::EigenvaluesOnly)
+      .eigenvalues()
+      .maxCoeff();
+}
+
 // ω_max² of the model at rest, from a dense eigen-solve of M^{-½} K M^{-½} over the free
 // degrees of freedom, with K assembled here from k n nᵀ per bar (not from dynamics/).
 double exact_max_frequency_squared(const Model& model) {
-  std::vector<int> dof_of_node(model.node_count(), -1);
-  int n_dofs = 0;
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (!model.pinned(i)) {
-      dof_of_node[i] = n_dofs;
-      n_dofs += 3;
-    }
-  }
-  Eigen::MatrixXd k_matrix = Eigen::MatrixXd::Zero(n_dofs, n_dofs);
+  const FreeDofs dofs = free_dofs(model);
+  Eigen::MatrixXd k_matrix = Eigen::MatrixXd::Zero(dofs.count, dofs.count);
   for (Index b = 0; b < model.bar_count(); ++b) {
     const Index n0 = model.bar_nodes[2 * b];
     const Index n1 = model.bar_nodes[2 * b + 1];
     const Vec3 n = (model.node_initial_x[n1] - model.node_initial_x[n0]).normalized();
     const Mat3 block = model.bar_axial_stiffness[b] * n * n.transpose();
-    const int d0 = dof_of_node[n0];
-    const int d1 = dof_of_node[n1];
-    if (d0 >= 0)
+    const int d0 = dofs.dof_of_node[n0];
+    const int d1 = dofs.dof_of_node[n1];
+    if (d0 >= 0) {
       k_matrix.block<3, 3>(d0, d0) += block;
-    if (d1 >= 0)
+    }
+    if (d1 >= 0) {
       k_matrix.block<3, 3>(d1, d1) += block;
+    }
     if (d0 >= 0 && d1 >= 0) {
       k_matrix.block<3, 3>(d0, d1) -= block;
       k_matrix.block<3, 3>(d1, d0) -= block;
     }
   }
-  Eigen::VectorXd inv_sqrt_mass(n_dofs);
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (dof_of_node[i] >= 0) {
-      inv_sqrt_mass.segment<3>(dof_of_node[i]).setConstant(1.0 / std::sqrt(model.node_mass[i]));
-    }
-  }
-  const Eigen::MatrixXd d = inv_sqrt_mass.asDiagonal() * k_matrix * inv_sqrt_mass.asDiagonal();
-  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d, Eigen::EigenvaluesOnly)
-      .eigenvalues()
-      .maxCoeff();
+  return max_frequency_squared(model, dofs, k_matrix);
 }
 
 // Bars alone: no bending, torsion or ground contact, so the bound is the axial one.
@@ -90,18 +110,11 @@ double finite_difference_max_frequency_squared(const Model& model) {
   elastic.gravity = elastic.fields = elastic.wind = elastic.ground = false;
   elastic.axial_dampers = elastic.global_damping = false;
   State state = initial_state(model, 1e-6, elastic);
-  std::vector<int> dof_of_node(model.node_count(), -1);
-  int n_dofs = 0;
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (!model.pinned(i)) {
-      dof_of_node[i] = n_dofs;
-      n_dofs += 3;
-    }
-  }
-  Eigen::MatrixXd k_matrix = Eigen::MatrixXd::Zero(n_dofs, n_dofs);
+  const FreeDofs dofs = free_dofs(model);
+  Eigen::MatrixXd k_matrix = Eigen::MatrixXd::Zero(dofs.count, dofs.count);
   const double h = 1e-7;
   for (Index j = 0; j < model.node_count(); ++j) {
-    for (int c = 0; c < 3 && dof_of_node[j] >= 0; ++c) {
+    for (int c = 0; c < 3 && dofs.dof_of_node[j] >= 0; ++c) {
       state.x = model.node_initial_x;
       state.x[j][c] += h;
       compute_forces(model, elastic, state);
@@ -109,24 +122,14 @@ double finite_difference_max_frequency_squared(const Model& model) {
       state.x[j][c] -= 2 * h;
       compute_forces(model, elastic, state);
       for (Index i = 0; i < model.node_count(); ++i) {
-        if (dof_of_node[i] >= 0) {
-          k_matrix.block<3, 1>(dof_of_node[i], dof_of_node[j] + c) =
+        if (dofs.dof_of_node[i] >= 0) {
+          k_matrix.block<3, 1>(dofs.dof_of_node[i], dofs.dof_of_node[j] + c) =
               -(plus[i] - state.force[i]) / (2 * h);
         }
       }
     }
   }
-  Eigen::VectorXd inv_sqrt_mass(n_dofs);
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (dof_of_node[i] >= 0) {
-      inv_sqrt_mass.segment<3>(dof_of_node[i]).setConstant(1.0 / std::sqrt(model.node_mass[i]));
-    }
-  }
-  Eigen::MatrixXd d = inv_sqrt_mass.asDiagonal() * k_matrix * inv_sqrt_mass.asDiagonal();
-  d = 0.5 * (d + d.transpose());  // the finite differences are symmetric only to rounding
-  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d, Eigen::EigenvaluesOnly)
-      .eigenvalues()
-      .maxCoeff();
+  return max_frequency_squared(model, dofs, k_matrix);
 }
 
 TEST(Stability, BoundCoversBendingAndTorsion) {
