@@ -1,5 +1,6 @@
 #include "dynamics/bending_spring.hpp"
 
+#include "core/geometry.hpp"
 #include "dynamics/elastoplastic.hpp"
 #include "model/model.hpp"
 
@@ -20,7 +21,7 @@ BendingSpringResult bending_spring(const Vec3& xa, const Vec3& xc, const Vec3& x
   const Vec3 w = e2 / l2;
   const double c = u.dot(w);
   const double s = u.cross(w).norm();
-  const double angle = std::atan2(s, c);
+  const double angle = fast_atan2(s, c);
   const ElastoplasticResult r = elastoplastic(angle - rest_angle, plastic_set, stiffness, yield);
   result.energy = r.energy;
   result.plastic_set = r.plastic_set;

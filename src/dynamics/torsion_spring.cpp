@@ -15,7 +15,7 @@ TorsionSpringResult torsion_spring(const Vec3& xa, const Vec3& xi, const Vec3& x
   const Vec3 n1 = b1.cross(b2);
   const Vec3 n2 = b2.cross(b3);
   const double b2_norm = b2.norm();
-  const double angle = std::atan2(b2_norm * b1.dot(n2), n1.dot(n2));
+  const double angle = fast_atan2(b2_norm * b1.dot(n2), n1.dot(n2));
   // The plastic set accumulates unwrapped; only the elastic part is taken the short way round.
   const double deformation = plastic_set + wrap_angle(angle - rest_angle - plastic_set);
   const ElastoplasticResult r = elastoplastic(deformation, plastic_set, stiffness, yield);

@@ -134,24 +134,29 @@ TEST(BendingSpring, StraightBarsGiveNoNaNAndNoSpike) {
   }
 }
 
-// An axial bar pulled past yield and released: the force plateaus at Ny once the extension
-// passes Ny/k, and after unloading to zero force the bar keeps Δmax − Ny/k.
-TEST(Elastoplastic, AxialPlateauAndPermanentSet) {
+// An axial bar pulled past yield and released, by moving its end: the force plateaus at Ny once
+// the extension passes Ny/k, and after unloading to zero force the bar keeps Δmax − Ny/k.
+TEST(AxialSpring, PulledPastYieldPlateausAndKeepsAPermanentSet) {
+  const double rest_length = 1.0;
   const double k = 1000.0;      // N/m
   const double yield = 50.0;    // N: yields at 0.05 m
   const double stretch = 0.12;  // m, Δmax
+  const Vec3 x0 = Vec3::Zero();
   double plastic_set = 0.0;
   for (int i = 0; i <= 120; ++i) {  // load in 1 mm steps
     const double extension = stretch * i / 120.0;
-    const ElastoplasticResult r = elastoplastic(extension, plastic_set, k, yield);
+    const AxialSpringResult r =
+        axial_spring(x0, Vec3(rest_length + extension, 0, 0), rest_length, k, plastic_set, yield);
     plastic_set = r.plastic_set;
-    EXPECT_NEAR(r.force, std::min(k * extension, yield), 1e-9) << extension;
+    // The force on n0 pulls it towards n1 (+x) with the bar's tension.
+    EXPECT_NEAR(r.force_on_n0.x(), std::min(k * extension, yield), 1e-9) << extension;
   }
   double extension = stretch;
-  for (; extension > 0.0; extension -= 0.001) {  // unload until the force reaches zero
-    const ElastoplasticResult r = elastoplastic(extension, plastic_set, k, yield);
+  for (; extension > 0.0; extension -= 0.001) {  // unload until the tension is gone
+    const AxialSpringResult r =
+        axial_spring(x0, Vec3(rest_length + extension, 0, 0), rest_length, k, plastic_set, yield);
     plastic_set = r.plastic_set;
-    if (r.force <= 0.0) {
+    if (r.force_on_n0.x() <= 0.0) {
       break;
     }
   }
@@ -177,6 +182,24 @@ TEST(TimeProfile, StepRampAndSine) {
   TimeProfile sine{TimeProfile::Kind::kSine, 1.0, 0.0, 2.0, 0.0};
   EXPECT_EQ(sine(0.9), 0.0);
   EXPECT_NEAR(sine(1.125), 1.0, 1e-12);  // a quarter period of 2 Hz after the start
+}
+
+TEST(Geometry, FastAtan2MatchesTheLibrary) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> exponent(-12.0, 12.0);
+  std::uniform_int_distribution<int> sign(0, 1);
+  double worst = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    const double y = (sign(rng) ? 1 : -1) * std::pow(10.0, exponent(rng));
+    const double x = (sign(rng) ? 1 : -1) * std::pow(10.0, exponent(rng));
+    const double reference = std::atan2(y, x);
+    worst = std::max(worst, std::abs(fast_atan2(y, x) - reference) / std::abs(reference));
+  }
+  EXPECT_LT(worst, 1e-15);  // a few ulps
+  for (const auto& [y, x] : std::vector<std::pair<double, double>>{
+           {0.0, 1.0}, {0.0, -1.0}, {1.0, 0.0}, {-1.0, 0.0}, {1.0, 1.0}, {1e-300, -1.0}}) {
+    EXPECT_NEAR(fast_atan2(y, x), std::atan2(y, x), 1e-15) << y << " " << x;
+  }
 }
 
 TEST(Geometry, DihedralAngleAndWrap) {
