@@ -13,6 +13,7 @@ uniform mat4 clip_from_world;
 out vec3 world_position;
 out vec3 world_normal;
 out vec3 base_color;
+out vec2 surface_uv;
 
 void main() {
   vec3 axis = instance_p1 - instance_p0;
@@ -26,5 +27,6 @@ void main() {
   world_position = instance_p0 + axis * unit_position.z + offset;
   world_normal = u * unit_normal.x + v * unit_normal.y + w * unit_normal.z;
   base_color = instance_color;
+  surface_uv = vec2(0.0);
   gl_Position = clip_from_world * vec4(world_position, 1.0);
 }

@@ -1,10 +1,10 @@
 #version 330 core
-// A soft checkerboard that fades into the horizon colour with distance from the eye, so the
-// plane's far edge never shows.
+// A soft checkerboard that takes the light's shadows and fades into the horizon colour with
+// distance from the eye, so the plane's far edge never shows.
 in vec3 world_position;
 in vec2 plane_position;
 
-uniform vec3 eye_position;
+uniform vec3 plane_normal;
 uniform float fade_distance;  // m; fully faded at this distance from the eye
 uniform float tile_size;
 uniform vec3 horizon_color;  // linear RGB
@@ -14,8 +14,8 @@ out vec4 out_color;
 void main() {
   vec2 cell = floor(plane_position / tile_size);
   float checker = mod(cell.x + cell.y, 2.0);
-  vec3 color = mix(vec3(0.42, 0.40, 0.37), vec3(0.50, 0.48, 0.45), checker);
+  vec3 albedo = mix(vec3(0.50, 0.48, 0.45), vec3(0.60, 0.58, 0.54), checker);
+  vec3 color = shade(albedo, plane_normal, world_position);
   float fade = smoothstep(0.15 * fade_distance, fade_distance, length(world_position - eye_position));
-  color = mix(color, horizon_color, fade);
-  out_color = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+  out_color = encode_display(mix(color, horizon_color, fade));
 }

@@ -11,10 +11,12 @@ uniform mat4 clip_from_world;
 out vec3 world_position;
 out vec3 world_normal;
 out vec3 base_color;
+out vec2 surface_uv;
 
 void main() {
   world_position = instance_center + instance_radius * unit_position;
   world_normal = unit_normal;
   base_color = instance_color;
+  surface_uv = vec2(0.0);
   gl_Position = clip_from_world * vec4(world_position, 1.0);
 }

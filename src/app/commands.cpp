@@ -5,14 +5,15 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <system_error>
 
 #include "app/draw_list_from_model.hpp"
 #include "app/energy_csv.hpp"
 #include "app/frame_range.hpp"
+#include "app/frame_source.hpp"
 #include "app/progress.hpp"
 #include "core/error.hpp"
-#include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "io/movie_encoder.hpp"
 #include "io/png_file.hpp"
@@ -34,6 +35,53 @@ int frame_number_digits(int frame_count) {
   return std::max(4, static_cast<int>(std::to_string(frame_count).size()));
 }
 
+MovieFormat parse_movie_format(const std::string& text) {
+  if (text == "mp4") {
+    return MovieFormat::kMp4;
+  }
+  if (text == "gif") {
+    return MovieFormat::kGif;
+  }
+  if (text == "none") {
+    return MovieFormat::kNone;
+  }
+  throw_user_error({}, "--movie takes mp4, gif or none; got '{}'", text);
+}
+
+RenderSettings render_settings(const SceneDescription& scene) {
+  return {scene.image_width, scene.image_height, scene.quality.samples,
+          scene.quality.shadows ? scene.quality.shadow_resolution : 0};
+}
+
+void create_folder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec) {
+    throw RuntimeError(
+        fmt::format("cannot create the output folder {}: {}", folder.string(), ec.message()));
+  }
+}
+
+// "1,5-7,12" → {1, 5, 6, 7, 12}, each within 1..frame_count.
+std::vector<int> parse_frame_list(const std::string& text, int frame_count) {
+  std::set<int> frames;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const FrameRange range = parse_frame_range(item, frame_count);
+    for (int f = range.first; f <= range.last; ++f) {
+      frames.insert(f);
+    }
+    if (comma == std::string::npos) {
+      break;
+    }
+    start = comma + 1;
+  }
+  return {frames.begin(), frames.end()};
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& options) {
@@ -42,71 +90,60 @@ int run_render(const RenderOptions& options) {
   if (options.size) {
     parse_image_size(*options.size, scene.image_width, scene.image_height);
   }
+  if (options.movie) {
+    scene.movie = parse_movie_format(*options.movie);
+  }
   const FrameRange range = options.frames ? parse_frame_range(*options.frames, scene.frame_count())
                                           : FrameRange{1, scene.frame_count()};
   const Model model = build_model(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   const std::filesystem::path folder = options.output.value_or(scene.output);
+  create_folder(folder);
+  const auto start = Clock::now();
 
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec) {
-    throw RuntimeError(
-        fmt::format("cannot create the output folder {}: {}", folder.string(), ec.message()));
-  }
-
-  const DrawList draw_list = make_draw_list(scene, model);
-  OsmesaRenderer renderer(scene.image_width, scene.image_height);
-  const ForceSwitches forces;
-  State state = initial_state(model, timestep.dt, forces, options.energy_csv);
+  // 1. Simulate every frame up to the last one shown (the camera may need them all).
   std::optional<EnergyCsv> energy_csv;
   if (options.energy_csv) {
     energy_csv.emplace(folder / "energy.csv");
-    energy_csv->write(state.energy_workspace.last);
   }
-  std::vector<Vec3f> positions;
-  Image image;
-  const int digits = frame_number_digits(scene.frame_count());
-
-  Progress progress(range.count(), !options.quiet);
-  double simulate_seconds = 0.0;
-  double draw_seconds = 0.0;
-  const auto start = Clock::now();
-  for (int frame = 1; frame <= range.last; ++frame) {
-    // Frame k shows t = (k − 1) / fps.
-    const auto simulate_start = Clock::now();
-    if (frame > 1) {
-      for (int s = 0; s < timestep.steps_per_frame; ++s) {
-        step(model, timestep.dt, forces, state);
-      }
-    }
-    simulate_seconds += seconds_since(simulate_start);
-    if (energy_csv && frame > 1) {
-      energy_csv->write(state.energy_workspace.last);
-    }
-    if (frame < range.first) {
-      continue;
-    }
-    const auto draw_start = Clock::now();
-    positions_for_render(state.x, positions);
-    renderer.render(draw_list, positions, image);
-    write_png(folder / fmt::format("frame_{:0{}}.png", frame, digits), image);
-    draw_seconds += seconds_since(draw_start);
-    progress.update(frame - range.first + 1, fmt::format("simulate {:.1f} s, draw {:.1f} s",
-                                                         simulate_seconds, draw_seconds));
-  }
-
-  progress.finish();
+  const SimulatedFrames frames =
+      simulate_frames(model, timestep, range.last, options.energy_csv, [&](int, const State& s) {
+        if (energy_csv) {
+          energy_csv->write(s.energy_workspace.last);
+        }
+      });
   if (energy_csv) {
     energy_csv->close();
   }
 
+  // 2. Draw and write the frames.
+  const DrawList draw_list = make_draw_list(scene, model, motion_bounds(frames.positions));
+  const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
+  OsmesaRenderer renderer(render_settings(scene));
+  const int digits = frame_number_digits(scene.frame_count());
+  Progress progress(range.count(), !options.quiet);
+  const auto draw_start = Clock::now();
+  draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
+              [&](int frame, const Image& image) {
+                write_png(folder / fmt::format("frame_{:0{}}.png", frame, digits), image);
+                progress.update(frame - range.first + 1,
+                                fmt::format("draw and write {:.1f} s", seconds_since(draw_start)));
+              });
+  progress.finish();
+  const double draw_seconds = seconds_since(draw_start);
+
+  // 3. The movie.
   int exit_code = kExitOk;
   std::string movie_note;
-  if (options.video) {
-    const std::filesystem::path movie = folder / (scene.name + ".mp4");
-    const MovieRequest request{folder / fmt::format("frame_%0{}d.png", digits), range.first,
-                               range.count(), scene.fps, movie};
+  if (scene.movie != MovieFormat::kNone) {
+    const bool gif = scene.movie == MovieFormat::kGif;
+    const std::filesystem::path movie = folder / (scene.name + (gif ? ".gif" : ".mp4"));
+    MovieRequest request{folder / fmt::format("frame_%0{}d.png", digits),
+                         range.first,
+                         range.count(),
+                         scene.fps,
+                         movie,
+                         gif};
     if (encode_movie(request) == MovieOutcome::kWritten) {
       movie_note = fmt::format(", movie {}", movie.string());
     } else {
@@ -119,10 +156,79 @@ int run_render(const RenderOptions& options) {
   }
   if (!options.quiet) {
     fmt::print("dinam: {} frames in {}{} ({:.1f} s: simulate {:.2f} s, draw and write {:.2f} s)\n",
-               range.count(), folder.string(), movie_note, seconds_since(start), simulate_seconds,
+               range.count(), folder.string(), movie_note, seconds_since(start), frames.seconds,
                draw_seconds);
   }
   return exit_code;
+}
+
+int run_snapshot(const SnapshotOptions& options) {
+  SceneDescription scene = read_scene(options.scene);
+  parse_image_size(options.size, scene.image_width, scene.image_height);
+  const int count = scene.frame_count();
+  const std::vector<int> chosen = options.frames ? parse_frame_list(*options.frames, count)
+                                                 : std::vector<int>{1, (count + 1) / 2, count};
+  const Model model = build_model(scene);
+  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  const std::filesystem::path output =
+      options.output.value_or(std::filesystem::path("out/snapshot") / scene.name);
+
+  const SimulatedFrames frames = simulate_frames(model, timestep, chosen.back(), false);
+  const DrawList draw_list = make_draw_list(scene, model, motion_bounds(frames.positions));
+  const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
+  OsmesaRenderer renderer(render_settings(scene));
+
+  int failures = 0;
+  Image image;
+  for (const int frame : chosen) {
+    const auto k = static_cast<std::size_t>(frame - 1);
+    renderer.render(draw_list, frames.positions[k], cameras[k], image);
+    const std::string name = fmt::format("{}_{:04}", scene.name, frame);
+    const std::filesystem::path golden = options.golden / (name + ".png");
+    std::error_code ec;
+    const bool have_golden = std::filesystem::is_regular_file(golden, ec);
+    if (options.update) {
+      create_folder(options.golden);
+      write_png(golden, image, PngOptions{9, true});  // goldens are kept: make them small
+      if (!options.quiet) {
+        fmt::print("snapshot {}: {} {}\n", name, have_golden ? "updated" : "created",
+                   golden.string());
+      }
+      continue;
+    }
+    if (!have_golden) {
+      fmt::print(stderr, "snapshot {}: no golden image {}; run with --update to create it\n", name,
+                 golden.string());
+      ++failures;
+      continue;
+    }
+    const Image expected = read_png(golden);
+    const ImageComparison comparison = compare_images(image, expected, options.tolerance.threshold);
+    if (comparison.matches(options.tolerance)) {
+      if (!options.quiet) {
+        fmt::print("snapshot {}: ok ({:.3f} % of pixels differ, mean error {:.3f})\n", name,
+                   100.0 * comparison.differing_fraction, comparison.mean_error);
+      }
+      continue;
+    }
+    ++failures;
+    create_folder(output);
+    const std::filesystem::path actual_path = output / (name + "_actual.png");
+    const std::filesystem::path expected_path = output / (name + "_expected.png");
+    const std::filesystem::path diff_path = output / (name + "_diff.png");
+    write_png(actual_path, image);
+    write_png(expected_path, expected);
+    write_png(diff_path, comparison.difference);
+    fmt::print(stderr,
+               "snapshot {}: DIFFERS{}: {:.3f} % of pixels differ by more than {} (allowed {:.3f} "
+               "%), mean error {:.3f} (allowed {:.3f})\n  actual:     {}\n  expected:   {}\n  "
+               "difference: {}\n",
+               name, comparison.same_size ? "" : " (size)", 100.0 * comparison.differing_fraction,
+               options.tolerance.threshold, 100.0 * options.tolerance.max_differing_fraction,
+               comparison.mean_error, options.tolerance.max_mean_error, actual_path.string(),
+               expected_path.string(), diff_path.string());
+  }
+  return failures == 0 ? kExitOk : kExitFailure;
 }
 
 int run_info(const std::filesystem::path& scene_path) {

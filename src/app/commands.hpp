@@ -1,12 +1,14 @@
 #pragma once
-// The program's commands, callable without the command line (tests use them directly).
+// The program's commands, callable without the command line.
 #include <filesystem>
 #include <optional>
 #include <string>
 
+#include "io/image_compare.hpp"
+
 namespace dinam {
 
-// Exit codes: 0 success, 1 any other failure, 2 bad usage or a bad scene.
+// Exit codes: 0 success, 1 any other failure (and snapshot differences), 2 bad usage or scene.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitBadInput = 2;
@@ -16,17 +18,34 @@ struct RenderOptions {
   std::optional<std::filesystem::path> output;  // default: the scene's `output`
   std::optional<std::string> frames;            // "A-B"
   std::optional<std::string> size;              // "WxH"
-  bool video = true;
+  std::optional<std::string> movie;             // mp4, gif or none: overrides the scene
   bool quiet = false;
   bool energy_csv = false;  // write DIR/energy.csv, one row per frame
 };
 
-// Simulates the scene, writes DIR/frame_NNNN.png and DIR/<name>.mp4. Throws UserError for bad
-// input (before anything is written) and RuntimeError for other failures. Returns the exit code:
+// Simulates the scene, writes DIR/frame_NNNN.png and the movie. Throws UserError for bad input
+// (before anything is written) and RuntimeError for other failures. Returns the exit code:
 // kExitFailure when the frames were written but ffmpeg is missing.
 int run_render(const RenderOptions& options);
 
 // Prints the model summary to stdout. Throws UserError for a bad scene.
 int run_info(const std::filesystem::path& scene);
+
+struct SnapshotOptions {
+  std::filesystem::path scene;
+  std::filesystem::path golden;       // folder of <name>_NNNN.png
+  std::optional<std::string> frames;  // "1,60,120" or ranges "1-3,9"; default first, middle, last
+  std::string size = "320x180";
+  std::optional<std::filesystem::path>
+      output;           // actual/expected/diff images; default out/snapshot/<name>
+  bool update = false;  // write the goldens instead of failing on them
+  ImageTolerance tolerance;
+  bool quiet = false;
+};
+
+// Renders the chosen frames and compares each with its golden under the tolerance. Returns
+// kExitOk when all match (or were written with update), kExitFailure otherwise, having written
+// actual, expected and difference images and printed their paths.
+int run_snapshot(const SnapshotOptions& options);
 
 }  // namespace dinam

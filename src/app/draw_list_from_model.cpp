@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/png_file.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
@@ -22,52 +23,107 @@ double round_down_nice(double value) {
 
 }  // namespace
 
-DrawList make_draw_list(const SceneDescription& scene, const Model& model) {
-  DrawList list;
-  Vec3 lo = model.node_initial_x.front();
-  Vec3 hi = lo;
-  for (const Vec3& p : model.node_initial_x) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
+Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames) {
+  Bounds bounds;
+  for (const auto& positions : frames) {
+    for (const Vec3f& p : positions) {
+      bounds.add(p);
+    }
   }
-  const double extent = std::max((hi - lo).norm(), 1e-3);
+  return bounds;
+}
+
+DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion) {
+  DrawList list;
+  const double extent = std::max(static_cast<double>(2.0f * motion.radius()), 1e-3);
   const double min_radius = 0.002 * extent;
 
+  // Which objects show their bars, and their radius.
   std::vector<float> object_radius;
-  for (const ModelObject& object : model.objects) {
+  std::vector<bool> object_wire;
+  for (std::size_t o = 0; o < model.objects.size(); ++o) {
+    const ModelObject& object = model.objects[o];
     const double r = object.render_radius > 0.0 ? object.render_radius
                                                 : std::max(object.wire_radius, min_radius);
     object_radius.push_back(static_cast<float>(r));
+    object_wire.push_back(scene.objects[o].style != DrawStyle::kSurface);
   }
   list.point_radius.resize(model.node_count());
   list.point_color.resize(model.node_count());
+  list.point_uv = model.node_uv;
   for (Index i = 0; i < model.node_count(); ++i) {
     const Index object = model.node_object[i];
-    list.point_radius[i] = object_radius[object];
+    list.point_radius[i] = object_wire[object] ? object_radius[object] : 0.0f;
     list.point_color[i] = model.objects[object].color;
   }
-  list.segment_points = model.bar_nodes;
   for (Index b = 0; b < model.bar_count(); ++b) {
     const Index object = model.node_object[model.bar_nodes[2 * b]];
+    if (!object_wire[object]) {
+      continue;
+    }
+    list.segment_points.push_back(model.bar_nodes[2 * b]);
+    list.segment_points.push_back(model.bar_nodes[2 * b + 1]);
     list.segment_radius.push_back(object_radius[object]);
     list.segment_color.push_back(model.objects[object].color);
   }
 
-  list.ground_visible = scene.ground.visible;
-  // The ground's centre is the foot of the model's centre on the plane.
-  const Vec3 center = 0.5 * (lo + hi);
+  // Surfaces: one batch per drawn object, its faces fanned into triangles.
+  std::vector<int> batch_of_object(model.objects.size(), -1);
+  for (std::size_t o = 0; o < model.objects.size(); ++o) {
+    const ObjectDesc& desc = scene.objects[o];
+    if (desc.style == DrawStyle::kWire) {
+      continue;
+    }
+    SurfaceBatch batch;
+    if (!desc.texture.empty()) {
+      list.textures.push_back(read_png(desc.texture));
+      batch.texture = static_cast<int>(list.textures.size()) - 1;
+    }
+    batch_of_object[o] = static_cast<int>(list.surfaces.size());
+    list.surfaces.push_back(std::move(batch));
+  }
+  for (Index f = 0; f < model.face_count(); ++f) {
+    const Index begin = model.face_offsets[f];
+    const Index end = model.face_offsets[f + 1];
+    const int batch = batch_of_object[model.node_object[model.face_nodes[begin]]];
+    if (batch < 0) {
+      continue;
+    }
+    auto& triangles = list.surfaces[static_cast<std::size_t>(batch)].triangles;
+    for (Index k = begin + 1; k + 1 < end; ++k) {
+      triangles.insert(triangles.end(),
+                       {model.face_nodes[begin], model.face_nodes[k], model.face_nodes[k + 1]});
+    }
+  }
+
+  // The ground's centre is the foot of the motion's centre on the plane; it reaches far enough
+  // that its faded edge lies near the horizon.
+  const Vec3 center = motion.center().cast<double>();
   const Vec3& normal = scene.ground.normal;
+  list.ground_visible = scene.ground.visible;
   list.ground_center = (center - (center - scene.ground.point).dot(normal) * normal).cast<float>();
   list.ground_normal = normal.cast<float>();
-  const double view_distance = (scene.camera.look_at - scene.camera.position).norm();
-  // Far enough that its edge, where the checker has faded out, lies near the horizon.
-  list.ground_half_size = static_cast<float>(std::max(15.0 * extent, 8.0 * view_distance));
+  list.ground_half_size = static_cast<float>(std::max(30.0 * extent, 50.0));
   list.ground_tile = static_cast<float>(round_down_nice(extent / 5.0));
 
-  list.camera.position = scene.camera.position.cast<float>();
-  list.camera.look_at = scene.camera.look_at.cast<float>();
-  list.camera.up = scene.camera.up.cast<float>();
-  list.camera.fov_degrees = static_cast<float>(scene.camera.fov_degrees);
+  list.light_direction = scene.light_direction.cast<float>();
+  list.shadows = scene.quality.shadows;
+  // The shadow map must hold the casters and where their shadows land: the motion's box and its
+  // projection along the light onto the ground.
+  Bounds shadow = motion;
+  const Vec3 light = scene.light_direction.normalized();
+  const double light_height = light.dot(normal);
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p((corner & 1) != 0 ? motion.max.x() : motion.min.x(),
+                 (corner & 2) != 0 ? motion.max.y() : motion.min.y(),
+                 (corner & 4) != 0 ? motion.max.z() : motion.min.z());
+    if (light_height > 0.05) {  // a light near the horizon casts endless shadows: leave them out
+      const double height = (p - scene.ground.point).dot(normal);
+      shadow.add((p - (height / light_height) * light).cast<float>());
+    }
+  }
+  list.shadow_bounds_min = shadow.min;
+  list.shadow_bounds_max = shadow.max;
   return list;
 }
 

@@ -4,16 +4,22 @@
 #include <vector>
 
 #include "render/draw_list.hpp"
+#include "render/framing.hpp"
 
 namespace dinam {
 
 struct Model;
 struct SceneDescription;
 
-// Bars become segments and nodes become joints, each object in its colour. A bar is drawn with
-// the object's render_radius, else its wire radius, but never thinner than 0.2 % of the model's
-// size, so a cloth of fine threads stays visible.
-DrawList make_draw_list(const SceneDescription& scene, const Model& model);
+// Bars become segments and nodes become joints, each object in its colour; the faces of objects
+// drawn as surfaces become triangle batches (textured when the scene names a texture). A bar is
+// drawn with the object's render_radius, else its wire radius, but never thinner than 0.2 % of
+// the model's size, so a cloth of fine threads stays visible. `motion` bounds every frame's
+// positions: the ground and the shadow map are framed on it.
+DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion);
+
+// The bounds of every position of every frame.
+Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames);
 
 // Node positions in single precision, for the renderer.
 void positions_for_render(const std::vector<Vec3>& x, std::vector<Vec3f>& out);

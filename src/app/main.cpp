@@ -29,12 +29,51 @@ int run(int argc, char** argv) {
                              "still simulated");
   render_command->add_option("--size", render.size, "Image size WxH, e.g. 640x360");
   bool no_video = false;
-  render_command->add_flag("--no-video", no_video, "Write the PNG frames only, no movie");
+  render_command->add_option("--movie", render.movie,
+                             "Movie format: mp4 (H.264), gif, or none (default: the scene's "
+                             "'movie', else mp4)");
+  render_command->add_flag("--no-video", no_video, "Write the PNG frames only (--movie none)");
   render_command->add_flag("-q,--quiet", render.quiet, "Print nothing but errors");
   render_command->add_flag("--energy", render.energy_csv,
                            "Also write DIR/energy.csv: kinetic, elastic, gravitational and contact "
                            "energy, and what damping, plasticity, friction, wind and fields did, "
                            "one row per frame");
+
+  SnapshotOptions snapshot;
+  std::string snapshot_output;
+  CLI::App* snapshot_command = app.add_subcommand(
+      "snapshot",
+      "Render chosen frames small and compare each with a golden PNG under a tolerance; exit 1 "
+      "on any difference, writing actual, expected and difference images");
+  snapshot_command->add_option("scene", snapshot.scene, "Scene file (YAML)")->required();
+  snapshot_command
+      ->add_option("--golden", snapshot.golden, "Folder of golden images <name>_NNNN.png")
+      ->required();
+  snapshot_command->add_option("--frames", snapshot.frames,
+                               "Frames to check, e.g. 1,60,120 or 1-3,9 (default: first, middle "
+                               "and last)");
+  snapshot_command->add_option("--size", snapshot.size, "Image size WxH")->default_val("320x180");
+  snapshot_command->add_option("-o,--output", snapshot_output,
+                               "Where differing frames' actual/expected/diff images go (default "
+                               "out/snapshot/<name>)");
+  snapshot_command->add_flag("--update", snapshot.update,
+                             "Write the rendered frames as the new goldens instead of comparing");
+  snapshot_command
+      ->add_option("--threshold", snapshot.tolerance.threshold,
+                   "A pixel differs when a channel differs by more than this (0-255)")
+      ->default_val(snapshot.tolerance.threshold)
+      ->check(CLI::Range(0, 255));
+  snapshot_command
+      ->add_option("--max-differing", snapshot.tolerance.max_differing_fraction,
+                   "Largest fraction of differing pixels that still matches")
+      ->default_val(snapshot.tolerance.max_differing_fraction)
+      ->check(CLI::Range(0.0, 1.0));
+  snapshot_command
+      ->add_option("--max-mean-error", snapshot.tolerance.max_mean_error,
+                   "Largest mean channel error (0-255) that still matches")
+      ->default_val(snapshot.tolerance.max_mean_error)
+      ->check(CLI::Range(0.0, 255.0));
+  snapshot_command->add_flag("-q,--quiet", snapshot.quiet, "Print only differences and errors");
 
   std::filesystem::path info_scene;
   CLI::App* info_command =
@@ -61,8 +100,16 @@ int run(int argc, char** argv) {
       if (!output.empty()) {
         render.output = output;
       }
-      render.video = !no_video;
+      if (no_video) {
+        render.movie = "none";
+      }
       return run_render(render);
+    }
+    if (*snapshot_command) {
+      if (!snapshot_output.empty()) {
+        snapshot.output = snapshot_output;
+      }
+      return run_snapshot(snapshot);
     }
     return run_info(info_scene);
   } catch (const UserError& e) {

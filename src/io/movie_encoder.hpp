@@ -13,7 +13,8 @@ struct MovieRequest {
   int first_frame_number = 1;           // the number in the first file name
   int frame_count = 0;
   double fps = 24.0;
-  std::filesystem::path output;  // DIR/name.mp4: H.264, yuv420p, even dimensions
+  std::filesystem::path output;  // DIR/name.mp4 (H.264, yuv420p, even dimensions) or name.gif
+  bool gif = false;  // an animated GIF with one palette for the whole movie, Bayer-dithered
 };
 
 enum class MovieOutcome { kWritten, kFfmpegMissing };

@@ -52,11 +52,12 @@ struct WindLoad {
 
 struct Model {
   // Nodes: point masses without rotational inertia.
-  std::vector<Vec3> node_initial_x;   // (n_nodes) m
-  std::vector<Vec3> node_initial_v;   // (n_nodes) m/s
-  std::vector<double> node_mass;      // (n_nodes) kg; half of every incident bar's mass
-  std::vector<double> node_inv_mass;  // (n_nodes) 1/kg; 0 for pinned nodes, which never move
-  std::vector<Index> node_object;     // (n_nodes) object id
+  std::vector<Vec3> node_initial_x;      // (n_nodes) m
+  std::vector<Vec3> node_initial_v;      // (n_nodes) m/s
+  std::vector<double> node_mass;         // (n_nodes) kg; half of every incident bar's mass
+  std::vector<double> node_inv_mass;     // (n_nodes) 1/kg; 0 for pinned nodes, which never move
+  std::vector<Index> node_object;        // (n_nodes) object id
+  std::vector<Eigen::Vector2f> node_uv;  // (n_nodes) texture coordinates, for drawing only
 
   // Bars: one per unique mesh edge, an axial spring k = EA/L0 and a damper between n0 and n1.
   std::vector<Index> bar_nodes;             // (n_bars × 2) n0, n1

@@ -105,6 +105,16 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) 
   info.section_area = object.material.area;
   info.color = object.color;
   info.render_radius = object.render_radius.value_or(0.0);
+  // Each node takes the texture coordinates of the first vertex welded into it.
+  std::vector<Eigen::Vector2f> welded_uv(weld.nodes.size(), Eigen::Vector2f::Zero());
+  std::vector<bool> uv_set(weld.nodes.size(), false);
+  for (std::size_t v = 0; v < object.mesh.uvs.size(); ++v) {
+    const Index w = weld.node_of_vertex[v];
+    if (!uv_set[w]) {
+      welded_uv[w] = object.mesh.uvs[v].cast<float>();
+      uv_set[w] = true;
+    }
+  }
   Index next = info.first_node;
   for (std::size_t w = 0; w < weld.nodes.size(); ++w) {
     if (node_of_welded[w] < 0) {
@@ -116,6 +126,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) 
     model.node_mass.push_back(0.0);
     model.node_inv_mass.push_back(0.0);
     model.node_object.push_back(object_id);
+    model.node_uv.push_back(welded_uv[w]);
   }
   info.node_count = next - info.first_node;
 

@@ -1,9 +1,10 @@
 #pragma once
-// What the renderer draws, in its own terms: segments between points, joints, a ground and a
-// camera. render/ never sees springs or materials; app/ fills this from the model once, and each
-// frame only the point positions change.
+// What the renderer draws, in its own terms: segments between points, joints, surfaces over
+// points, a ground and a light. render/ never sees springs or materials; app/ fills this from the
+// model once, and each frame only the point positions (and the camera) change.
 #include <vector>
 
+#include "core/image.hpp"
 #include "core/types.hpp"
 
 namespace dinam {
@@ -15,12 +16,21 @@ struct RenderCamera {
   float fov_degrees = 40.0f;  // vertical
 };
 
+// Triangles drawn as one lit, two-sided surface, with one texture or the points' colours.
+struct SurfaceBatch {
+  std::vector<Index> triangles;  // (n_triangles × 3) point ids
+  int texture = -1;              // index into DrawList::textures; −1 for the points' colours
+};
+
 struct DrawList {
-  std::vector<Index> segment_points;  // (n_segments × 2) ids into the per-frame positions
-  std::vector<float> segment_radius;  // (n_segments) m
-  std::vector<Vec3f> segment_color;   // (n_segments) linear RGB
-  std::vector<float> point_radius;    // (n_points) m; 0 draws no joint sphere
-  std::vector<Vec3f> point_color;     // (n_points) linear RGB
+  std::vector<Index> segment_points;      // (n_segments × 2) ids into the per-frame positions
+  std::vector<float> segment_radius;      // (n_segments) m
+  std::vector<Vec3f> segment_color;       // (n_segments) linear RGB
+  std::vector<float> point_radius;        // (n_points) m; 0 draws no joint sphere
+  std::vector<Vec3f> point_color;         // (n_points) linear RGB, also the surfaces' colour
+  std::vector<Eigen::Vector2f> point_uv;  // (n_points) texture coordinates of surface points
+  std::vector<SurfaceBatch> surfaces;
+  std::vector<Image> textures;  // sRGB-encoded RGBA, as read from PNG files
 
   bool ground_visible = true;
   Vec3f ground_center = Vec3f::Zero();   // m, a point of the ground plane under the scene
@@ -28,8 +38,12 @@ struct DrawList {
   float ground_half_size = 10.0f;  // m; the checker fades out towards this distance from the eye
   float ground_tile = 0.5f;        // m, checker size
 
-  RenderCamera camera;
   Vec3f light_direction{0.35f, -0.45f, 0.82f};  // towards the light; normalised when drawn
+  bool shadows = true;
+  // A box that holds everything that casts a shadow in every frame, so the shadow map's framing
+  // does not change between frames.
+  Vec3f shadow_bounds_min = Vec3f::Constant(-1.0f);
+  Vec3f shadow_bounds_max = Vec3f::Constant(1.0f);
 };
 
 }  // namespace dinam

@@ -16,6 +16,7 @@ namespace {
 
 constexpr int kBarFloats = 10;
 constexpr int kNodeFloats = 7;
+constexpr int kShadowTextureUnit = 1;
 const Vec3f kHorizonColor{0.78f, 0.82f, 0.86f};
 const Vec3f kZenithColor{0.30f, 0.45f, 0.68f};
 
@@ -42,8 +43,10 @@ int upload_primitive(const PrimitiveMesh& mesh, unsigned vao, unsigned vbo, unsi
   return static_cast<int>(mesh.indices.size());
 }
 
-// Declares per-instance float attributes starting at `first_location`, of the given sizes.
-void instance_attributes(unsigned vbo, unsigned first_location, std::initializer_list<int> sizes) {
+// Declares float attributes from one buffer starting at `first_location`, of the given sizes,
+// per instance (divisor 1) or per vertex (divisor 0).
+void attributes(unsigned vbo, unsigned first_location, std::initializer_list<int> sizes,
+                unsigned divisor) {
   glBindBuffer(GL_ARRAY_BUFFER, vbo);
   int stride = 0;
   for (const int size : sizes) {
@@ -55,41 +58,87 @@ void instance_attributes(unsigned vbo, unsigned first_location, std::initializer
     glEnableVertexAttribArray(location);
     glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE,
                           static_cast<GLsizei>(stride * sizeof(float)), float_offset(offset));
-    glVertexAttribDivisor(location, 1);
+    glVertexAttribDivisor(location, divisor);
     offset += size;
     ++location;
   }
+}
+
+void upload(unsigned vbo, const std::vector<float>& data) {
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+               GL_STREAM_DRAW);
 }
 
 void set_vec3(int location, const Vec3f& v) {
   glUniform3f(location, v.x(), v.y(), v.z());
 }
 
+// The shadow map's view of the scene: an orthographic box around the shadow bounds, seen along
+// the light. Returns clip_from_world (for drawing into the map) and writes the [0, 1]³ version
+// used to look it up.
+Mat4f light_clip_from_world(const DrawList& list, Mat4f& light_from_world) {
+  const Vec3f center = 0.5f * (list.shadow_bounds_min + list.shadow_bounds_max);
+  const float radius =
+      std::max(0.5f * (list.shadow_bounds_max - list.shadow_bounds_min).norm(), 1e-3f);
+  const Vec3f direction = list.light_direction.normalized();
+  RenderCamera light;
+  light.position = center + 2.0f * radius * direction;
+  light.look_at = center;
+  light.up = std::abs(direction.z()) < 0.9f ? Vec3f::UnitZ() : Vec3f::UnitX();
+  Mat4f ortho = Mat4f::Identity();  // x, y in [−r, r], depth from r to 3r in front of the light
+  ortho(0, 0) = 1.0f / radius;
+  ortho(1, 1) = 1.0f / radius;
+  ortho(2, 2) = -1.0f / radius;
+  ortho(2, 3) = -2.0f;
+  const Mat4f clip = ortho * eye_from_world(light);
+  Mat4f to_unit = Mat4f::Identity();
+  to_unit.topLeftCorner<3, 3>() *= 0.5f;
+  to_unit.topRightCorner<3, 1>().setConstant(0.5f);
+  light_from_world = to_unit * clip;
+  return clip;
+}
+
 }  // namespace
 
-OsmesaRenderer::OsmesaRenderer(int width, int height, int samples)
-    : context_(width, height), samples_(std::max(1, samples)) {
+struct OsmesaRenderer::Programs {
+  ShaderProgram bar{"bar.vert", "lit.frag", {"lighting.glsl"}};
+  ShaderProgram node{"node.vert", "lit.frag", {"lighting.glsl"}};
+  ShaderProgram surface{"surface.vert", "lit.frag", {"lighting.glsl"}};
+  ShaderProgram ground{"ground.vert", "ground.frag", {"lighting.glsl"}};
+  ShaderProgram sky{"sky.vert", "sky.frag"};
+  ShaderProgram bar_depth{"bar.vert", "depth.frag"};
+  ShaderProgram node_depth{"node.vert", "depth.frag"};
+  ShaderProgram surface_depth{"surface.vert", "depth.frag"};
+};
+
+OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
+    : context_(settings.width, settings.height), settings_(settings) {
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
-  samples_ = std::min(samples_, static_cast<int>(max_samples));
-  bar_program_ = std::make_unique<ShaderProgram>("bar.vert", "lit.frag");
-  node_program_ = std::make_unique<ShaderProgram>("node.vert", "lit.frag");
-  ground_program_ = std::make_unique<ShaderProgram>("ground.vert", "ground.frag");
-  sky_program_ = std::make_unique<ShaderProgram>("sky.vert", "sky.frag");
+  samples_ = std::clamp(settings.samples, 1, static_cast<int>(max_samples));
+  programs_ = std::make_unique<Programs>();
   create_buffers();
-  create_framebuffer();
+  create_framebuffers();
 }
 
 OsmesaRenderer::~OsmesaRenderer() {
-  const unsigned buffers[] = {cylinder_vbo_, cylinder_ebo_,      bar_instance_vbo_, sphere_vbo_,
-                              sphere_ebo_,   node_instance_vbo_, ground_vbo_};
+  const unsigned buffers[] = {cylinder_vbo_,        cylinder_ebo_,       bar_instance_vbo_,
+                              sphere_vbo_,          sphere_ebo_,         node_instance_vbo_,
+                              surface_dynamic_vbo_, surface_static_vbo_, ground_vbo_};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
-  const unsigned arrays[] = {cylinder_vao_, sphere_vao_, ground_vao_, sky_vao_};
+  glDeleteBuffers(static_cast<GLsizei>(batch_ebos_.size()), batch_ebos_.data());
+  glDeleteTextures(static_cast<GLsizei>(texture_ids_.size()), texture_ids_.data());
+  const unsigned arrays[] = {cylinder_vao_, sphere_vao_, surface_vao_, ground_vao_, sky_vao_};
   glDeleteVertexArrays(static_cast<GLsizei>(std::size(arrays)), arrays);
   if (msaa_fbo_ != 0) {
     glDeleteFramebuffers(1, &msaa_fbo_);
     const unsigned renderbuffers[] = {msaa_color_, msaa_depth_};
     glDeleteRenderbuffers(2, renderbuffers);
+  }
+  if (shadow_fbo_ != 0) {
+    glDeleteFramebuffers(1, &shadow_fbo_);
+    glDeleteTextures(1, &shadow_texture_);
   }
 }
 
@@ -100,7 +149,7 @@ void OsmesaRenderer::create_buffers() {
   glGenBuffers(1, &bar_instance_vbo_);
   cylinder_index_count_ =
       upload_primitive(make_unit_cylinder(10), cylinder_vao_, cylinder_vbo_, cylinder_ebo_);
-  instance_attributes(bar_instance_vbo_, 2, {3, 3, 1, 3});
+  attributes(bar_instance_vbo_, 2, {3, 3, 1, 3}, 1);
 
   glGenVertexArrays(1, &sphere_vao_);
   glGenBuffers(1, &sphere_vbo_);
@@ -108,7 +157,14 @@ void OsmesaRenderer::create_buffers() {
   glGenBuffers(1, &node_instance_vbo_);
   sphere_index_count_ =
       upload_primitive(make_unit_sphere(8, 5), sphere_vao_, sphere_vbo_, sphere_ebo_);
-  instance_attributes(node_instance_vbo_, 2, {3, 1, 3});
+  attributes(node_instance_vbo_, 2, {3, 1, 3}, 1);
+
+  glGenVertexArrays(1, &surface_vao_);
+  glGenBuffers(1, &surface_dynamic_vbo_);
+  glGenBuffers(1, &surface_static_vbo_);
+  glBindVertexArray(surface_vao_);
+  attributes(surface_dynamic_vbo_, 0, {3, 3}, 0);
+  attributes(surface_static_vbo_, 2, {3, 2}, 0);
 
   glGenVertexArrays(1, &ground_vao_);
   glGenBuffers(1, &ground_vbo_);
@@ -123,132 +179,278 @@ void OsmesaRenderer::create_buffers() {
   glBindVertexArray(0);
 }
 
-void OsmesaRenderer::create_framebuffer() {
-  if (samples_ <= 1) {
-    return;
+void OsmesaRenderer::create_framebuffers() {
+  if (samples_ > 1) {
+    glGenFramebuffers(1, &msaa_fbo_);
+    glGenRenderbuffers(1, &msaa_color_);
+    glGenRenderbuffers(1, &msaa_depth_);
+    glBindRenderbuffer(GL_RENDERBUFFER, msaa_color_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, context_.width(),
+                                     context_.height());
+    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24,
+                                     context_.width(), context_.height());
+    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw RuntimeError(fmt::format("cannot create a {}× multisampled framebuffer", samples_));
+    }
   }
-  glGenFramebuffers(1, &msaa_fbo_);
-  glGenRenderbuffers(1, &msaa_color_);
-  glGenRenderbuffers(1, &msaa_depth_);
-  glBindRenderbuffer(GL_RENDERBUFFER, msaa_color_);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, context_.width(),
-                                   context_.height());
-  glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24,
-                                   context_.width(), context_.height());
-  glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    throw RuntimeError(fmt::format("cannot create a {}× multisampled framebuffer", samples_));
+  if (settings_.shadow_resolution > 0) {
+    const int size = settings_.shadow_resolution;
+    glGenTextures(1, &shadow_texture_);
+    glBindTexture(GL_TEXTURE_2D, shadow_texture_);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT,
+                 GL_UNSIGNED_INT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glGenFramebuffers(1, &shadow_fbo_);
+    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_texture_, 0);
+    glDrawBuffer(GL_NONE);
+    glReadBuffer(GL_NONE);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+      throw RuntimeError(fmt::format("cannot create a {}² shadow map", size));
+    }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& positions,
-                            Image& image) {
-  DINAM_CHECK(positions.size() == list.point_radius.size());
-  const int width = context_.width();
-  const int height = context_.height();
-
-  // Camera: near and far planes bracket the scene around the look-at distance.
-  const RenderCamera& camera = list.camera;
-  const float distance = (camera.look_at - camera.position).norm();
-  const float far_plane = std::max(100.0f * distance, 4.0f * list.ground_half_size + distance);
-  const Mat4f clip_from_world =
-      clip_from_eye(camera.fov_degrees, static_cast<float>(width) / static_cast<float>(height),
-                    0.01f * distance, far_plane) *
-      eye_from_world(camera);
-  const Vec3f light = list.light_direction.normalized();
-
-  glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
-  glViewport(0, 0, width, height);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
-  // 1. Sky, behind everything.
-  glDisable(GL_DEPTH_TEST);
-  sky_program_->use();
-  set_vec3(sky_program_->uniform("horizon_color"), kHorizonColor);
-  set_vec3(sky_program_->uniform("zenith_color"), kZenithColor);
-  glBindVertexArray(sky_vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-
-  // 2. Ground.
-  if (list.ground_visible) {
-    ground_program_->use();
-    glUniformMatrix4fv(ground_program_->uniform("clip_from_world"), 1, GL_FALSE,
-                       clip_from_world.data());
-    // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
-    const Vec3f normal = list.ground_normal.normalized();
-    const Vec3f seed = std::abs(normal.x()) < 0.9f ? Vec3f::UnitX() : Vec3f::UnitY();
-    const Vec3f axis_u = (seed - seed.dot(normal) * normal).normalized();
-    set_vec3(ground_program_->uniform("center"), list.ground_center);
-    set_vec3(ground_program_->uniform("axis_u"), axis_u);
-    set_vec3(ground_program_->uniform("axis_v"), normal.cross(axis_u));
-    glUniform1f(ground_program_->uniform("half_size"), list.ground_half_size);
-    set_vec3(ground_program_->uniform("eye_position"), camera.position);
-    glUniform1f(ground_program_->uniform("fade_distance"), 0.9f * list.ground_half_size);
-    glUniform1f(ground_program_->uniform("tile_size"), list.ground_tile);
-    set_vec3(ground_program_->uniform("horizon_color"), kHorizonColor);
-    glBindVertexArray(ground_vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 6);
+void OsmesaRenderer::upload_static(const DrawList& list) {
+  if (static_list_ == &list) {
+    return;
   }
+  static_list_ = &list;
+  // Colour and texture coordinates of every point, for the surfaces.
+  std::vector<float> attributes_data;
+  attributes_data.reserve(list.point_color.size() * 5);
+  for (std::size_t p = 0; p < list.point_color.size(); ++p) {
+    const Vec3f& c = list.point_color[p];
+    const Eigen::Vector2f uv =
+        p < list.point_uv.size() ? list.point_uv[p] : Eigen::Vector2f::Zero();
+    attributes_data.insert(attributes_data.end(), {c.x(), c.y(), c.z(), uv.x(), uv.y()});
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, surface_static_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(attributes_data.size() * sizeof(float)),
+               attributes_data.data(), GL_STATIC_DRAW);
 
-  // 3. Bars as instanced cylinders.
+  glDeleteBuffers(static_cast<GLsizei>(batch_ebos_.size()), batch_ebos_.data());
+  batch_ebos_.assign(list.surfaces.size(), 0);
+  batch_index_counts_.clear();
+  glBindVertexArray(surface_vao_);
+  for (std::size_t b = 0; b < list.surfaces.size(); ++b) {
+    glGenBuffers(1, &batch_ebos_[b]);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batch_ebos_[b]);
+    const auto& triangles = list.surfaces[b].triangles;
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(triangles.size() * sizeof(Index)),
+                 triangles.data(), GL_STATIC_DRAW);
+    batch_index_counts_.push_back(static_cast<int>(triangles.size()));
+  }
+  glBindVertexArray(0);
+
+  glDeleteTextures(static_cast<GLsizei>(texture_ids_.size()), texture_ids_.data());
+  texture_ids_.assign(list.textures.size(), 0);
+  for (std::size_t t = 0; t < list.textures.size(); ++t) {
+    const Image& texture = list.textures[t];
+    glGenTextures(1, &texture_ids_[t]);
+    glBindTexture(GL_TEXTURE_2D, texture_ids_[t]);
+    // Rows top first in the image; OpenGL's v runs up, so v = 0 is the picture's top row.
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, texture.width, texture.height, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, texture.rgba.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+}
+
+void OsmesaRenderer::upload_frame(const DrawList& list, const std::vector<Vec3f>& positions) {
   const std::size_t n_segments = list.segment_radius.size();
   bar_instances_.resize(n_segments * kBarFloats);
   for (std::size_t s = 0; s < n_segments; ++s) {
-    float* out = bar_instances_.data() + s * kBarFloats;
     const Vec3f& p0 = positions[list.segment_points[2 * s]];
     const Vec3f& p1 = positions[list.segment_points[2 * s + 1]];
     const Vec3f& c = list.segment_color[s];
     const float values[kBarFloats] = {
         p0.x(), p0.y(), p0.z(), p1.x(), p1.y(), p1.z(), list.segment_radius[s],
         c.x(),  c.y(),  c.z()};
-    std::memcpy(out, values, sizeof(values));
+    std::memcpy(bar_instances_.data() + s * kBarFloats, values, sizeof(values));
   }
-  const auto upload = [](unsigned vbo, const std::vector<float>& data) {
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
-                 GL_STREAM_DRAW);
-  };
-  const auto set_lighting = [&](const ShaderProgram& program) {
+  upload(bar_instance_vbo_, bar_instances_);
+
+  node_instances_.clear();
+  for (std::size_t p = 0; p < positions.size(); ++p) {
+    if (list.point_radius[p] > 0.0f) {
+      const Vec3f& x = positions[p];
+      const Vec3f& c = list.point_color[p];
+      node_instances_.insert(node_instances_.end(),
+                             {x.x(), x.y(), x.z(), list.point_radius[p], c.x(), c.y(), c.z()});
+    }
+  }
+  upload(node_instance_vbo_, node_instances_);
+
+  if (list.surfaces.empty()) {
+    return;
+  }
+  // Normals follow the motion: area-weighted sums of the current triangle normals.
+  point_normals_.assign(positions.size(), Vec3f::Zero());
+  for (const SurfaceBatch& batch : list.surfaces) {
+    for (std::size_t t = 0; t + 2 < batch.triangles.size(); t += 3) {
+      const Index a = batch.triangles[t];
+      const Index b = batch.triangles[t + 1];
+      const Index c = batch.triangles[t + 2];
+      const Vec3f area_normal = (positions[b] - positions[a]).cross(positions[c] - positions[a]);
+      point_normals_[a] += area_normal;
+      point_normals_[b] += area_normal;
+      point_normals_[c] += area_normal;
+    }
+  }
+  surface_vertices_.resize(positions.size() * 6);
+  for (std::size_t p = 0; p < positions.size(); ++p) {
+    const float length = point_normals_[p].norm();
+    const Vec3f n = length > 0.0f ? Vec3f(point_normals_[p] / length) : Vec3f::UnitZ();
+    const Vec3f& x = positions[p];
+    const float values[6] = {x.x(), x.y(), x.z(), n.x(), n.y(), n.z()};
+    std::memcpy(surface_vertices_.data() + p * 6, values, sizeof(values));
+  }
+  upload(surface_dynamic_vbo_, surface_vertices_);
+}
+
+void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
+                                 const float* clip_from_world, const RenderCamera& camera,
+                                 const float* light_from_world) {
+  const auto prepare = [&](const ShaderProgram& program) {
     program.use();
-    glUniformMatrix4fv(program.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world.data());
-    set_vec3(program.uniform("light_direction"), light);
+    glUniformMatrix4fv(program.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world);
+    if (depth_only) {
+      return;
+    }
+    set_vec3(program.uniform("light_direction"), list.light_direction.normalized());
     set_vec3(program.uniform("eye_position"), camera.position);
+    glUniform1i(program.uniform("shadows_enabled"), light_from_world != nullptr ? 1 : 0);
+    glUniform1i(program.uniform("shadow_map"), kShadowTextureUnit);
+    if (light_from_world != nullptr) {
+      glUniformMatrix4fv(program.uniform("light_from_world"), 1, GL_FALSE, light_from_world);
+    }
+    glUniform1i(program.uniform("use_texture"), 0);
+    glUniform1i(program.uniform("surface_texture"), 0);
   };
+  const std::size_t n_segments = list.segment_radius.size();
   if (n_segments > 0) {
-    upload(bar_instance_vbo_, bar_instances_);
-    set_lighting(*bar_program_);
+    prepare(depth_only ? programs_->bar_depth : programs_->bar);
     glBindVertexArray(cylinder_vao_);
     glDrawElementsInstanced(GL_TRIANGLES, cylinder_index_count_, GL_UNSIGNED_INT, nullptr,
                             static_cast<GLsizei>(n_segments));
   }
-
-  // 4. Joints as instanced spheres.
-  node_instances_.clear();
-  for (std::size_t p = 0; p < positions.size(); ++p) {
-    if (list.point_radius[p] <= 0.0f) {
-      continue;
-    }
-    const Vec3f& x = positions[p];
-    const Vec3f& c = list.point_color[p];
-    node_instances_.insert(node_instances_.end(),
-                           {x.x(), x.y(), x.z(), list.point_radius[p], c.x(), c.y(), c.z()});
-  }
   if (!node_instances_.empty()) {
-    upload(node_instance_vbo_, node_instances_);
-    set_lighting(*node_program_);
+    prepare(depth_only ? programs_->node_depth : programs_->node);
     glBindVertexArray(sphere_vao_);
     glDrawElementsInstanced(GL_TRIANGLES, sphere_index_count_, GL_UNSIGNED_INT, nullptr,
                             static_cast<GLsizei>(node_instances_.size() / kNodeFloats));
   }
+  if (!list.surfaces.empty()) {
+    const ShaderProgram& program = depth_only ? programs_->surface_depth : programs_->surface;
+    prepare(program);
+    glBindVertexArray(surface_vao_);
+    for (std::size_t b = 0; b < list.surfaces.size(); ++b) {
+      const int texture = list.surfaces[b].texture;
+      if (!depth_only) {
+        glUniform1i(program.uniform("use_texture"), texture >= 0 ? 1 : 0);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D,
+                      texture >= 0 ? texture_ids_[static_cast<std::size_t>(texture)] : 0);
+      }
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batch_ebos_[b]);
+      glDrawElements(GL_TRIANGLES, batch_index_counts_[b], GL_UNSIGNED_INT, nullptr);
+    }
+  }
   glBindVertexArray(0);
+}
 
-  // 5. Resolve the samples into the default framebuffer (the OSMesa buffer), then read it.
+void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& positions,
+                            const RenderCamera& camera, Image& image) {
+  DINAM_CHECK(positions.size() == list.point_radius.size());
+  const int width = context_.width();
+  const int height = context_.height();
+  upload_static(list);
+  upload_frame(list, positions);
+
+  // 1. Shadow map: depth from the light, for everything but the ground.
+  Mat4f light_from_world = Mat4f::Identity();
+  const bool shadows = list.shadows && shadow_fbo_ != 0;
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  if (shadows) {
+    const Mat4f light_clip = light_clip_from_world(list, light_from_world);
+    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+    glViewport(0, 0, settings_.shadow_resolution, settings_.shadow_resolution);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.5f, 2.0f);
+    draw_shapes(list, true, light_clip.data(), camera, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+  glActiveTexture(GL_TEXTURE0 + kShadowTextureUnit);
+  glBindTexture(GL_TEXTURE_2D, shadows ? shadow_texture_ : 0);
+  glActiveTexture(GL_TEXTURE0);
+
+  // 2. The view: near and far planes bracket the scene around the look-at distance.
+  const float distance = (camera.look_at - camera.position).norm();
+  const float far_plane = std::max(100.0f * distance, 4.0f * list.ground_half_size + distance);
+  const Mat4f clip_from_world =
+      clip_from_eye(camera.fov_degrees, static_cast<float>(width) / static_cast<float>(height),
+                    0.01f * distance, far_plane) *
+      eye_from_world(camera);
+  glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+  glViewport(0, 0, width, height);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  // 3. Sky, behind everything.
+  glDisable(GL_DEPTH_TEST);
+  programs_->sky.use();
+  set_vec3(programs_->sky.uniform("horizon_color"), kHorizonColor);
+  set_vec3(programs_->sky.uniform("zenith_color"), kZenithColor);
+  glBindVertexArray(sky_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_DEPTH_TEST);
+
+  // 4. Ground, lit and shadowed.
+  if (list.ground_visible) {
+    const ShaderProgram& ground = programs_->ground;
+    ground.use();
+    glUniformMatrix4fv(ground.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world.data());
+    // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
+    const Vec3f normal = list.ground_normal.normalized();
+    const Vec3f seed = std::abs(normal.x()) < 0.9f ? Vec3f::UnitX() : Vec3f::UnitY();
+    const Vec3f axis_u = (seed - seed.dot(normal) * normal).normalized();
+    set_vec3(ground.uniform("center"), list.ground_center);
+    set_vec3(ground.uniform("axis_u"), axis_u);
+    set_vec3(ground.uniform("axis_v"), normal.cross(axis_u));
+    set_vec3(ground.uniform("plane_normal"), normal);
+    glUniform1f(ground.uniform("half_size"), list.ground_half_size);
+    glUniform1f(ground.uniform("fade_distance"), 0.9f * list.ground_half_size);
+    glUniform1f(ground.uniform("tile_size"), list.ground_tile);
+    set_vec3(ground.uniform("horizon_color"), kHorizonColor);
+    set_vec3(ground.uniform("light_direction"), list.light_direction.normalized());
+    set_vec3(ground.uniform("eye_position"), camera.position);
+    glUniform1i(ground.uniform("shadows_enabled"), shadows ? 1 : 0);
+    glUniform1i(ground.uniform("shadow_map"), kShadowTextureUnit);
+    glUniformMatrix4fv(ground.uniform("light_from_world"), 1, GL_FALSE, light_from_world.data());
+    glBindVertexArray(ground_vao_);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+  }
+
+  // 5. Bars, joints and surfaces.
+  draw_shapes(list, false, clip_from_world.data(), camera,
+              shadows ? light_from_world.data() : nullptr);
+
+  // 6. Resolve the samples into the default framebuffer (the OSMesa buffer), then read it.
   if (msaa_fbo_ != 0) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -259,7 +461,6 @@ void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& posi
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     throw RuntimeError(fmt::format("OpenGL error 0x{:x} while drawing a frame", error));
   }
-
   if (image.width != width || image.height != height) {
     image = Image(width, height);
   }

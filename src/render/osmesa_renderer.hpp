@@ -1,50 +1,69 @@
 #pragma once
-// Draws a DrawList off-screen with OSMesa: a sky gradient, a checkered ground, bars as lit
-// instanced cylinders and joints as spheres, with 4× multisampling. One renderer draws many
-// frames of one size; only the point positions change between frames.
+// The Renderer on OSMesa (Mesa's software OpenGL, core profile): a sky gradient, a checkered
+// ground that takes shadows, bars as lit instanced cylinders, joints as spheres, mesh faces as
+// two-sided surfaces (plain or textured), a shadow map from the directional light, and
+// multisampled anti-aliasing. One renderer draws many frames of one size.
 #include <memory>
 #include <vector>
 
-#include "core/image.hpp"
-#include "render/draw_list.hpp"
 #include "render/gl_context.hpp"
+#include "render/renderer.hpp"
 #include "render/shader_program.hpp"
 
 namespace dinam {
 
-class OsmesaRenderer {
+struct RenderSettings {
+  int width = 1280;
+  int height = 720;
+  int samples = 4;               // multisampling; clamped to what the driver offers, 1 is off
+  int shadow_resolution = 2048;  // texels per side of the shadow map; 0 turns shadows off
+};
+
+class OsmesaRenderer final : public Renderer {
  public:
-  // `samples` is the multisampling count, clamped to what the driver offers; 1 turns it off.
-  OsmesaRenderer(int width, int height, int samples = 4);
-  ~OsmesaRenderer();
+  explicit OsmesaRenderer(const RenderSettings& settings);
+  ~OsmesaRenderer() override;
   OsmesaRenderer(const OsmesaRenderer&) = delete;
   OsmesaRenderer& operator=(const OsmesaRenderer&) = delete;
 
-  // Draws `list` with its points at `positions` (n_points) into `image` (resized if needed).
-  void render(const DrawList& list, const std::vector<Vec3f>& positions, Image& image);
+  void render(const DrawList& list, const std::vector<Vec3f>& positions, const RenderCamera& camera,
+              Image& image) override;
 
   int samples() const { return samples_; }
 
  private:
+  struct Programs;
   void create_buffers();
-  void create_framebuffer();
+  void create_framebuffers();
+  void upload_static(const DrawList& list);
+  void upload_frame(const DrawList& list, const std::vector<Vec3f>& positions);
+  void draw_shapes(const DrawList& list, bool depth_only, const float* clip_from_world,
+                   const RenderCamera& camera, const float* light_from_world);
 
   GlContext context_;
-  int samples_;
-  std::unique_ptr<ShaderProgram> bar_program_;
-  std::unique_ptr<ShaderProgram> node_program_;
-  std::unique_ptr<ShaderProgram> ground_program_;
-  std::unique_ptr<ShaderProgram> sky_program_;
+  RenderSettings settings_;
+  int samples_ = 1;
+  std::unique_ptr<Programs> programs_;
 
   unsigned cylinder_vao_ = 0, cylinder_vbo_ = 0, cylinder_ebo_ = 0, bar_instance_vbo_ = 0;
   unsigned sphere_vao_ = 0, sphere_vbo_ = 0, sphere_ebo_ = 0, node_instance_vbo_ = 0;
+  unsigned surface_vao_ = 0, surface_dynamic_vbo_ = 0, surface_static_vbo_ = 0;
   unsigned ground_vao_ = 0, ground_vbo_ = 0, sky_vao_ = 0;
   unsigned msaa_fbo_ = 0, msaa_color_ = 0, msaa_depth_ = 0;
+  unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
   int cylinder_index_count_ = 0;
   int sphere_index_count_ = 0;
 
-  std::vector<float> bar_instances_;   // (n_segments × 10) p0, p1, radius, colour
-  std::vector<float> node_instances_;  // (n_joints × 7) centre, radius, colour
+  // What upload_static last saw, so a list is uploaded once and a new one replaces it.
+  const DrawList* static_list_ = nullptr;
+  std::vector<unsigned> batch_ebos_;     // (n_batches)
+  std::vector<int> batch_index_counts_;  // (n_batches)
+  std::vector<unsigned> texture_ids_;    // (n_textures)
+
+  std::vector<float> bar_instances_;     // (n_segments × 10) p0, p1, radius, colour
+  std::vector<float> node_instances_;    // (n_joints × 7) centre, radius, colour
+  std::vector<float> surface_vertices_;  // (n_points × 6) position, normal
+  std::vector<Vec3f> point_normals_;     // (n_points)
 };
 
 }  // namespace dinam

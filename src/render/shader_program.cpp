@@ -33,9 +33,17 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-unsigned compile(GLenum kind, const std::string& file) {
+unsigned compile(GLenum kind, const std::string& file, const std::vector<std::string>& includes) {
   const std::filesystem::path path = find_shader(file);
-  const std::string source = read_text(path);
+  std::string source = read_text(path);
+  if (!includes.empty()) {
+    const std::size_t first_line_end = source.find('\n') + 1;
+    std::string spliced = source.substr(0, first_line_end);
+    for (const std::string& include : includes) {
+      spliced += read_text(find_shader(include)) + "\n";
+    }
+    source = spliced + source.substr(first_line_end);
+  }
   const GLuint shader = glCreateShader(kind);
   const char* text = source.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -83,11 +91,12 @@ std::filesystem::path find_shader(const std::string& file) {
       file, tried));
 }
 
-ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& fragment_file) {
-  const unsigned vertex = compile(GL_VERTEX_SHADER, vertex_file);
+ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& fragment_file,
+                             const std::vector<std::string>& fragment_includes) {
+  const unsigned vertex = compile(GL_VERTEX_SHADER, vertex_file, {});
   unsigned fragment = 0;
   try {
-    fragment = compile(GL_FRAGMENT_SHADER, fragment_file);
+    fragment = compile(GL_FRAGMENT_SHADER, fragment_file, fragment_includes);
   } catch (...) {
     glDeleteShader(vertex);
     throw;

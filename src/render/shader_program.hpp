@@ -18,7 +18,10 @@ std::filesystem::path find_shader(const std::string& file);
 class ShaderProgram {
  public:
   // Compiles and links the two files; throws RuntimeError naming the file and the GLSL log.
-  ShaderProgram(const std::string& vertex_file, const std::string& fragment_file);
+  // `fragment_includes` are spliced into the fragment shader after its #version line, in order
+  // (GLSL has no #include).
+  ShaderProgram(const std::string& vertex_file, const std::string& fragment_file,
+                const std::vector<std::string>& fragment_includes = {});
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;

@@ -19,6 +19,10 @@ void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& paren
     for (unsigned v = 0; v < ai_mesh->mNumVertices; ++v) {
       const aiVector3D p = world_from_node * ai_mesh->mVertices[v];
       mesh.vertices.emplace_back(p.x, p.y, p.z);
+      // Texture coordinates with v from the top of the picture (assimp's v runs up).
+      const aiVector3D uv =
+          ai_mesh->HasTextureCoords(0) ? ai_mesh->mTextureCoords[0][v] : aiVector3D(0, 0, 0);
+      mesh.uvs.emplace_back(uv.x, 1.0 - uv.y);
     }
     for (unsigned f = 0; f < ai_mesh->mNumFaces; ++f) {
       const aiFace& face = ai_mesh->mFaces[f];

@@ -13,6 +13,7 @@ struct RawMesh {
   std::vector<Vec3> vertices;             // (n_vertices), metres, in world space
   std::vector<std::vector<Index>> faces;  // closed loops of vertex ids: every side is an edge
   std::vector<std::vector<Index>> lines;  // open chains of vertex ids: every segment is an edge
+  std::vector<Eigen::Vector2d> uvs;  // (n_vertices) texture coordinates, v from the top; or empty
 
   bool has_edges() const;
 };

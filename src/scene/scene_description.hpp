@@ -69,6 +69,9 @@ struct VelocityGroupDesc {
   Vec3 velocity = Vec3::Zero();  // m/s
 };
 
+// How an object is drawn: its faces as a surface, its bars as wires, or both.
+enum class DrawStyle { kSurface, kWire, kBoth };
+
 struct ObjectDesc {
   std::string name;
   FileLoc loc;
@@ -83,14 +86,34 @@ struct ObjectDesc {
   AxialDampingDesc axial_damping;
   Vec3f color{0.8f, 0.8f, 0.8f};        // linear RGB in [0, 1]
   std::optional<double> render_radius;  // m; default: the wire radius, at least a visible minimum
+  DrawStyle style = DrawStyle::kWire;   // default: surface when the mesh has faces
+  std::filesystem::path texture;        // a PNG laid on the surface by the mesh uv; optional
 };
 
 struct CameraDesc {
+  // kFixed: position and look_at as given. kAuto: looks along `direction` at the motion's
+  // bounding box over every frame, just far enough to see all of it. kFollow: keeps `offset`
+  // from the centroid of `follow`'s nodes.
+  enum class Mode { kFixed, kAuto, kFollow };
+  Mode mode = Mode::kAuto;
   Vec3 position{4.0, -6.0, 3.0};  // m
   Vec3 look_at{0.0, 0.0, 1.0};    // m
   Vec3 up = kWorldUp;
-  double fov_degrees = 40.0;  // vertical field of view
+  double fov_degrees = 40.0;           // vertical
+  Vec3 direction{-0.55, 0.75, -0.36};  // auto: from the eye towards the scene
+  std::string follow;                  // follow: the object's name
+  Vec3 offset{3.0, -4.0, 1.5};         // follow: eye minus target, m
+  FileLoc loc;
 };
+
+// Picture quality, which trades against the time per frame.
+struct RenderQualityDesc {
+  int samples = 4;  // multisampled anti-aliasing; 1 turns it off
+  bool shadows = true;
+  int shadow_resolution = 2048;  // texels per side
+};
+
+enum class MovieFormat { kMp4, kGif, kNone };
 
 // A multiplier of time for a force: constant 1, a step at t0, a ramp from 0 at t0 to 1 at t1,
 // or a sine.
@@ -162,7 +185,10 @@ struct SceneDescription {
   CameraDesc camera;
   int image_width = 1280;
   int image_height = 720;
-  std::filesystem::path output;  // folder for frames and the movie
+  RenderQualityDesc quality;
+  Vec3 light_direction{0.35, -0.45, 0.82};  // towards the sun
+  std::filesystem::path output;             // folder for frames and the movie
+  MovieFormat movie = MovieFormat::kMp4;
 
   std::vector<ObjectDesc> objects;
 

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <system_error>
 
 #include "scene/mesh_generators.hpp"
 #include "scene/mesh_loader.hpp"
@@ -29,16 +30,40 @@ void require_positive(double value, const FileLoc& loc, const std::string& what,
   }
 }
 
-CameraDesc read_camera(YamlMap map) {
+CameraDesc read_camera(const YAML::Node& node, const std::string& file) {
   CameraDesc camera;
+  camera.loc = loc_of(node, file);
+  if (node.IsScalar() && node.Scalar() == "auto") {
+    camera.mode = CameraDesc::Mode::kAuto;
+    return camera;
+  }
+  YamlMap map(node, file, "camera");
+  const bool has_view = map.has("position") || map.has("look_at");
   camera.position = map.vec3("position", camera.position);
   camera.look_at = map.vec3("look_at", camera.look_at);
   camera.up = map.vec3("up", camera.up);
   camera.fov_degrees = map.number("fov", camera.fov_degrees);
+  camera.follow = map.string("follow", "");
+  const bool automatic = map.boolean("auto", false);
+  if (!camera.follow.empty()) {
+    camera.mode = CameraDesc::Mode::kFollow;
+    camera.offset = has_view ? Vec3(camera.position - camera.look_at) : camera.offset;
+    camera.offset = map.vec3("offset", camera.offset);
+  } else if (automatic || !has_view) {
+    camera.mode = CameraDesc::Mode::kAuto;
+    camera.direction = has_view ? Vec3(camera.look_at - camera.position) : camera.direction;
+    camera.direction = map.vec3("direction", camera.direction);
+  } else {
+    camera.mode = CameraDesc::Mode::kFixed;
+  }
   map.finish();
-  const Vec3 view = camera.look_at - camera.position;
+  const Vec3 view = camera.mode == CameraDesc::Mode::kFixed ? Vec3(camera.look_at - camera.position)
+                    : camera.mode == CameraDesc::Mode::kAuto ? camera.direction
+                                                             : Vec3(-camera.offset);
   if (view.norm() < 1e-9) {
-    throw_user_error(map.loc("look_at"), "'camera.look_at' must differ from 'camera.position'");
+    throw_user_error(map.loc(),
+                     "'camera': the line of sight is zero (look_at equals position, or "
+                     "a zero direction or offset)");
   }
   if (camera.up.norm() < 1e-9 || view.normalized().cross(camera.up.normalized()).norm() < 1e-6) {
     throw_user_error(map.loc("up"),
@@ -477,6 +502,31 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
                      map.path("color"));
   }
   object.color = color.cast<float>();
+  const std::string style = map.string("style", object.mesh.faces.empty() ? "wire" : "surface");
+  if (style == "surface") {
+    object.style = DrawStyle::kSurface;
+  } else if (style == "wire") {
+    object.style = DrawStyle::kWire;
+  } else if (style == "both") {
+    object.style = DrawStyle::kBoth;
+  } else {
+    throw_user_error(map.loc("style"), "'{}' must be surface, wire or both; got '{}'",
+                     map.path("style"), style);
+  }
+  if (object.style != DrawStyle::kWire && object.mesh.faces.empty()) {
+    throw_user_error(map.loc("style"), "'{}': object '{}' has no faces to draw as a surface",
+                     map.path("style"), object.name);
+  }
+  if (map.has("texture")) {
+    const std::filesystem::path texture = map.string("texture", "");
+    object.texture = texture.is_absolute() ? texture : scene_folder / texture;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(object.texture, ec)) {
+      throw_user_error(map.loc("texture"),
+                       "texture file '{}' not found; paths are relative to the scene file's folder",
+                       object.texture.string());
+    }
+  }
   if (map.has("render_radius")) {
     object.render_radius = map.number("render_radius", 0.0);
     require_positive(*object.render_radius, map.loc("render_radius"), map.path("render_radius"),
@@ -551,12 +601,25 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     scene.ground = read_ground(YamlMap(map.get("ground"), file, "ground"));
   }
   if (map.has("camera")) {
-    scene.camera = read_camera(YamlMap(map.get("camera"), file, "camera"));
+    scene.camera = read_camera(map.get("camera"), file);
   }
   if (map.has("image")) {
     YamlMap image(map.get("image"), file, "image");
     scene.image_width = image.integer("width", scene.image_width);
     scene.image_height = image.integer("height", scene.image_height);
+    scene.quality.samples = image.integer("samples", scene.quality.samples);
+    if (scene.quality.samples < 1 || scene.quality.samples > 16) {
+      throw_user_error(image.loc("samples"), "'image.samples' must be between 1 and 16, got {}",
+                       scene.quality.samples);
+    }
+    scene.quality.shadows = image.boolean("shadows", scene.quality.shadows);
+    scene.quality.shadow_resolution =
+        image.integer("shadow_resolution", scene.quality.shadow_resolution);
+    if (scene.quality.shadow_resolution < 64 || scene.quality.shadow_resolution > 8192) {
+      throw_user_error(image.loc("shadow_resolution"),
+                       "'image.shadow_resolution' must be between 64 and 8192, got {}",
+                       scene.quality.shadow_resolution);
+    }
     for (const char* key : {"width", "height"}) {
       const int n = std::string(key) == "width" ? scene.image_width : scene.image_height;
       if (n < 16 || n > 8192) {
@@ -567,6 +630,24 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     image.finish();
   }
   scene.output = map.string("output", "out/" + scene.name);
+  const std::string movie = map.string("movie", "mp4");
+  if (movie == "mp4") {
+    scene.movie = MovieFormat::kMp4;
+  } else if (movie == "gif") {
+    scene.movie = MovieFormat::kGif;
+  } else if (movie == "none") {
+    scene.movie = MovieFormat::kNone;
+  } else {
+    throw_user_error(map.loc("movie"), "'movie' must be mp4, gif or none; got '{}'", movie);
+  }
+  if (map.has("light")) {
+    YamlMap light(map.get("light"), file, "light");
+    scene.light_direction = light.required_vec3("direction");
+    if (scene.light_direction.norm() < 1e-9) {
+      throw_user_error(light.loc("direction"), "'light.direction' must be a non-zero direction");
+    }
+    light.finish();
+  }
 
   const YAML::Node objects = map.get("objects");
   if (!objects || !objects.IsSequence() || objects.size() == 0) {

@@ -1,4 +1,5 @@
-// Renderer tests that need no golden image: where a bar must appear follows from the camera.
+// Renderer tests that need no golden image: where things appear follows from the camera and the
+// light.
 #include "render/osmesa_renderer.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,9 @@ namespace {
 bool is_red(const std::uint8_t* p) {
   return p[0] > 120 && p[1] < 90 && p[2] < 90;
 }
+double brightness(const std::uint8_t* p) {
+  return (p[0] + p[1] + p[2]) / 3.0;
+}
 
 // One red bar along x, 2 m long, radius 0.05 m, 4 m in front of the camera, no ground.
 DrawList one_bar() {
@@ -24,27 +28,34 @@ DrawList one_bar() {
   list.point_radius = {0.0f, 0.0f};
   list.point_color = {Vec3f::Zero(), Vec3f::Zero()};
   list.ground_visible = false;
-  list.camera.position = Vec3f(0, -4, 1);
-  list.camera.look_at = Vec3f(0, 0, 1);
-  list.camera.fov_degrees = 40.0f;
+  list.shadows = false;
   list.light_direction = Vec3f(0, -1, 0.3f);  // from the camera's side: the bar is well lit
   return list;
+}
+
+RenderCamera front_camera() {
+  RenderCamera camera;
+  camera.position = Vec3f(0, -4, 1);
+  camera.look_at = Vec3f(0, 0, 1);
+  camera.fov_degrees = 40.0f;
+  return camera;
 }
 
 TEST(OsmesaRenderer, BarAppearsWhereTheCameraPutsItWithItsProjectedWidth) {
   const int width = 160;
   const int height = 120;
-  OsmesaRenderer renderer(width, height);
+  OsmesaRenderer renderer({width, height, 4, 0});
   const DrawList list = one_bar();
+  const RenderCamera camera = front_camera();
   const std::vector<Vec3f> positions = {Vec3f(-1, 0, 1), Vec3f(1, 0, 1)};
   Image image;
-  renderer.render(list, positions, image);
+  renderer.render(list, positions, camera, image);
   ASSERT_EQ(image.width, width);
   ASSERT_EQ(image.height, height);
 
   // The bar's ends project to these pixels; between them, at the centre column, the bar is red.
-  const Eigen::Vector2f left = pixel_from_world(list.camera, width, height, positions[0]);
-  const Eigen::Vector2f right = pixel_from_world(list.camera, width, height, positions[1]);
+  const Eigen::Vector2f left = pixel_from_world(camera, width, height, positions[0]);
+  const Eigen::Vector2f right = pixel_from_world(camera, width, height, positions[1]);
   const int row = static_cast<int>(std::lround(left.y()));
   EXPECT_TRUE(is_red(image.pixel(width / 2, row)));
   EXPECT_TRUE(is_red(image.pixel(static_cast<int>(left.x()) + 3, row)));
@@ -65,14 +76,108 @@ TEST(OsmesaRenderer, BarAppearsWhereTheCameraPutsItWithItsProjectedWidth) {
   EXPECT_FALSE(is_red(image.pixel(width - 1, height - 1)));
 }
 
+// A 1 m square facing the camera, textured with a red left half and a blue right half: each half
+// shows where the camera puts it, lit from either side.
+TEST(OsmesaRenderer, TexturedSurfaceShowsItsPictureWhereTheCameraPutsIt) {
+  const int width = 160;
+  const int height = 120;
+  OsmesaRenderer renderer({width, height, 4, 0});
+  DrawList list = one_bar();
+  list.segment_points.clear();
+  list.segment_radius.clear();
+  list.segment_color.clear();
+  list.point_radius.assign(4, 0.0f);
+  list.point_color.assign(4, Vec3f(0.5f, 0.5f, 0.5f));
+  list.point_uv = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};  // v from the top of the picture
+  Image texture(2, 1);
+  texture.rgba = {230, 20, 20, 255, 20, 20, 230, 255};
+  list.textures.push_back(texture);
+  list.surfaces.push_back({{0, 1, 2, 0, 2, 3}, 0});
+  const std::vector<Vec3f> positions = {Vec3f(-0.5f, 0, 0.5f), Vec3f(0.5f, 0, 0.5f),
+                                        Vec3f(0.5f, 0, 1.5f), Vec3f(-0.5f, 0, 1.5f)};
+  const RenderCamera camera = front_camera();
+  for (const Vec3f light : {Vec3f(0, -1, 0.3f), Vec3f(0, 1, 0.3f)}) {  // front-lit, back-lit
+    list.light_direction = light;
+    Image image;
+    renderer.render(list, positions, camera, image);
+    const Eigen::Vector2f left = pixel_from_world(camera, width, height, Vec3f(-0.25f, 0, 1));
+    const Eigen::Vector2f right = pixel_from_world(camera, width, height, Vec3f(0.25f, 0, 1));
+    const std::uint8_t* l = image.pixel(static_cast<int>(left.x()), static_cast<int>(left.y()));
+    const std::uint8_t* r = image.pixel(static_cast<int>(right.x()), static_cast<int>(right.y()));
+    EXPECT_GT(l[0], l[2] + 40) << "left half is red";
+    EXPECT_GT(r[2], r[0] + 40) << "right half is blue";
+  }
+}
+
+// A bar held above the ground under a light from straight above darkens the ground beneath it
+// (compared with the same pixel drawn without shadows), and only there.
+TEST(OsmesaRenderer, BarCastsAShadowOnTheGround) {
+  const int width = 160;
+  const int height = 120;
+  DrawList list = one_bar();
+  list.ground_visible = true;
+  list.ground_tile = 100.0f;  // one checker colour over the whole view
+  list.ground_half_size = 50.0f;
+  list.light_direction = Vec3f(0, 0, 1);
+  list.shadow_bounds_min = Vec3f(-1, -1, 0);
+  list.shadow_bounds_max = Vec3f(1, 1, 1);
+  const std::vector<Vec3f> positions = {Vec3f(-0.6f, 0, 0.5f), Vec3f(0.6f, 0, 0.5f)};
+  RenderCamera camera;
+  camera.position = Vec3f(0, -2.5f, 2.5f);
+  camera.look_at = Vec3f(0, 0, 0);
+  const Eigen::Vector2f under = pixel_from_world(camera, width, height, Vec3f(0, 0, 0));
+  const Eigen::Vector2f beside = pixel_from_world(camera, width, height, Vec3f(0, 0.5f, 0));
+  auto ground_brightness = [&](bool shadows, const Eigen::Vector2f& at) {
+    list.shadows = shadows;
+    OsmesaRenderer renderer({width, height, 1, shadows ? 1024 : 0});
+    Image image;
+    renderer.render(list, positions, camera, image);
+    return brightness(image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y())));
+  };
+  EXPECT_LT(ground_brightness(true, under), 0.8 * ground_brightness(false, under));
+  EXPECT_NEAR(ground_brightness(true, beside), ground_brightness(false, beside), 2.0);
+}
+
+// Light from +x at 45°: a bar at height 0.5 above x = 0 shadows the ground at x = −0.5, not at
+// x = +0.5 (a mirrored shadow map would do the opposite).
+TEST(OsmesaRenderer, ShadowFallsAwayFromTheLight) {
+  const int width = 160;
+  const int height = 120;
+  DrawList list = one_bar();
+  list.ground_visible = true;
+  list.ground_tile = 100.0f;
+  list.ground_half_size = 50.0f;
+  list.light_direction = Vec3f(1, 0, 1);
+  list.shadow_bounds_min = Vec3f(-1, -1, 0);
+  list.shadow_bounds_max = Vec3f(1, 1, 1);
+  const std::vector<Vec3f> positions = {Vec3f(0, -0.6f, 0.5f), Vec3f(0, 0.6f, 0.5f)};
+  RenderCamera camera;
+  camera.position = Vec3f(0, -2.5f, 2.5f);
+  camera.look_at = Vec3f(0, 0, 0);
+  auto brightness_at = [&](bool shadows, const Vec3f& world) {
+    list.shadows = shadows;
+    OsmesaRenderer renderer({width, height, 1, shadows ? 1024 : 0});
+    Image image;
+    renderer.render(list, positions, camera, image);
+    const Eigen::Vector2f at = pixel_from_world(camera, width, height, world);
+    return brightness(image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y())));
+  };
+  const Vec3f away(-0.5f, 0, 0);
+  const Vec3f towards(0.5f, 0, 0);
+  EXPECT_LT(brightness_at(true, away), 0.8 * brightness_at(false, away));
+  EXPECT_NEAR(brightness_at(true, towards), brightness_at(false, towards), 2.0);
+}
+
 TEST(OsmesaRenderer, SameInputGivesTheSamePixels) {
-  OsmesaRenderer renderer(96, 64);
-  const DrawList list = one_bar();
+  OsmesaRenderer renderer({96, 64, 4, 512});
+  DrawList list = one_bar();
+  list.ground_visible = true;
+  list.shadows = true;
   const std::vector<Vec3f> positions = {Vec3f(-1, 0, 1.2f), Vec3f(1, 0.5f, 0.8f)};
   Image first;
   Image second;
-  renderer.render(list, positions, first);
-  renderer.render(list, positions, second);
+  renderer.render(list, positions, front_camera(), first);
+  renderer.render(list, positions, front_camera(), second);
   EXPECT_EQ(first.rgba, second.rgba);
 }
 
