@@ -19,6 +19,31 @@ namespace dinam {
 
 std::vector<std::string> ffmpeg_arguments(const MovieRequest& request,
                                           const std::filesystem::path& partial_output) {
+  if (request.gif) {
+    // One palette from all frames, then an ordered (Bayer) dither: unlike error diffusion it
+    // depends on nothing but the pixel, so the same frames always give the same file.
+    return {"ffmpeg",
+            "-nostdin",
+            "-y",
+            "-loglevel",
+            "error",
+            "-framerate",
+            fmt::format("{}", request.fps),
+            "-start_number",
+            std::to_string(request.first_frame_number),
+            "-i",
+            request.frame_pattern.string(),
+            "-frames:v",
+            std::to_string(request.frame_count),
+            "-filter_complex",
+            "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=bayer:"
+            "bayer_scale=3",
+            "-loop",
+            "0",
+            "-f",
+            "gif",
+            partial_output.string()};
+  }
   return {
       "ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate",
       fmt::format("{}", request.fps), "-start_number", std::to_string(request.first_frame_number),

@@ -12,6 +12,9 @@ RawMesh make_grid(const GridSpec& spec) {
     for (int column = 0; column <= spec.columns; ++column) {
       mesh.vertices.emplace_back(spec.width * column / spec.columns, spec.height * row / spec.rows,
                                  0.0);
+      // u along x; v from the top (row = rows) down, as a picture is laid on the grid.
+      mesh.uvs.emplace_back(static_cast<double>(column) / spec.columns,
+                            1.0 - static_cast<double>(row) / spec.rows);
     }
   }
   for (int row = 0; row < spec.rows; ++row) {

@@ -673,6 +673,11 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
           read_field(YamlMap(fields[i], file, fmt::format("forces[{}]", i)), scene.objects));
     }
   }
+  if (scene.camera.mode == CameraDesc::Mode::kFollow &&
+      find_object(scene.objects, scene.camera.follow) == nullptr) {
+    throw_user_error(scene.camera.loc, "'camera.follow' names '{}', which is no object",
+                     scene.camera.follow);
+  }
   if (map.has("wind")) {
     scene.wind = read_wind(YamlMap(map.get("wind"), file, "wind"));
     for (const std::string& name : scene.wind.objects) {

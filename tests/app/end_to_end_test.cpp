@@ -104,7 +104,7 @@ TEST_F(EndToEnd, TinySceneGivesThreeFramesOfTheRequestedSizeAndAMovie) {
 TEST_F(EndToEnd, FrameRangeWritesOnlyThoseFrames) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
   const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
-                                         "' --size 64x48 --frames 2-3 --no-video --quiet"));
+                                         "' --size 64x48 --frames 2-3 --movie none --quiet"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_EQ(result.output, "");  // --quiet
   EXPECT_FALSE(std::filesystem::exists(out() / "frame_0001.png"));
@@ -132,6 +132,60 @@ TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
     EXPECT_NEAR(total, totals.front(), 1e-3 * std::abs(totals.front()));
   }
   EXPECT_FALSE(std::filesystem::exists(out() / "energy.csv.tmp"));
+}
+
+TEST_F(EndToEnd, SameSceneRendersToByteIdenticalFramesTwice) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  for (const char* folder : {"first", "second"}) {
+    const CommandResult result =
+        run(dinam("render '" + scene.string() + "' -o '" + (folder_.path() / folder).string() +
+                  "' --size 96x64 --movie gif -q"));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+  }
+  auto bytes = [](const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  for (const char* name : {"frame_0001.png", "frame_0002.png", "frame_0003.png", "tiny.gif"}) {
+    const std::string first = bytes(folder_.path() / "first" / name);
+    ASSERT_FALSE(first.empty()) << name;
+    EXPECT_EQ(first, bytes(folder_.path() / "second" / name)) << name;
+  }
+  // The GIF is a real three-frame GIF.
+  const CommandResult probe =
+      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+          "stream=codec_name,nb_read_frames -of csv=p=0 '" +
+          (folder_.path() / "first" / "tiny.gif").string() + "'");
+  EXPECT_EQ(probe.output, "gif,3\n");
+}
+
+TEST_F(EndToEnd, SnapshotFailsWithoutGoldenUpdatesThenCatchesAChange) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const std::string golden = (folder_.path() / "golden").string();
+  const std::string snapshot = "snapshot '" + scene.string() + "' --golden '" + golden +
+                               "' --frames 1,3 --size 160x90 -o '" + out().string() + "'";
+  // No golden yet: it fails and says how to make one.
+  CommandResult result = run(dinam(snapshot));
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.output.find("--update"), std::string::npos) << result.output;
+  // --update writes them; then the same scene matches.
+  result = run(dinam(snapshot + " --update"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(folder_.path() / "golden" / "tiny_0001.png"));
+  EXPECT_TRUE(std::filesystem::exists(folder_.path() / "golden" / "tiny_0003.png"));
+  result = run(dinam(snapshot));
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  // A visibly changed scene (the rope's colour) fails, with the three images written.
+  std::string changed = kTinyScene;
+  changed.replace(changed.find("color: [0.1, 0.9, 0.1]"), 22, "color: [0.9, 0.1, 0.9]");
+  write_scene("tiny.yaml", changed);
+  result = run(dinam(snapshot));
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("DIFFERS"), std::string::npos) << result.output;
+  for (const char* name : {"tiny_0003_actual.png", "tiny_0003_expected.png", "tiny_0003_diff.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(out() / name)) << name;
+    EXPECT_NE(result.output.find((out() / name).string()), std::string::npos) << name;
+  }
 }
 
 TEST_F(EndToEnd, BadSceneExitsTwoNamingFileLineAndKeyAndWritesNothing) {

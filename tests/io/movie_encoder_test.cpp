@@ -32,6 +32,18 @@ TEST(MovieEncoder, AsksForH264InYuv420pAtTheSceneRate) {
   EXPECT_EQ(arguments.back(), "out/demo.mp4.part");
 }
 
+TEST(MovieEncoder, GifUsesOnePaletteAndAnOrderedDither) {
+  MovieRequest request{"out/frame_%04d.png", 1, 20, 25.0, "out/demo.gif", true};
+  const std::vector<std::string> arguments = ffmpeg_arguments(request, "out/demo.gif.part");
+  EXPECT_TRUE(has(arguments, "-f", "gif"));
+  bool ordered = false;
+  for (const std::string& argument : arguments) {
+    ordered = ordered || (argument.find("palettegen") != std::string::npos &&
+                          argument.find("dither=bayer") != std::string::npos);
+  }
+  EXPECT_TRUE(ordered);
+}
+
 // Restores PATH when the test ends, whatever happens.
 class PathOverride {
  public:

@@ -1,0 +1,124 @@
+// The pipeline without OpenGL: a recording Renderer shows what would be drawn, from which camera.
+#include "app/frame_source.hpp"
+
+#include <gtest/gtest.h>
+
+#include "app/draw_list_from_model.hpp"
+#include "dynamics/stability.hpp"
+#include "model/model.hpp"
+#include "render/camera.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+class RecordingRenderer final : public Renderer {
+ public:
+  struct Call {
+    std::vector<Vec3f> positions;
+    RenderCamera camera;
+  };
+  void render(const DrawList& list, const std::vector<Vec3f>& positions,
+              const RenderCamera& camera, Image& image) override {
+    calls.push_back({positions, camera});
+    lists.push_back(&list);
+    image = Image(4, 4);
+  }
+  std::vector<Call> calls;
+  std::vector<const DrawList*> lists;
+};
+
+// A swinging cloth and a pinned pole: 12 frames.
+std::string scene_text(const std::string& camera) {
+  return R"(version: 1
+duration: 0.6
+fps: 20
+image: {width: 320, height: 180}
+)" + camera + R"(
+objects:
+  - name: pole
+    mesh: {polyline: {points: [[0, 0, 0], [0, 0, 2]], segments: 2}}
+    material: {density: 7800, youngs_modulus: 2e11, radius: 0.02}
+    pinned: {all: true}
+  - name: cloth
+    mesh: {grid: {width: 1, height: 0.6, columns: 4, rows: 3, diagonals: none}, rotation: [90, 0, 0], translation: [0, 0, 1.4]}
+    material: {density: 1200, youngs_modulus: 2e7, radius: 0.001}
+    pinned: {box: {min: [-0.01, -0.01, 1.39], max: [0.01, 0.01, 2.01]}}
+)";
+}
+
+struct Pipeline {
+  SceneDescription scene;
+  Model model;
+  SimulatedFrames frames;
+  std::vector<RenderCamera> cameras;
+};
+
+Pipeline run(const std::string& camera) {
+  Pipeline p{test::scene_from_yaml(scene_text(camera)), {}, {}, {}};
+  p.model = build_model(p.scene);
+  const TimeStep timestep = choose_timestep(p.model, std::nullopt, p.scene.fps, {});
+  p.frames = simulate_frames(p.model, timestep, p.scene.frame_count(), false);
+  p.cameras = frame_cameras(p.scene, p.model, p.frames);
+  return p;
+}
+
+TEST(FrameSource, DrawsEachChosenFrameOnceWithItsPositions) {
+  const Pipeline p = run("camera: auto");
+  const DrawList list = make_draw_list(p.scene, p.model, motion_bounds(p.frames.positions));
+  RecordingRenderer renderer;
+  std::vector<int> written;
+  draw_frames(renderer, list, p.frames, p.cameras, 3, 7,
+              [&](int frame, const Image&) { written.push_back(frame); });
+  EXPECT_EQ(written, (std::vector<int>{3, 4, 5, 6, 7}));
+  ASSERT_EQ(renderer.calls.size(), 5u);
+  EXPECT_EQ(renderer.calls[0].positions, p.frames.positions[2]);
+  EXPECT_NE(renderer.calls[4].positions, renderer.calls[0].positions);  // the cloth moved
+}
+
+TEST(FrameSource, AutoCameraKeepsStillAndSeesEveryPointOfEveryFrame) {
+  const Pipeline p = run("camera: auto");
+  for (const RenderCamera& camera : p.cameras) {
+    EXPECT_EQ(camera.position, p.cameras.front().position);  // the view does not jump
+  }
+  for (const auto& positions : p.frames.positions) {
+    for (const Vec3f& x : positions) {
+      const Eigen::Vector2f pixel = pixel_from_world(p.cameras.front(), 320, 180, x);
+      EXPECT_GE(pixel.x(), 0.0f);
+      EXPECT_LE(pixel.x(), 320.0f);
+      EXPECT_GE(pixel.y(), 0.0f);
+      EXPECT_LE(pixel.y(), 180.0f);
+    }
+  }
+}
+
+TEST(FrameSource, FollowCameraKeepsItsOffsetFromTheObject) {
+  const Pipeline p = run("camera: {follow: cloth, offset: [2, -3, 1]}");
+  for (std::size_t k = 0; k < p.cameras.size(); ++k) {
+    Vec3f centroid = Vec3f::Zero();
+    const ModelObject& cloth = p.model.objects[1];
+    for (Index i = 0; i < cloth.node_count; ++i) {
+      centroid += p.frames.positions[k][cloth.first_node + i];
+    }
+    centroid /= static_cast<float>(cloth.node_count);
+    EXPECT_TRUE(p.cameras[k].look_at.isApprox(centroid, 1e-5f));
+    EXPECT_TRUE((p.cameras[k].position - p.cameras[k].look_at).isApprox(Vec3f(2, -3, 1), 1e-5f));
+  }
+}
+
+TEST(DrawListFromModel, SurfacesReplaceBarsForClothAndColoursFollowObjects) {
+  const Pipeline p = run("camera: auto");
+  const DrawList list = make_draw_list(p.scene, p.model, motion_bounds(p.frames.positions));
+  // The pole is drawn as wires (2 bars); the cloth (12 quads) as one surface of 24 triangles.
+  EXPECT_EQ(list.segment_radius.size(), 2u);
+  ASSERT_EQ(list.surfaces.size(), 1u);
+  EXPECT_EQ(list.surfaces[0].triangles.size(), 24u * 3u);
+  EXPECT_EQ(list.surfaces[0].texture, -1);
+  // The shadow map's box holds every point of every frame.
+  const Bounds motion = motion_bounds(p.frames.positions);
+  EXPECT_TRUE((list.shadow_bounds_min.array() <= motion.min.array()).all());
+  EXPECT_TRUE((list.shadow_bounds_max.array() >= motion.max.array()).all());
+}
+
+}  // namespace
+}  // namespace dinam
