@@ -6,14 +6,18 @@ in vec2 plane_position;
 
 uniform vec3 plane_normal;
 uniform float fade_distance;  // m; fully faded at this distance from the eye
-uniform float tile_size;
+uniform float tile_size;  // m; 0 for a plain ground
 uniform vec3 horizon_color;  // linear RGB
 
 out vec4 out_color;
 
 void main() {
-  vec2 cell = floor(plane_position / tile_size);
-  float checker = mod(cell.x + cell.y, 2.0);
+  // tile_size 0 asks for a plain ground.
+  float checker = 0.5;
+  if (tile_size > 0.0) {
+    vec2 cell = floor(plane_position / tile_size);
+    checker = mod(cell.x + cell.y, 2.0);
+  }
   vec3 albedo = mix(vec3(0.50, 0.48, 0.45), vec3(0.60, 0.58, 0.54), checker);
   vec3 color = shade(albedo, plane_normal, world_position);
   float fade = smoothstep(0.15 * fade_distance, fade_distance, length(world_position - eye_position));

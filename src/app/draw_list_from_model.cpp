@@ -53,7 +53,9 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
   list.point_uv = model.node_uv;
   for (Index i = 0; i < model.node_count(); ++i) {
     const Index object = model.node_object[i];
-    list.point_radius[i] = object_wire[object] ? object_radius[object] : 0.0f;
+    const bool joint =
+        object_wire[object] && scene.objects[static_cast<std::size_t>(object)].joints;
+    list.point_radius[i] = joint ? object_radius[object] : 0.0f;
     list.point_color[i] = model.objects[object].color;
   }
   for (Index b = 0; b < model.bar_count(); ++b) {
@@ -101,6 +103,7 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
   const Vec3 center = motion.center().cast<double>();
   const Vec3& normal = scene.ground.normal;
   list.ground_visible = scene.ground.visible;
+  list.ground_checker = scene.ground.checker;
   list.ground_center = (center - (center - scene.ground.point).dot(normal) * normal).cast<float>();
   list.ground_normal = normal.cast<float>();
   list.ground_half_size = static_cast<float>(std::max(30.0 * extent, 50.0));

@@ -33,6 +33,7 @@ struct DrawList {
   std::vector<Image> textures;  // sRGB-encoded RGBA, as read from PNG files
 
   bool ground_visible = true;
+  bool ground_checker = true;            // a checkerboard, else one plain colour
   Vec3f ground_center = Vec3f::Zero();   // m, a point of the ground plane under the scene
   Vec3f ground_normal = Vec3f::UnitZ();  // unit
   float ground_half_size = 10.0f;  // m; the checker fades out towards this distance from the eye

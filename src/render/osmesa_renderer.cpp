@@ -435,7 +435,7 @@ void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& posi
     set_vec3(ground.uniform("plane_normal"), normal);
     glUniform1f(ground.uniform("half_size"), list.ground_half_size);
     glUniform1f(ground.uniform("fade_distance"), 0.9f * list.ground_half_size);
-    glUniform1f(ground.uniform("tile_size"), list.ground_tile);
+    glUniform1f(ground.uniform("tile_size"), list.ground_checker ? list.ground_tile : 0.0f);
     set_vec3(ground.uniform("horizon_color"), kHorizonColor);
     set_vec3(ground.uniform("light_direction"), list.light_direction.normalized());
     set_vec3(ground.uniform("eye_position"), camera.position);

@@ -1,5 +1,6 @@
 #include "scene/mesh_loader.hpp"
 
+#include <assimp/material.h>
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
@@ -63,6 +64,17 @@ RawMesh load_mesh_file(const std::filesystem::path& path, const FileLoc& where) 
                      importer.GetErrorString());
   }
   RawMesh mesh;
+  // A diffuse texture named by the first material that has one, as a PNG file beside the mesh.
+  for (unsigned m = 0; m < scene->mNumMaterials && mesh.texture.empty(); ++m) {
+    aiString name;
+    if (scene->mMaterials[m]->GetTexture(aiTextureType_DIFFUSE, 0, &name) == AI_SUCCESS &&
+        name.length > 0 && name.C_Str()[0] != '*') {  // '*n' names a texture embedded in the file
+      const std::filesystem::path texture = path.parent_path() / name.C_Str();
+      if (std::filesystem::is_regular_file(texture, ec) && texture.extension() == ".png") {
+        mesh.texture = texture;
+      }
+    }
+  }
   if (scene->mRootNode != nullptr) {
     add_node(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
   }

@@ -2,6 +2,7 @@
 // A mesh as read from a file or made by a generator, before it becomes a structure: vertices,
 // closed polygon faces and open polylines. Vertices are not yet welded, so a triangle soup may
 // hold the same point many times; model/ welds them and extracts the unique edges.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct RawMesh {
   std::vector<Vec3> vertices;             // (n_vertices), metres, in world space
   std::vector<std::vector<Index>> faces;  // closed loops of vertex ids: every side is an edge
   std::vector<std::vector<Index>> lines;  // open chains of vertex ids: every segment is an edge
+  std::filesystem::path texture;     // the diffuse texture a mesh file's material names, if any
   std::vector<Eigen::Vector2d> uvs;  // (n_vertices) texture coordinates, v from the top; or empty
 
   bool has_edges() const;

@@ -87,6 +87,7 @@ struct ObjectDesc {
   Vec3f color{0.8f, 0.8f, 0.8f};        // linear RGB in [0, 1]
   std::optional<double> render_radius;  // m; default: the wire radius, at least a visible minimum
   DrawStyle style = DrawStyle::kWire;   // default: surface when the mesh has faces
+  bool joints = true;                   // spheres at the nodes of wires, so bars meet smoothly
   std::filesystem::path texture;        // a PNG laid on the surface by the mesh uv; optional
 };
 
@@ -157,6 +158,7 @@ struct GroundDesc {
   Vec3 point = Vec3::Zero();  // m, a point of the plane
   Vec3 normal = kWorldUp;     // unit, pointing out of the ground
   bool visible = true;
+  bool checker = true;  // a checkerboard, or plain
   bool contact = true;
   // Penalty stiffness per node: empty for auto (a contact frequency half the model's highest).
   std::optional<double> stiffness;  // N/m

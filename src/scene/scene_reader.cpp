@@ -92,6 +92,12 @@ GroundDesc read_ground(YamlMap map) {
   }
   ground.normal.normalize();
   ground.visible = map.boolean("visible", ground.visible);
+  const std::string pattern = map.string("pattern", "checker");
+  if (pattern != "checker" && pattern != "plain") {
+    throw_user_error(map.loc("pattern"), "'ground.pattern' must be checker or plain; got '{}'",
+                     pattern);
+  }
+  ground.checker = pattern == "checker";
   ground.contact = map.boolean("contact", ground.contact);
   if (const YAML::Node stiffness = map.get("stiffness");
       stiffness && !(stiffness.IsScalar() && stiffness.Scalar() == "auto")) {
@@ -516,6 +522,10 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   if (object.style != DrawStyle::kWire && object.mesh.faces.empty()) {
     throw_user_error(map.loc("style"), "'{}': object '{}' has no faces to draw as a surface",
                      map.path("style"), object.name);
+  }
+  object.joints = map.boolean("joints", object.joints);
+  if (!map.has("texture") && !object.mesh.texture.empty()) {
+    object.texture = object.mesh.texture;  // the mesh file's own material
   }
   if (map.has("texture")) {
     const std::filesystem::path texture = map.string("texture", "");

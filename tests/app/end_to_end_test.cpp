@@ -182,7 +182,8 @@ TEST_F(EndToEnd, SnapshotFailsWithoutGoldenUpdatesThenCatchesAChange) {
   result = run(dinam(snapshot));
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_NE(result.output.find("DIFFERS"), std::string::npos) << result.output;
-  for (const char* name : {"tiny_0003_actual.png", "tiny_0003_expected.png", "tiny_0003_diff.png"}) {
+  for (const char* name :
+       {"tiny_0003_actual.png", "tiny_0003_expected.png", "tiny_0003_diff.png"}) {
     EXPECT_TRUE(std::filesystem::exists(out() / name)) << name;
     EXPECT_NE(result.output.find((out() / name).string()), std::string::npos) << name;
   }

@@ -18,8 +18,8 @@ class RecordingRenderer final : public Renderer {
     std::vector<Vec3f> positions;
     RenderCamera camera;
   };
-  void render(const DrawList& list, const std::vector<Vec3f>& positions,
-              const RenderCamera& camera, Image& image) override {
+  void render(const DrawList& list, const std::vector<Vec3f>& positions, const RenderCamera& camera,
+              Image& image) override {
     calls.push_back({positions, camera});
     lists.push_back(&list);
     image = Image(4, 4);
@@ -34,7 +34,8 @@ std::string scene_text(const std::string& camera) {
 duration: 0.6
 fps: 20
 image: {width: 320, height: 180}
-)" + camera + R"(
+)" + camera +
+         R"(
 objects:
   - name: pole
     mesh: {polyline: {points: [[0, 0, 0], [0, 0, 2]], segments: 2}}

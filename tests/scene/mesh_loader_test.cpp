@@ -67,6 +67,27 @@ TEST(MeshLoader, GltfPyramidKeepsItsNodeTransform) {
   EXPECT_DOUBLE_EQ(lowest, 2.0);  // the glTF node's translation (0, 0, 2) was applied
 }
 
+TEST(MeshLoader, MaterialTextureAndTextureCoordinatesComeFromTheFile) {
+  const RawMesh mesh = load_mesh_file(test::data_dir() / "textured_quad.obj", {});
+  EXPECT_EQ(mesh.texture, test::data_dir() / "quad.png");
+  ASSERT_EQ(mesh.uvs.size(), mesh.vertices.size());
+  // v is flipped to run from the top of the picture: the vertex at (0, 0) has vt (0, 0) → (0, 1).
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (mesh.vertices[v].isZero()) {
+      EXPECT_TRUE(mesh.uvs[v].isApprox(Eigen::Vector2d(0, 1))) << mesh.uvs[v].transpose();
+    }
+  }
+  // A scene that names no texture takes the file's.
+  const SceneDescription scene = test::scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - mesh: {file: textured_quad.obj}
+    material: {density: 1, youngs_modulus: 1, radius: 0.1}
+)");
+  EXPECT_EQ(scene.objects[0].texture, test::data_dir() / "quad.png");
+  EXPECT_EQ(scene.objects[0].style, DrawStyle::kSurface);
+}
+
 TEST(MeshLoader, ZeroLengthEdgeIsAnErrorNamingTheVertices) {
   test::expect_user_error([] { model_of_file("degenerate.obj"); }, 4,
                           {"zero length", "vertices 1 and 2"});

@@ -159,17 +159,19 @@ objects:
     material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}
 )";
   SceneDescription scene = scene_from_yaml(base);
-  EXPECT_EQ(scene.camera.mode, CameraDesc::Mode::kAuto);  // no camera: frame the motion
+  EXPECT_EQ(scene.camera.mode, CameraDesc::Mode::kAuto);   // no camera: frame the motion
   EXPECT_EQ(scene.objects[0].style, DrawStyle::kSurface);  // it has faces
   EXPECT_EQ(scene.movie, MovieFormat::kMp4);
-  scene = scene_from_yaml(base + "camera: {position: [0, -5, 1], look_at: [0, 0, 1]}\nmovie: gif\n");
+  scene =
+      scene_from_yaml(base + "camera: {position: [0, -5, 1], look_at: [0, 0, 1]}\nmovie: gif\n");
   EXPECT_EQ(scene.camera.mode, CameraDesc::Mode::kFixed);
   EXPECT_EQ(scene.movie, MovieFormat::kGif);
   scene = scene_from_yaml(base + "camera: {follow: cube, offset: [1, -4, 2], fov: 30}\n");
   EXPECT_EQ(scene.camera.mode, CameraDesc::Mode::kFollow);
   EXPECT_TRUE(scene.camera.offset.isApprox(Vec3(1, -4, 2)));
-  scene = scene_from_yaml(base + "camera: {auto: true, direction: [0, 1, -0.2]}\n"
-                                 "image: {samples: 1, shadows: false}\n");
+  scene = scene_from_yaml(base +
+                          "camera: {auto: true, direction: [0, 1, -0.2]}\n"
+                          "image: {samples: 1, shadows: false}\n");
   EXPECT_EQ(scene.camera.mode, CameraDesc::Mode::kAuto);
   EXPECT_EQ(scene.quality.samples, 1);
   EXPECT_FALSE(scene.quality.shadows);
@@ -182,9 +184,10 @@ objects:
   expect_user_error([&] { scene_from_yaml(textured); }, 7, {"texture file", "no_such.png"});
   expect_user_error(
       [&] {
-        scene_from_yaml("version: 1\nduration: 1\nobjects:\n  - mesh: {file: rope.obj}\n"
-                        "    material: {density: 1, youngs_modulus: 1, radius: 0.1}\n"
-                        "    style: surface\n");
+        scene_from_yaml(
+            "version: 1\nduration: 1\nobjects:\n  - mesh: {file: rope.obj}\n"
+            "    material: {density: 1, youngs_modulus: 1, radius: 0.1}\n"
+            "    style: surface\n");
       },
       6, {"no faces to draw as a surface"});
 }
