@@ -91,7 +91,8 @@ double measured_first_frequency(int segments) {
     previous = z;
   });
   EXPECT_GE(crossings.size(), 5u);
-  return 2 * std::numbers::pi * (crossings.size() - 1) / (crossings.back() - crossings.front());
+  const auto periods = static_cast<double>(crossings.size() - 1);
+  return 2 * std::numbers::pi * periods / (crossings.back() - crossings.front());
 }
 
 TEST(Cantilever, FirstFrequencyConvergesToEulerBernoulli) {

@@ -96,7 +96,7 @@ TEST(OsmesaRenderer, TexturedSurfaceShowsItsPictureWhereTheCameraPutsIt) {
   const std::vector<Vec3f> positions = {Vec3f(-0.5f, 0, 0.5f), Vec3f(0.5f, 0, 0.5f),
                                         Vec3f(0.5f, 0, 1.5f), Vec3f(-0.5f, 0, 1.5f)};
   const RenderCamera camera = front_camera();
-  for (const Vec3f light : {Vec3f(0, -1, 0.3f), Vec3f(0, 1, 0.3f)}) {  // front-lit, back-lit
+  for (const Vec3f& light : {Vec3f(0, -1, 0.3f), Vec3f(0, 1, 0.3f)}) {  // front-lit, back-lit
     list.light_direction = light;
     Image image;
     renderer.render(list, positions, camera, image);
