@@ -19,38 +19,34 @@ namespace dinam {
 
 std::vector<std::string> ffmpeg_arguments(const MovieRequest& request,
                                           const std::filesystem::path& partial_output) {
+  std::vector<std::string> arguments = {"ffmpeg",
+                                        "-nostdin",
+                                        "-y",
+                                        "-loglevel",
+                                        "error",
+                                        "-framerate",
+                                        fmt::format("{}", request.fps),
+                                        "-start_number",
+                                        std::to_string(request.first_frame_number),
+                                        "-i",
+                                        request.frame_pattern.string(),
+                                        "-frames:v",
+                                        std::to_string(request.frame_count)};
   if (request.gif) {
     // One palette from all frames, then an ordered (Bayer) dither: unlike error diffusion it
     // depends on nothing but the pixel, so the same frames always give the same file.
-    return {"ffmpeg",
-            "-nostdin",
-            "-y",
-            "-loglevel",
-            "error",
-            "-framerate",
-            fmt::format("{}", request.fps),
-            "-start_number",
-            std::to_string(request.first_frame_number),
-            "-i",
-            request.frame_pattern.string(),
-            "-frames:v",
-            std::to_string(request.frame_count),
-            "-filter_complex",
-            "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=bayer:"
-            "bayer_scale=3",
-            "-loop",
-            "0",
-            "-f",
-            "gif",
-            partial_output.string()};
+    const std::string palette_filter =
+        "split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=bayer:bayer_scale=3";
+    arguments.insert(arguments.end(),
+                     {"-filter_complex", palette_filter, "-loop", "0", "-f", "gif"});
+  } else {
+    // H.264 in yuv420p needs even dimensions; pad an odd one by a pixel.
+    arguments.insert(arguments.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
+                                       "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p",
+                                       "-movflags", "+faststart", "-f", "mp4"});
   }
-  return {
-      "ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate",
-      fmt::format("{}", request.fps), "-start_number", std::to_string(request.first_frame_number),
-      "-i", request.frame_pattern.string(), "-frames:v", std::to_string(request.frame_count),
-      // H.264 in yuv420p needs even dimensions; pad an odd one by a pixel.
-      "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-preset", "veryfast", "-crf",
-      "18", "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4", partial_output.string()};
+  arguments.push_back(partial_output.string());
+  return arguments;
 }
 
 MovieOutcome encode_movie(const MovieRequest& request) {

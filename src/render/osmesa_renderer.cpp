@@ -91,7 +91,7 @@ Mat4f light_clip_from_world(const DrawList& list, Mat4f& light_from_world) {
   ortho(1, 1) = 1.0f / radius;
   ortho(2, 2) = -1.0f / radius;
   ortho(2, 3) = -2.0f;
-  const Mat4f clip = ortho * eye_from_world(light);
+  Mat4f clip = ortho * eye_from_world(light);
   Mat4f to_unit = Mat4f::Identity();
   to_unit.topLeftCorner<3, 3>() *= 0.5f;
   to_unit.topRightCorner<3, 1>().setConstant(0.5f);
