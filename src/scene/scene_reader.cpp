@@ -4,6 +4,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -534,6 +536,14 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
     if (!std::filesystem::is_regular_file(object.texture, ec)) {
       throw_user_error(map.loc("texture"),
                        "texture file '{}' not found; paths are relative to the scene file's folder",
+                       object.texture.string());
+    }
+    // Only PNG is read: check its signature now, so a wrong file is a scene error at this line.
+    std::ifstream in(object.texture, std::ios::binary);
+    std::array<char, 8> signature{};
+    in.read(signature.data(), signature.size());
+    if (!in || std::memcmp(signature.data(), "\x89PNG\r\n\x1a\n", 8) != 0) {
+      throw_user_error(map.loc("texture"), "texture file '{}' is not a PNG image",
                        object.texture.string());
     }
   }

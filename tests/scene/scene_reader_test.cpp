@@ -182,6 +182,9 @@ objects:
   std::string textured = base;
   textured += "    texture: no_such.png\n";
   expect_user_error([&] { scene_from_yaml(textured); }, 7, {"texture file", "no_such.png"});
+  std::string not_png = base;
+  not_png += "    texture: cube.obj\n";
+  expect_user_error([&] { scene_from_yaml(not_png); }, 7, {"cube.obj", "is not a PNG image"});
   expect_user_error(
       [&] {
         scene_from_yaml(
