@@ -250,14 +250,5 @@ TEST_F(EndToEnd, InfoPrintsTheModelSummary) {
   }
 }
 
-TEST(ShippedScenes, FlagIsA120FrameSixSecondScene) {
-  const SceneDescription scene =
-      read_scene(std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/flag.yaml");
-  EXPECT_EQ(scene.frame_count(), 120);
-  EXPECT_DOUBLE_EQ(scene.frame_count() / scene.fps, 6.0);
-  EXPECT_EQ(scene.image_width, 1280);
-  EXPECT_EQ(scene.image_height, 720);
-}
-
 }  // namespace
 }  // namespace dinam
