@@ -106,12 +106,15 @@ int run_render(const RenderOptions& options) {
   if (options.energy_csv) {
     energy_csv.emplace(folder / "energy.csv");
   }
-  const SimulatedFrames frames =
-      simulate_frames(model, timestep, range.last, options.energy_csv, [&](int, const State& s) {
+  Progress simulation_progress(range.last, !options.quiet, "simulate");
+  const SimulatedFrames frames = simulate_frames(
+      model, timestep, range.last, options.energy_csv, [&](int frame, const State& s) {
         if (energy_csv) {
           energy_csv->write(s.energy_workspace.last);
         }
+        simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
       });
+  simulation_progress.finish();
   if (energy_csv) {
     energy_csv->close();
   }
@@ -121,7 +124,7 @@ int run_render(const RenderOptions& options) {
   const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
   const int digits = frame_number_digits(scene.frame_count());
-  Progress progress(range.count(), !options.quiet);
+  Progress progress(range.count(), !options.quiet, "draw");
   const auto draw_start = Clock::now();
   draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
               [&](int frame, const Image& image) {

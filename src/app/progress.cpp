@@ -7,8 +7,8 @@
 
 namespace dinam {
 
-Progress::Progress(int total, bool enabled)
-    : total_(total), enabled_(enabled && isatty(STDERR_FILENO) != 0) {}
+Progress::Progress(int total, bool enabled, std::string stage)
+    : total_(total), enabled_(enabled && isatty(STDERR_FILENO) != 0), stage_(std::move(stage)) {}
 
 Progress::~Progress() {
   finish();
@@ -32,8 +32,8 @@ void Progress::update(int done, const std::string& detail) {
   }
   last_ = now;
   drawn_ = true;
-  fmt::print(stderr, "\r\033[Kframe {}/{} ({:.0f}%)  {}", done, total_, 100.0 * done / total_,
-             detail);
+  fmt::print(stderr, "\r\033[K{} frame {}/{} ({:.0f}%)  {}", stage_, done, total_,
+             100.0 * done / total_, detail);
   std::fflush(stderr);
 }
 

@@ -7,7 +7,8 @@ namespace dinam {
 
 class Progress {
  public:
-  Progress(int total, bool enabled);
+  // `stage` names what is counted ("simulate", "draw").
+  Progress(int total, bool enabled, std::string stage);
   ~Progress();
   void update(int done, const std::string& detail);
   // Ends the line, so that what is printed next starts on its own; called by the destructor too.
@@ -16,6 +17,7 @@ class Progress {
  private:
   int total_;
   bool enabled_;
+  std::string stage_;
   bool drawn_ = false;
   std::chrono::steady_clock::time_point last_;
 };
