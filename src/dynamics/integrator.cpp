@@ -61,18 +61,14 @@ double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_whole, do
 
 void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
                     bool update_history) {
-  EnergyWorkspace& ledger = state.energy_workspace;
-  const bool split = ledger.enabled;
-  // Without energy tracking every kind adds straight into the total.
-  auto target = [&](std::vector<Vec3>& own) -> std::vector<Vec3>& {
-    return split ? own : state.force;
-  };
+  // The dissipative and driving kinds always gather in their own arrays and join the total in
+  // one fixed order, so that tracking energy (which reads those arrays) cannot change a bit of the
+  // motion.
+  EnergyWorkspace& parts = state.energy_workspace;
   clear(state.force);
-  if (split) {
-    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
-                       &ledger.field}) {
-      clear(*part);
-    }
+  for (auto* part :
+       {&parts.damping, &parts.contact_damping, &parts.friction, &parts.wind, &parts.field}) {
+    clear(*part);
   }
   ForceContext total{model, state, state.force, update_history};
 
@@ -81,12 +77,12 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
     add_gravity_forces(total);
   }
   if (switches.fields) {
-    ForceContext fields{model, state, target(ledger.field), update_history};
+    ForceContext fields{model, state, parts.field, update_history};
     add_field_forces(fields);
   }
   // 2. Aerodynamic drag.
   if (switches.wind) {
-    ForceContext wind{model, state, target(ledger.wind), update_history};
+    ForceContext wind{model, state, parts.wind, update_history};
     add_wind_forces(wind);
   }
   // 3. Internal elastoplastic springs.
@@ -100,23 +96,20 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
     add_torsion_spring_forces(total);
   }
   // 4. Viscous damping: axial dampers and global friction.
-  ForceContext damping{model, state, target(ledger.damping), update_history};
+  ForceContext damping{model, state, parts.damping, update_history};
   if (switches.axial_dampers) {
     add_axial_damper_forces(damping);
   }
   if (switches.global_damping) {
     add_global_damping_forces(damping);
   }
-  // 5. Boundary conditions: the ground.
+  // 5. Boundary conditions: the ground (its elastic push with the total).
   if (switches.ground) {
-    add_ground_contact_forces(total, split ? &ledger.contact_damping : nullptr,
-                              split ? &ledger.friction : nullptr);
+    add_ground_contact_forces(total, &parts.contact_damping, &parts.friction);
   }
-  if (split) {
-    for (const auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction,
-                             &ledger.wind, &ledger.field}) {
-      add_into(state.force, *part);
-    }
+  for (const auto* part :
+       {&parts.damping, &parts.contact_damping, &parts.friction, &parts.wind, &parts.field}) {
+    add_into(state.force, *part);
   }
 }
 
@@ -135,11 +128,11 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   state.contact_sliding.assign(n, 0);
   EnergyWorkspace& ledger = state.energy_workspace;
   ledger.enabled = track_energy;
+  for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
+                     &ledger.field, &ledger.v_previous}) {
+    part->assign(n, Vec3::Zero());
+  }
   if (track_energy) {
-    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
-                       &ledger.field, &ledger.v_previous}) {
-      part->assign(n, Vec3::Zero());
-    }
     ledger.last = energy_report(model, state, state.v_half);
   }
   compute_forces(model, switches, state, false);

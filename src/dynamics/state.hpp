@@ -32,7 +32,7 @@ struct EnergyReport {
   double total = 0.0;  // kinetic + elastic + gravitational + contact − works + dissipation
 };
 
-// Per-kind force arrays and the last report, kept only when energy is tracked.
+// The dissipative and driving forces by kind (always), and the energy report (when tracked).
 struct EnergyWorkspace {
   bool enabled = false;
   std::vector<Vec3> damping;          // (n_nodes) N

@@ -111,6 +111,31 @@ forces:
   EXPECT_NEAR(state.x[1].y(), expected, 1e-12);
 }
 
+// Tracking energy reads the forces by kind; it must not change a bit of the motion.
+TEST(Integrator, TrackingEnergyDoesNotChangeTheMotion) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+damping: {global: 0.3}
+ground: {friction: {static: 0.5, kinetic: 0.3}}
+wind: {velocity: [3, 0, 0], turbulence: {amplitude: 1}}
+forces: [{acceleration: [0, 1, 0], profile: {type: sine, frequency: 2}}]
+objects:
+  - mesh: {grid: {width: 0.5, height: 0.5, columns: 4, rows: 4}, translation: [0, 0, 0.2]}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.002}
+    damping: {axial_ratio: 0.1}
+    initial_velocity: [1, 0, -2]
+)"));
+  const double dt = 2e-5;
+  State plain = initial_state(model, dt, {}, false);
+  State tracked = initial_state(model, dt, {}, true);
+  for (int n = 0; n < 5000; ++n) {
+    step(model, dt, {}, plain);
+    step(model, dt, {}, tracked);
+  }
+  EXPECT_EQ(plain.x, tracked.x);
+  EXPECT_EQ(plain.v_half, tracked.v_half);
+}
+
 TEST(Integrator, PinnedNodesNeverMove) {
   const Model model = spring_mass_model(3.0);
   State state = initial_state(model, 1e-4);
