@@ -1,6 +1,9 @@
 // Drawing and PNG encoding of one frame of the shipped flag, in its settled-in motion, at the
 // sizes users render. Reported as time per frame.
 #include <benchmark/benchmark.h>
+#include <fmt/format.h>
+
+#include <algorithm>
 
 #include "app/draw_list_from_model.hpp"
 #include "app/frame_source.hpp"
@@ -81,7 +84,56 @@ BENCHMARK(encode_png)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// Every shipped scene at its default quality, one second in, at 720p and 1080p.
+void draw_shipped_scene(benchmark::State& bench, const std::filesystem::path& path, int width,
+                        int height) {
+  SceneDescription scene = read_scene(path);
+  scene.image_width = width;
+  scene.image_height = height;
+  const Model model = build_model(scene);
+  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
+  const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
+  const DrawList list = make_draw_list(scene, model, motion_bounds(frames.positions));
+  OsmesaRenderer renderer({width, height, scene.quality.samples,
+                           scene.quality.shadows ? scene.quality.shadow_resolution : 0});
+  const std::size_t frame = std::min<std::size_t>(20, frames.positions.size() - 1);
+  Image image;
+  renderer.render(list, frames.positions[frame], cameras[frame], image);
+  for (auto _ : bench) {
+    renderer.render(list, frames.positions[frame], cameras[frame], image);
+  }
+}
+
+void register_shipped_scenes() {
+  const std::filesystem::path folder = std::filesystem::path(DINAM_SOURCE_DIR) / "scenes";
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() == ".yaml") {
+      scenes.push_back(entry.path());
+    }
+  }
+  std::sort(scenes.begin(), scenes.end());
+  for (const auto& path : scenes) {
+    for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
+      benchmark::RegisterBenchmark(
+          fmt::format("scene/{}/{}x{}", path.stem().string(), width, height).c_str(),
+          [path, width, height](benchmark::State& bench) {
+            draw_shipped_scene(bench, path, width, height);
+          })
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace dinam
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  dinam::register_shipped_scenes();
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -74,5 +74,83 @@ TEST(ShippedScenes, BallLandsTurnsAndComesToRest) {
   EXPECT_LT(final_kinetic, 0.01 * peak_kinetic);
 }
 
+// The cloth's centroid in frames 61 … 120 of a flag scene.
+std::vector<Vec3f> cloth_centroids(const SceneDescription& scene, const Model& model) {
+  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
+  const ModelObject& cloth = model.objects[1];
+  std::vector<Vec3f> centroids;
+  for (std::size_t f = 60; f < frames.positions.size(); ++f) {
+    Vec3f c = Vec3f::Zero();
+    for (Index i = 0; i < cloth.node_count; ++i) {
+      c += frames.positions[f][cloth.first_node + i];
+    }
+    centroids.push_back(c / static_cast<float>(cloth.node_count));
+  }
+  // It stays attached: the hoist nodes are where they started.
+  for (Index i = 0; i < cloth.node_count; ++i) {
+    const Index node = cloth.first_node + i;
+    if (model.pinned(node)) {
+      EXPECT_EQ(frames.positions.back()[node], model.node_initial_x[node].cast<float>());
+    }
+  }
+  return centroids;
+}
+
+// The flag in gusty wind streams out downwind and stays up through the second half; the same
+// flag in calm air swings back across the pole and droops (the control shows the check bites).
+TEST(ShippedScenes, WindyFlagStreamsDownwind) {
+  SceneDescription scene = shipped("windy_flag");
+  for (const Vec3f& c : cloth_centroids(scene, build_model(scene))) {
+    EXPECT_GT(c.x(), 0.5f);   // a flat 1.5 m flag has its centroid at 0.75 m
+    EXPECT_GT(c.z(), 2.45f);  // and at 2.7 m height
+  }
+  scene.wind.velocity = Vec3(1e-3, 0, 0);
+  scene.wind.gust_amplitude = 0.0;
+  scene.wind.turbulence = 0.0;
+  double lowest_x = 1e9;
+  for (const Vec3f& c : cloth_centroids(scene, build_model(scene))) {
+    lowest_x = std::min(lowest_x, static_cast<double>(c.x()));
+  }
+  EXPECT_LT(lowest_x, 0.5);
+}
+
+// The trampoline: the load that lands at 2.5 s drives the centre down, past where it ends up (a
+// step load overshoots its final deflection), the rim holds, and nothing reaches the ground.
+TEST(ShippedScenes, TrampolineBouncesUnderTheSuddenLoad) {
+  const SceneDescription scene = shipped("trampoline");
+  const Model model = build_model(scene);
+  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
+  Index center = 0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (model.node_initial_x[i].head<2>().norm() < model.node_initial_x[center].head<2>().norm()) {
+      center = i;
+    }
+  }
+  const double rest_height = model.node_initial_x[center].z();
+  auto deflection = [&](std::size_t frame) {
+    return rest_height - static_cast<double>(frames.positions[frame][center].z());
+  };
+  const double before = deflection(49);  // t = 2.45 s, just before the load
+  double peak = 0.0;
+  double lowest = 1e9;
+  for (std::size_t f = 50; f < frames.positions.size(); ++f) {
+    peak = std::max(peak, deflection(f));
+    for (const Vec3f& x : frames.positions[f]) {
+      lowest = std::min(lowest, static_cast<double>(x.z()));
+    }
+  }
+  const double end = deflection(frames.positions.size() - 1);
+  EXPECT_GT(end, before + 0.2);  // 360 N pushes the middle well down
+  EXPECT_GT(peak, 1.1 * end);    // and it bounced past where it settles
+  EXPECT_GT(lowest, 0.0);        // the ground, 1 m below the frame, is never reached
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (model.pinned(i)) {
+      EXPECT_EQ(frames.positions.back()[i], model.node_initial_x[i].cast<float>());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace dinam
