@@ -47,12 +47,7 @@ std::vector<RenderCamera> frame_cameras(const SceneDescription& scene, const Mod
       break;
     }
     case CameraDesc::Mode::kAuto: {
-      Bounds bounds;
-      for (const auto& positions : frames.positions) {
-        for (const Vec3f& p : positions) {
-          bounds.add(p);
-        }
-      }
+      const Bounds bounds = motion_bounds(frames.positions);
       const float aspect =
           static_cast<float>(scene.image_width) / static_cast<float>(scene.image_height);
       cameras.assign(frames.positions.size(),
