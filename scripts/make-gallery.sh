@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Renders the README's gallery: one 480×270 still of each shipped scene into docs/gallery/.
+# Usage: scripts/make-gallery.sh [path/to/dinam]   (default build/dinam)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dinam=${1:-build/dinam}
+mkdir -p docs/gallery
+# The frame that shows each scene best.
+declare -A frame=([flag]=50 [windy_flag]=70 [ball]=8 [trampoline]=54)
+for scene in scenes/*.yaml; do
+  name=$(basename "$scene" .yaml)
+  n=${frame[$name]:-60}
+  work=$(mktemp -d)
+  "$dinam" render "$scene" -o "$work" --frames "$n-$n" --size 480x270 --movie none -q
+  cp "$work/frame_$(printf '%04d' "$n").png" "docs/gallery/$name.png"
+  rm -rf "$work"
+  echo "docs/gallery/$name.png (frame $n)"
+done
