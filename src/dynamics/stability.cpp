@@ -62,7 +62,9 @@ TimeStep choose_timestep(const Model& model, std::optional<double> requested, do
     if (*requested > step.critical) {
       throw_user_error(where,
                        "the time step {:.6g} s is above this model's stability limit {:.6g} s "
-                       "(2/ω_max); the central-difference integration would blow up. Use "
+                       "(from its highest frequency and damping); the central-difference "
+                       "integration would blow up. "
+                       "Use "
                        "'timestep: auto' or a step of at most {:.6g} s",
                        *requested, step.critical, step.critical);
     }
