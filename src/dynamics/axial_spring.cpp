@@ -16,10 +16,7 @@ void add_axial_spring_forces(ForceContext& context) {
                                              model.bar_yield_force[b]);
     context.force[n0] += r.force_on_n0;
     context.force[n1] -= r.force_on_n0;
-    if (context.update_history) {
-      state.bar_plastic_set[b] = r.plastic_set;
-      state.energy.plastic_dissipation += r.dissipated;
-    }
+    context.record_plastic_flow(state.bar_plastic_set[b], r.plastic_set, r.dissipated);
   }
 }
 

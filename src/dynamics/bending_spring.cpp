@@ -52,10 +52,7 @@ void add_bending_spring_forces(ForceContext& context) {
     context.force[a] += r.force_a;
     context.force[c] += r.force_c;
     context.force[b] += r.force_b;
-    if (context.update_history) {
-      state.bend_plastic_set[s] = r.plastic_set;
-      state.energy.plastic_dissipation += r.dissipated;
-    }
+    context.record_plastic_flow(state.bend_plastic_set[s], r.plastic_set, r.dissipated);
   }
 }
 

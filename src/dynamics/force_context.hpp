@@ -16,6 +16,15 @@ struct ForceContext {
   // False while probing forces without advancing (finite differences, energy reports): plastic
   // sets and contact anchors are then read but not written.
   bool update_history = true;
+
+  // An elastoplastic spring's new plastic set and the work its flow dissipated, kept only when
+  // the context advances history.
+  void record_plastic_flow(double& plastic_set, double new_plastic_set, double dissipated) {
+    if (update_history) {
+      plastic_set = new_plastic_set;
+      state.energy.plastic_dissipation += dissipated;
+    }
+  }
 };
 
 }  // namespace dinam

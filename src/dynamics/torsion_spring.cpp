@@ -54,10 +54,7 @@ void add_torsion_spring_forces(ForceContext& context) {
     context.force[nodes[1]] += r.force_i;
     context.force[nodes[2]] += r.force_j;
     context.force[nodes[3]] += r.force_b;
-    if (context.update_history) {
-      state.torsion_plastic_set[s] = r.plastic_set;
-      state.energy.plastic_dissipation += r.dissipated;
-    }
+    context.record_plastic_flow(state.torsion_plastic_set[s], r.plastic_set, r.dissipated);
   }
 }
 

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <numbers>
 
 #include "app/frame_source.hpp"
@@ -14,6 +16,25 @@ namespace {
 
 SceneDescription shipped(const std::string& name) {
   return read_scene(std::filesystem::path(DINAM_SOURCE_DIR) / "scenes" / (name + ".yaml"));
+}
+
+// Every frame of a scene at its own time step.
+SimulatedFrames simulate_scene(const SceneDescription& scene, const Model& model,
+                               bool track_energy = false,
+                               const std::function<void(int, const State&)>& on_frame = {}) {
+  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  return simulate_frames(model, timestep, scene.frame_count(), track_energy, on_frame);
+}
+
+// The lowest height any node reaches in frames first … last.
+double lowest_height(const SimulatedFrames& frames, std::size_t first = 0) {
+  double lowest = std::numeric_limits<double>::max();
+  for (std::size_t f = first; f < frames.positions.size(); ++f) {
+    for (const Vec3f& x : frames.positions[f]) {
+      lowest = std::min(lowest, static_cast<double>(x.z()));
+    }
+  }
+  return lowest;
 }
 
 TEST(ShippedScenes, FlagIsA120FrameSixSecondScene) {
@@ -30,21 +51,14 @@ TEST(ShippedScenes, FlagIsA120FrameSixSecondScene) {
 TEST(ShippedScenes, BallLandsTurnsAndComesToRest) {
   const SceneDescription scene = shipped("ball");
   const Model model = build_model(scene);
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   double peak_kinetic = 0.0;
   double final_kinetic = 0.0;
-  const SimulatedFrames frames =
-      simulate_frames(model, timestep, scene.frame_count(), true, [&](int, const State& state) {
-        peak_kinetic = std::max(peak_kinetic, state.energy_workspace.last.kinetic);
-        final_kinetic = state.energy_workspace.last.kinetic;
-      });
+  const SimulatedFrames frames = simulate_scene(scene, model, true, [&](int, const State& state) {
+    peak_kinetic = std::max(peak_kinetic, state.energy_workspace.last.kinetic);
+    final_kinetic = state.energy_workspace.last.kinetic;
+  });
 
-  double lowest = 1e9;
-  for (const auto& positions : frames.positions) {
-    for (const Vec3f& x : positions) {
-      lowest = std::min(lowest, static_cast<double>(x.z()));
-    }
-  }
+  const double lowest = lowest_height(frames);
   // It lands: some node reaches the plane. At most it sinks by the impact speed over the contact
   // frequency (|v| ≤ 3.6 m/s at first touch; ω_c from the auto stiffness).
   const double contact_omega = std::sqrt(model.ground.node_stiffness[0] / model.node_mass[0]);
@@ -76,8 +90,7 @@ TEST(ShippedScenes, BallLandsTurnsAndComesToRest) {
 
 // The cloth's centroid in frames 61 … 120 of a flag scene.
 std::vector<Vec3f> cloth_centroids(const SceneDescription& scene, const Model& model) {
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
+  const SimulatedFrames frames = simulate_scene(scene, model);
   const ModelObject& cloth = model.objects[1];
   std::vector<Vec3f> centroids;
   for (std::size_t f = 60; f < frames.positions.size(); ++f) {
@@ -120,8 +133,7 @@ TEST(ShippedScenes, WindyFlagStreamsDownwind) {
 TEST(ShippedScenes, TrampolineBouncesUnderTheSuddenLoad) {
   const SceneDescription scene = shipped("trampoline");
   const Model model = build_model(scene);
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
+  const SimulatedFrames frames = simulate_scene(scene, model);
   Index center = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     if (model.node_initial_x[i].head<2>().norm() < model.node_initial_x[center].head<2>().norm()) {
@@ -134,13 +146,10 @@ TEST(ShippedScenes, TrampolineBouncesUnderTheSuddenLoad) {
   };
   const double before = deflection(49);  // t = 2.45 s, just before the load
   double peak = 0.0;
-  double lowest = 1e9;
   for (std::size_t f = 50; f < frames.positions.size(); ++f) {
     peak = std::max(peak, deflection(f));
-    for (const Vec3f& x : frames.positions[f]) {
-      lowest = std::min(lowest, static_cast<double>(x.z()));
-    }
   }
+  const double lowest = lowest_height(frames, 50);
   const double end = deflection(frames.positions.size() - 1);
   EXPECT_GT(end, before + 0.2);  // 360 N pushes the middle well down
   EXPECT_GT(peak, 1.1 * end);    // and it bounced past where it settles
@@ -157,15 +166,9 @@ TEST(ShippedScenes, TrampolineBouncesUnderTheSuddenLoad) {
 TEST(ShippedScenes, RopeLandsAndRestsOnTheGround) {
   const SceneDescription scene = shipped("rope");
   const Model model = build_model(scene);
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
-  double lowest = 1e9;
-  for (const auto& positions : frames.positions) {
-    for (const Vec3f& x : positions) {
-      lowest = std::min(lowest, static_cast<double>(x.z()));
-    }
-  }
-  EXPECT_GT(lowest, -0.01);  // the swing lands at a few m/s: millimetres of penalty give
+  const SimulatedFrames frames = simulate_scene(scene, model);
+  EXPECT_GT(lowest_height(frames),
+            -0.01);  // the swing lands at a few m/s: millimetres of penalty give
   const std::vector<Vec3f>& last = frames.positions.back();
   const std::vector<Vec3f>& earlier = frames.positions[frames.positions.size() - 11];
   int resting = 0;
