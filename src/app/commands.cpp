@@ -252,7 +252,7 @@ int run_info(const std::filesystem::path& scene_path) {
   fmt::print("bars             {}\n", model.bar_count());
   fmt::print("springs          axial {}, bending {}, torsion {}\n", model.bar_count(),
              model.bend_count(), model.torsion_count());
-  fmt::print("no torsion       {} bars (no usable reference neighbour at an end)\n",
+  fmt::print("no torsion       {} bars (torsion off, or no usable reference neighbour)\n",
              model.bars_without_torsion);
   fmt::print("total mass       {:.6g} kg\n", model.total_mass());
   fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
@@ -261,8 +261,16 @@ int run_info(const std::filesystem::path& scene_path) {
              timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
                                 : "from the scene, fitted to whole steps per frame");
   fmt::print("steps per frame  {}\n", timestep.steps_per_frame);
-  fmt::print("frames           {} at {:g} fps ({:g} s), {} steps in all\n", frames, scene.fps,
-             frames / scene.fps, static_cast<long long>(frames - 1) * timestep.steps_per_frame);
+  const long long steps_to_last_frame =
+      static_cast<long long>(frames - 1) * timestep.steps_per_frame;
+  fmt::print("frames           {} at {:g} fps, t = 0 … {:g} s\n", frames, scene.fps,
+             (frames - 1) / scene.fps);
+  fmt::print("steps            {} over the {:g} s duration ({} up to the last frame)\n",
+             steps_to_last_frame + timestep.steps_per_frame, scene.duration, steps_to_last_frame);
+  if (model.settle.duration > 0.0) {
+    fmt::print("settling         {:g} s before t = 0 ({} steps), under gravity alone\n",
+               model.settle.duration, std::llround(model.settle.duration / timestep.dt));
+  }
   return kExitOk;
 }
 

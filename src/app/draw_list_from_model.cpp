@@ -59,8 +59,9 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
     list.point_color[i] = model.objects[object].color;
   }
   for (Index b = 0; b < model.bar_count(); ++b) {
+    // A surface object still shows its loose bars (a flag's ropes): they are on no face.
     const Index object = model.node_object[model.bar_nodes[2 * b]];
-    if (!object_wire[object]) {
+    if (!object_wire[object] && model.bar_on_face[b] != 0) {
       continue;
     }
     list.segment_points.push_back(model.bar_nodes[2 * b]);

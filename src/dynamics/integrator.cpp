@@ -9,6 +9,8 @@
 #include "dynamics/field_forces.hpp"
 #include "dynamics/global_damping.hpp"
 #include "dynamics/ground_contact.hpp"
+#include "dynamics/pin_motion.hpp"
+#include "dynamics/settle.hpp"
 #include "dynamics/torsion_spring.hpp"
 #include "dynamics/wind.hpp"
 #include "model/model.hpp"
@@ -126,6 +128,8 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   state.contact_anchor.assign(n, Vec3::Zero());
   state.contact_touching.assign(n, 0);
   state.contact_sliding.assign(n, 0);
+  place_driven_nodes(model, 0.0, state);
+  settle_under_gravity(model, dt, switches, state);
   EnergyWorkspace& ledger = state.energy_workspace;
   ledger.enabled = track_energy;
   for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
@@ -154,6 +158,7 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
   for (Index i = 0; i < n; ++i) {
     state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i];
   }
+  set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state);
   // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
   //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
   if (ledger.enabled) {

@@ -2,6 +2,7 @@
 // The physical model: built once from a scene, then only read (`const Model&`). Everything that
 // changes during a run lives in dynamics' State. Arrays are flat and indexed by element id; each
 // comment gives the shape and the unit.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,18 @@ struct FieldForce {
   bool per_unit_mass = true;
   std::vector<Index> nodes;  // (n_targets)
   TimeProfile profile;
+};
+
+// Pinned nodes that follow a prescribed path: x(t) = x_0 + displacement × profile(t).
+struct PinMotion {
+  std::vector<Index> nodes;  // (n_driven) pinned node ids
+  Vec3 displacement = Vec3::Zero();
+  TimeProfile profile;
+};
+
+// The settling phase before t = 0 (SettleDesc): gravity alone, by kinetic damping.
+struct SettlePhase {
+  double duration = 0.0;  // s; 0 for none
 };
 
 // The ground as the dynamics sees it: a rigid half-space with penalty contact and friction.
@@ -66,6 +79,7 @@ struct Model {
   std::vector<double> bar_yield_force;      // (n_bars) N; infinite when elastic
   std::vector<double> bar_damping;          // (n_bars) N·s/m, on the relative axial velocity
   std::vector<double> bar_radius;           // (n_bars) m, of the round section of equal area
+  std::vector<std::uint8_t> bar_on_face;    // (n_bars) 1 when an edge of a mesh face
 
   // Bending springs: at node c between bars c–a and c–b, on the angle θ between them.
   std::vector<Index> bend_nodes;          // (n_bends × 3) a, c, b
@@ -90,6 +104,8 @@ struct Model {
   Vec3 gravity = Vec3::Zero();  // m/s²
   double global_damping = 0.0;  // 1/s: every free node feels −α m v
   std::vector<FieldForce> fields;
+  std::vector<PinMotion> pin_motions;
+  SettlePhase settle;
   WindLoad wind;
   GroundContact ground;
 

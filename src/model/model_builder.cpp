@@ -186,6 +186,9 @@ void add_object_conditions(const ObjectNodes& object, Model& model) {
     model.node_inv_mass[node] = 0.0;
     model.node_initial_v[node].setZero();
   }
+  if (desc.pin_motion.moving()) {
+    model.pin_motions.push_back({pinned, desc.pin_motion.displacement, desc.pin_motion.profile});
+  }
   // c = 2ζ √(k μ), μ the reduced mass of the two ends: ζ of the bar's own axial vibration.
   for (Index b = info.first_bar; b < info.first_bar + info.bar_count; ++b) {
     const double m0 = model.node_mass[model.bar_nodes[2 * b]];
@@ -194,6 +197,31 @@ void add_object_conditions(const ObjectNodes& object, Model& model) {
     model.bar_damping[b] =
         desc.axial_damping.coefficient +
         2.0 * desc.axial_damping.ratio * std::sqrt(model.bar_axial_stiffness[b] * reduced_mass);
+  }
+}
+
+// Marks the bars that are an edge of some mesh face, found through each node's bars.
+void mark_bars_on_faces(Model& model) {
+  model.bar_on_face.assign(model.bar_count(), 0);
+  std::vector<std::vector<std::pair<Index, Index>>> bars_of_node(model.node_count());
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    bars_of_node[n0].emplace_back(n1, b);
+    bars_of_node[n1].emplace_back(n0, b);
+  }
+  for (Index f = 0; f < model.face_count(); ++f) {
+    const Index begin = model.face_offsets[f];
+    const Index end = model.face_offsets[f + 1];
+    for (Index k = begin; k < end; ++k) {
+      const Index a = model.face_nodes[k];
+      const Index b = model.face_nodes[k + 1 < end ? k + 1 : begin];
+      for (const auto& [other, bar] : bars_of_node[a]) {
+        if (other == b) {
+          model.bar_on_face[bar] = 1;
+        }
+      }
+    }
   }
 }
 
@@ -225,33 +253,13 @@ void add_wind(const SceneDescription& scene, Model& model) {
            std::find(names.begin(), names.end(), model.objects[object].name) != names.end();
   };
   // Faces take pressure drag; a bar on no face is a bare wire and takes cross-flow drag.
-  std::vector<bool> on_face(model.bar_count(), false);
-  std::vector<std::vector<std::pair<Index, Index>>> bars_of_node(model.node_count());
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    const Index n0 = model.bar_nodes[2 * b];
-    const Index n1 = model.bar_nodes[2 * b + 1];
-    bars_of_node[n0].emplace_back(n1, b);
-    bars_of_node[n1].emplace_back(n0, b);
-  }
   for (Index f = 0; f < model.face_count(); ++f) {
-    const Index begin = model.face_offsets[f];
-    const Index end = model.face_offsets[f + 1];
-    if (!feels_wind(model.node_object[model.face_nodes[begin]])) {
-      continue;
-    }
-    model.wind.faces.push_back(f);
-    for (Index k = begin; k < end; ++k) {
-      const Index a = model.face_nodes[k];
-      const Index b = model.face_nodes[k + 1 < end ? k + 1 : begin];
-      for (const auto& [other, bar] : bars_of_node[a]) {
-        if (other == b) {
-          on_face[bar] = true;
-        }
-      }
+    if (feels_wind(model.node_object[model.face_nodes[model.face_offsets[f]]])) {
+      model.wind.faces.push_back(f);
     }
   }
   for (Index b = 0; b < model.bar_count(); ++b) {
-    if (!on_face[b] && feels_wind(model.node_object[model.bar_nodes[2 * b]])) {
+    if (model.bar_on_face[b] == 0 && feels_wind(model.node_object[model.bar_nodes[2 * b]])) {
       model.wind.bars.push_back(b);
     }
   }
@@ -298,6 +306,7 @@ Model build_model(const SceneDescription& scene) {
   Model model;
   model.gravity = scene.gravity;
   model.global_damping = scene.global_damping;
+  model.settle.duration = scene.settle.duration;
   model.face_offsets.push_back(0);
   std::vector<ObjectNodes> objects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
@@ -314,6 +323,7 @@ Model build_model(const SceneDescription& scene) {
       model.bars_without_torsion += info.bar_count;
     }
   }
+  mark_bars_on_faces(model);
   add_fields(scene, objects, model);
   add_wind(scene, model);
   add_ground(scene, model);

@@ -69,6 +69,29 @@ struct VelocityGroupDesc {
   Vec3 velocity = Vec3::Zero();  // m/s
 };
 
+// A multiplier of time for a force or a motion: constant 1, a step at t0, a ramp from 0 at t0 to 1
+// at t1, or a sine.
+struct TimeProfile {
+  enum class Kind { kConstant, kStep, kRamp, kSine };
+  Kind kind = Kind::kConstant;
+  double start = 0.0;      // s, t0 (step, ramp; sine starts then too)
+  double end = 0.0;        // s, t1 (ramp)
+  double frequency = 0.0;  // Hz (sine)
+  double phase = 0.0;      // rad (sine)
+
+  double operator()(double t) const;
+};
+
+// A prescribed motion of an object's pinned nodes, x(t) = x_0 + displacement × profile(t): a
+// support that is shaken, rather than held still.
+struct PinMotionDesc {
+  Vec3 displacement = Vec3::Zero();  // m, the amplitude
+  TimeProfile profile;
+  FileLoc loc;
+
+  bool moving() const { return !displacement.isZero(); }
+};
+
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
 enum class DrawStyle { kSurface, kWire, kBoth };
 
@@ -79,6 +102,7 @@ struct ObjectDesc {
   FileLoc mesh_loc;
   MaterialDesc material;
   PinDesc pins;
+  PinMotionDesc pin_motion;              // none by default: pinned nodes stay where they are
   Vec3 initial_velocity = Vec3::Zero();  // m/s
   std::vector<VelocityGroupDesc> velocity_groups;
   BendingPairs bending_pairs = BendingPairs::kMostCollinear;
@@ -115,19 +139,6 @@ struct RenderQualityDesc {
 };
 
 enum class MovieFormat { kMp4, kGif, kNone };
-
-// A multiplier of time for a force: constant 1, a step at t0, a ramp from 0 at t0 to 1 at t1,
-// or a sine.
-struct TimeProfile {
-  enum class Kind { kConstant, kStep, kRamp, kSine };
-  Kind kind = Kind::kConstant;
-  double start = 0.0;      // s, t0 (step, ramp; sine starts then too)
-  double end = 0.0;        // s, t1 (ramp)
-  double frequency = 0.0;  // Hz (sine)
-  double phase = 0.0;      // rad (sine)
-
-  double operator()(double t) const;
-};
 
 // A field force on some nodes: per unit mass (an acceleration, like gravity) or per node.
 struct FieldForceDesc {
@@ -169,6 +180,14 @@ struct GroundDesc {
   FileLoc loc;
 };
 
+// A phase before t = 0 in which the structure comes to rest under gravity alone (no fields, no
+// wind, no initial velocities, by kinetic damping); its final shape is the start of the shown
+// motion. The paper's flag begins this way.
+struct SettleDesc {
+  double duration = 0.0;  // s; 0: no settling, the motion starts from the meshes as given
+  FileLoc loc;
+};
+
 struct SceneDescription {
   std::filesystem::path source;  // the scene file
   int version = 1;
@@ -180,6 +199,7 @@ struct SceneDescription {
   FileLoc timestep_loc;
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
   double global_damping = 0.0;    // 1/s, viscous friction −α m v on every node
+  SettleDesc settle;
   std::vector<FieldForceDesc> fields;
   WindDesc wind;
 

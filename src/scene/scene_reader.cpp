@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <numbers>
 #include <set>
@@ -462,6 +462,21 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
     object.pins = read_nodes(YamlMap(map.get("pinned"), map.file(), map.path("pinned")),
                              object.mesh.vertices.size());
   }
+  if (map.has("pin_motion")) {
+    YamlMap motion(map.get("pin_motion"), map.file(), map.path("pin_motion"));
+    object.pin_motion.loc = motion.loc();
+    object.pin_motion.displacement = motion.required_vec3("displacement");
+    if (motion.has("profile")) {
+      object.pin_motion.profile =
+          read_profile(YamlMap(motion.get("profile"), map.file(), motion.path("profile")));
+    }
+    motion.finish();
+    if (object.pins.empty()) {
+      throw_user_error(object.pin_motion.loc,
+                       "'{}' moves the pinned nodes of object '{}', which has none; add 'pinned'",
+                       map.path("pin_motion"), object.name);
+    }
+  }
   object.initial_velocity = map.vec3("initial_velocity", object.initial_velocity);
   if (const YAML::Node groups = map.get("velocity_groups"); groups) {
     if (!groups.IsSequence()) {
@@ -615,6 +630,13 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
       throw_user_error(damping.loc("global"), "'damping.global' cannot be negative (1/s)");
     }
     damping.finish();
+  }
+  if (map.has("settle")) {
+    YamlMap settle(map.get("settle"), file, "settle");
+    scene.settle.loc = settle.loc();
+    scene.settle.duration = settle.required_number("duration");
+    require_positive(scene.settle.duration, settle.loc("duration"), "settle.duration", "s");
+    settle.finish();
   }
 
   if (map.has("ground")) {

@@ -148,6 +148,33 @@ TEST(SceneReader, PhysicalModelMistakesAreErrors) {
   expect_user_error(
       [&] { scene_from_yaml(base + "wind: {velocity: [1, 0, 0], objects: [flag]}\n"); }, 7,
       {"'flag', which is no object"});
+  expect_user_error([&] { scene_from_yaml(base + "settle: {duration: -1}\n"); }, 7,
+                    {"'settle.duration' must be greater than zero"});
+  expect_user_error([&] { scene_from_yaml(base + "settle: {duration: 2, damping: 3}\n"); }, 7,
+                    {"damping"});
+  expect_user_error(
+      [&] { scene_from_yaml(base + "    pin_motion: {displacement: [0.1, 0, 0]}\n"); }, 7,
+      {"has none; add 'pinned'"});
+}
+
+// A settling phase, and pinned nodes that follow a path.
+TEST(SceneReader, SettleAndPinMotion) {
+  const SceneDescription scene = scene_from_yaml(R"(version: 1
+duration: 1
+settle: {duration: 3}
+objects:
+  - name: tower
+    mesh: {file: rope.obj}
+    material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}
+    pinned: {indices: [0]}
+    pin_motion: {displacement: [0.05, 0, 0], profile: {type: sine, frequency: 2}}
+)");
+  EXPECT_DOUBLE_EQ(scene.settle.duration, 3.0);
+  const PinMotionDesc& motion = scene.objects[0].pin_motion;
+  EXPECT_TRUE(motion.moving());
+  EXPECT_TRUE(motion.displacement.isApprox(Vec3(0.05, 0, 0)));
+  EXPECT_EQ(motion.profile.kind, TimeProfile::Kind::kSine);
+  EXPECT_DOUBLE_EQ(motion.profile.frequency, 2.0);
 }
 
 TEST(SceneReader, CameraModesStylesAndOutput) {

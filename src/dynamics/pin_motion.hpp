@@ -1,0 +1,18 @@
+#pragma once
+// Shaken supports: pinned nodes that follow a prescribed path (PinMotion) instead of staying put.
+// They keep zero inverse mass, so no force moves them; their half-step velocity is set to the
+// path's secant, which carries them along it through the ordinary position update and lets
+// dampers, drag and the ground see how fast they move.
+#include "dynamics/state.hpp"
+
+namespace dinam {
+
+struct Model;
+
+// Where the driven nodes are at time t.
+void place_driven_nodes(const Model& model, double t, State& state);
+
+// v_{n+½} of every driven node, so that x_{n+1} = x_n + Δt v_{n+½} lands on the path at t_{n+1}.
+void set_driven_velocities(const Model& model, double t_next, double dt, State& state);
+
+}  // namespace dinam
