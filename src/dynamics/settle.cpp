@@ -7,6 +7,29 @@
 
 namespace dinam {
 
+void relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
+                              std::int64_t steps, State& state) {
+  // The motion runs on, and whenever the kinetic energy has passed a peak every velocity is
+  // zeroed. Each reset removes energy near a point of lowest potential, so the structure walks
+  // down to a static equilibrium; unlike viscous damping it also settles the soft, slow modes (a
+  // hanging cloth's folds) in a few of their periods.
+  double previous_kinetic = 0.0;
+  for (std::int64_t s = 0; s < steps; ++s) {
+    step(model, dt, switches, state);
+    double kinetic = 0.0;
+    for (Index i = 0; i < model.node_count(); ++i) {
+      kinetic += model.node_mass[i] * state.v_half[i].squaredNorm();
+    }
+    if (kinetic < previous_kinetic) {
+      for (Index i = 0; i < model.node_count(); ++i) {
+        state.v_half[i].setZero();
+      }
+      kinetic = 0.0;
+    }
+    previous_kinetic = kinetic;
+  }
+}
+
 void settle_under_gravity(const Model& model, double dt, const ForceSwitches& switches,
                           State& state) {
   if (model.settle.duration <= 0.0) {
@@ -26,26 +49,9 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
   quiet.node_initial_x = state.x;
 
   State settling = initial_state(quiet, dt, switches, false);
-  const auto steps = static_cast<std::int64_t>(std::llround(model.settle.duration / dt));
-  // Kinetic damping (dynamic relaxation): the motion runs undamped, and whenever the kinetic energy
-  // has passed a peak every velocity is zeroed. Each reset removes energy at a point of nearly
-  // lowest potential, so the structure walks down to a static equilibrium; unlike viscous damping
-  // it also settles the soft, slow modes (a hanging cloth's folds) in a few of their periods.
-  double previous_kinetic = 0.0;
-  for (std::int64_t s = 0; s < steps; ++s) {
-    step(quiet, dt, switches, settling);
-    double kinetic = 0.0;
-    for (Index i = 0; i < quiet.node_count(); ++i) {
-      kinetic += quiet.node_mass[i] * settling.v_half[i].squaredNorm();
-    }
-    if (kinetic < previous_kinetic) {
-      for (Index i = 0; i < quiet.node_count(); ++i) {
-        settling.v_half[i].setZero();
-      }
-      kinetic = 0.0;
-    }
-    previous_kinetic = kinetic;
-  }
+  relax_by_kinetic_damping(quiet, dt, switches,
+                           static_cast<std::int64_t>(std::llround(model.settle.duration / dt)),
+                           settling);
   state.x = std::move(settling.x);
   state.bar_plastic_set = std::move(settling.bar_plastic_set);
   state.bend_plastic_set = std::move(settling.bend_plastic_set);

@@ -1,0 +1,70 @@
+#!/usr/bin/env python3
+"""Writes assets/wire_chair.ply: a chair bent from one gauge of wire, as PLY two-vertex faces
+(line elements, which assimp reads as edges). Every straight member is cut into segments of about
+7.5 cm so that it can bend at their joints. Standard library only.
+
+The chair stands on the plane z = 0 with its seat centred on the z axis, 0.45 m up, its back
+towards +y.
+
+    python3 scripts/make-wire-chair.py
+"""
+import math
+from pathlib import Path
+
+SEGMENT = 0.075      # m, longest segment
+SEAT, HALF = 0.45, 0.22
+FOOT = 0.25          # half-spread of the feet: the legs lean out a little
+BACK_TOP = 0.95
+BACK_RAIL = SEAT + 4 * (BACK_TOP - SEAT) / 7   # on the 4th of the uprights' 7 joints
+
+vertices = []
+index = {}
+edges = []
+
+
+def vertex(p):
+    key = tuple(round(c, 9) for c in p)
+    if key not in index:
+        index[key] = len(vertices)
+        vertices.append(key)
+    return index[key]
+
+
+def member(p, q):
+    """A straight wire from p to q in equal segments no longer than SEGMENT."""
+    n = max(1, math.ceil(math.dist(p, q) / SEGMENT - 1e-9))
+    ids = [vertex(tuple(a + (b - a) * k / n for a, b in zip(p, q))) for k in range(n + 1)]
+    edges.extend(zip(ids[:-1], ids[1:]))
+
+
+corners = [(sx * HALF, sy * HALF, SEAT) for sx in (-1, 1) for sy in (-1, 1)]
+for (x, y, z) in corners:                               # legs
+    member((math.copysign(FOOT, x), math.copysign(FOOT, y), 0.0), (x, y, z))
+for a, b in ((0, 1), (1, 3), (3, 2), (2, 0)):           # the seat's frame
+    member(corners[a], corners[b])
+member((-HALF, -HALF / 3, SEAT), (HALF, -HALF / 3, SEAT))  # two slats across the seat
+member((-HALF, HALF / 3, SEAT), (HALF, HALF / 3, SEAT))
+for x in (-HALF, HALF):                                 # the back's uprights
+    member((x, HALF, SEAT), (x, HALF, BACK_TOP))
+member((-HALF, HALF, BACK_TOP), (HALF, HALF, BACK_TOP))  # its top rail and a middle rail
+member((-HALF, HALF, BACK_RAIL), (HALF, HALF, BACK_RAIL))
+
+# Slats and rails meet the seat's sides and the uprights at joints they share: one piece of wire.
+assert len(set(frozenset(e) for e in edges)) == len(edges)
+component = {0}
+while True:
+    grown = component | {b for a, b in edges if a in component} | {a for a, b in edges if b in component}
+    if grown == component:
+        break
+    component = grown
+assert len(component) == len(vertices), "the chair falls apart"
+
+lines = ["ply", "format ascii 1.0", "comment dinam scripts/make-wire-chair.py: a wire chair",
+         f"element vertex {len(vertices)}", "property float x", "property float y",
+         "property float z", f"element face {len(edges)}",
+         "property list uchar int vertex_indices", "end_header"]
+lines += [f"{x:.6f} {y:.6f} {z:.6f}" for x, y, z in vertices]
+lines += [f"2 {a} {b}" for a, b in edges]
+out = Path(__file__).resolve().parent.parent / "assets" / "wire_chair.ply"
+out.write_text("\n".join(lines) + "\n")
+print(f"wrote {out}: {len(vertices)} vertices, {len(edges)} edges")
