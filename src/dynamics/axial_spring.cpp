@@ -1,5 +1,6 @@
 #include "dynamics/axial_spring.hpp"
 
+#include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -7,8 +8,7 @@ namespace dinam {
 void add_axial_spring_forces(ForceContext& context) {
   const Model& model = context.model;
   State& state = context.state;
-  const Index n_bars = model.bar_count();
-  for (Index b = 0; b < n_bars; ++b) {
+  for_each_spring_by_colour(model.bar_colours, [&](Index b) {
     const Index n0 = model.bar_nodes[2 * b];
     const Index n1 = model.bar_nodes[2 * b + 1];
     const AxialSpringResult r = axial_spring(state.x[n0], state.x[n1], model.bar_rest_length[b],
@@ -16,16 +16,19 @@ void add_axial_spring_forces(ForceContext& context) {
                                              model.bar_yield_force[b]);
     context.force[n0] += r.force_on_n0;
     context.force[n1] -= r.force_on_n0;
-    context.record_plastic_flow(state.bar_plastic_set[b], r.plastic_set, r.dissipated);
+    context.record_plastic_flow(b, state.bar_plastic_set[b], r.plastic_set, r.dissipated);
+  });
+  if (model.bar_colours.any_yield) {
+    context.book_plastic_flow(model.bar_count());
   }
 }
 
 void add_axial_damper_forces(ForceContext& context) {
   const Model& model = context.model;
   const State& state = context.state;
-  for (Index b = 0; b < model.bar_count(); ++b) {
+  for_each_spring_by_colour(model.bar_colours, [&](Index b) {
     if (model.bar_damping[b] == 0.0) {
-      continue;
+      return;
     }
     const Index n0 = model.bar_nodes[2 * b];
     const Index n1 = model.bar_nodes[2 * b + 1];
@@ -33,7 +36,7 @@ void add_axial_damper_forces(ForceContext& context) {
                                  model.bar_damping[b]);
     context.force[n0] += f0;
     context.force[n1] -= f0;
-  }
+  });
 }
 
 double axial_spring_energy(const Model& model, const State& state) {

@@ -2,6 +2,7 @@
 
 #include "core/geometry.hpp"
 #include "dynamics/elastoplastic.hpp"
+#include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -42,7 +43,7 @@ BendingSpringResult bending_spring(const Vec3& xa, const Vec3& xc, const Vec3& x
 void add_bending_spring_forces(ForceContext& context) {
   const Model& model = context.model;
   State& state = context.state;
-  for (Index s = 0; s < model.bend_count(); ++s) {
+  for_each_spring_by_colour(model.bend_colours, [&](Index s) {
     const Index a = model.bend_nodes[3 * s];
     const Index c = model.bend_nodes[3 * s + 1];
     const Index b = model.bend_nodes[3 * s + 2];
@@ -52,7 +53,10 @@ void add_bending_spring_forces(ForceContext& context) {
     context.force[a] += r.force_a;
     context.force[c] += r.force_c;
     context.force[b] += r.force_b;
-    context.record_plastic_flow(state.bend_plastic_set[s], r.plastic_set, r.dissipated);
+    context.record_plastic_flow(s, state.bend_plastic_set[s], r.plastic_set, r.dissipated);
+  });
+  if (model.bend_colours.any_yield) {
+    context.book_plastic_flow(model.bend_count());
   }
 }
 

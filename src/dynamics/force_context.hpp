@@ -18,11 +18,22 @@ struct ForceContext {
   bool update_history = true;
 
   // An elastoplastic spring's new plastic set and the work its flow dissipated, kept only when
-  // the context advances history.
-  void record_plastic_flow(double& plastic_set, double new_plastic_set, double dissipated) {
+  // the context advances history. Safe from parallel loops: each spring writes its own slots.
+  void record_plastic_flow(Index spring, double& plastic_set, double new_plastic_set,
+                           double dissipated) {
     if (update_history) {
       plastic_set = new_plastic_set;
-      state.energy.plastic_dissipation += dissipated;
+      state.plastic_flow[static_cast<std::size_t>(spring)] = dissipated;
+    }
+  }
+
+  // After a loop over `count` springs that may have flowed: books their dissipation, summed in
+  // spring order so that the total does not depend on the threads.
+  void book_plastic_flow(Index count) {
+    if (update_history) {
+      for (Index s = 0; s < count; ++s) {
+        state.energy.plastic_dissipation += state.plastic_flow[static_cast<std::size_t>(s)];
+      }
     }
   }
 };

@@ -1,5 +1,6 @@
 #include "dynamics/integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -9,6 +10,7 @@
 #include "dynamics/field_forces.hpp"
 #include "dynamics/global_damping.hpp"
 #include "dynamics/ground_contact.hpp"
+#include "dynamics/parallel_loops.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/settle.hpp"
 #include "dynamics/torsion_spring.hpp"
@@ -36,15 +38,11 @@ void check_finite(const Model& model, const State& state) {
 }
 
 void clear(std::vector<Vec3>& forces) {
-  for (Vec3& f : forces) {
-    f.setZero();
-  }
+  for_each_index(static_cast<Index>(forces.size()), [&](Index i) { forces[i].setZero(); });
 }
 
 void add_into(std::vector<Vec3>& total, const std::vector<Vec3>& part) {
-  for (std::size_t i = 0; i < total.size(); ++i) {
-    total[i] += part[i];
-  }
+  for_each_index(static_cast<Index>(total.size()), [&](Index i) { total[i] += part[i]; });
 }
 
 // Δt Σ F_i · v_i with the whole-step velocity v_n = ½ (v_{n−½} + v_{n+½}): the work of a force
@@ -125,6 +123,8 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   state.bar_plastic_set.assign(model.bar_count(), 0.0);
   state.bend_plastic_set.assign(model.bend_count(), 0.0);
   state.torsion_plastic_set.assign(model.torsion_count(), 0.0);
+  state.plastic_flow.assign(
+      std::max({model.bar_count(), model.bend_count(), model.torsion_count()}), 0.0);
   state.contact_anchor.assign(n, Vec3::Zero());
   state.contact_touching.assign(n, 0);
   state.contact_sliding.assign(n, 0);
@@ -155,9 +155,8 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
   }
   // 2. Velocities to n + ½. Pinned nodes have zero inverse mass and zero velocity.
   const Index n = model.node_count();
-  for (Index i = 0; i < n; ++i) {
-    state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i];
-  }
+  for_each_index(
+      n, [&](Index i) { state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i]; });
   set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state);
   // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
   //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
@@ -186,9 +185,7 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
     a.field_work += 0.5 * step_work.field_work;
   }
   // 4. Positions to n + 1.
-  for (Index i = 0; i < n; ++i) {
-    state.x[i] += dt * state.v_half[i];
-  }
+  for_each_index(n, [&](Index i) { state.x[i] += dt * state.v_half[i]; });
   state.step += 1;
   state.time = static_cast<double>(state.step) * dt;
   check_finite(model, state);

@@ -55,6 +55,7 @@ struct State {
   std::vector<double> bar_plastic_set;      // (n_bars) m
   std::vector<double> bend_plastic_set;     // (n_bends) rad
   std::vector<double> torsion_plastic_set;  // (n_torsions) rad
+  std::vector<double> plastic_flow;  // (most springs of one kind) J, scratch: each one's last flow
 
   // Ground contact history: where each node's stick spring is anchored on the plane, and
   // whether it is sliding (kinetic friction) or sticking (static).

@@ -2,6 +2,7 @@
 
 #include "core/geometry.hpp"
 #include "dynamics/elastoplastic.hpp"
+#include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -44,7 +45,7 @@ TorsionSpringResult torsion_spring(const Vec3& xa, const Vec3& xi, const Vec3& x
 void add_torsion_spring_forces(ForceContext& context) {
   const Model& model = context.model;
   State& state = context.state;
-  for (Index s = 0; s < model.torsion_count(); ++s) {
+  for_each_spring_by_colour(model.torsion_colours, [&](Index s) {
     const Index* nodes = &model.torsion_nodes[4 * s];
     const TorsionSpringResult r =
         torsion_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]], state.x[nodes[3]],
@@ -54,7 +55,10 @@ void add_torsion_spring_forces(ForceContext& context) {
     context.force[nodes[1]] += r.force_i;
     context.force[nodes[2]] += r.force_j;
     context.force[nodes[3]] += r.force_b;
-    context.record_plastic_flow(state.torsion_plastic_set[s], r.plastic_set, r.dissipated);
+    context.record_plastic_flow(s, state.torsion_plastic_set[s], r.plastic_set, r.dissipated);
+  });
+  if (model.torsion_colours.any_yield) {
+    context.book_plastic_flow(model.torsion_count());
   }
 }
 

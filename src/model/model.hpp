@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/spring_colouring.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
@@ -99,6 +100,11 @@ struct Model {
   // face k has nodes face_nodes[face_offsets[k] .. face_offsets[k + 1]).
   std::vector<Index> face_offsets;  // (n_faces + 1)
   std::vector<Index> face_nodes;    // (sum of face sizes)
+
+  // The order the force loops visit each kind in (spring_colouring.hpp).
+  SpringColouring bar_colours;
+  SpringColouring bend_colours;
+  SpringColouring torsion_colours;
 
   std::vector<ModelObject> objects;
   Vec3 gravity = Vec3::Zero();  // m/s²

@@ -200,6 +200,19 @@ void add_object_conditions(const ObjectNodes& object, Model& model) {
   }
 }
 
+void colour_all_springs(Model& model) {
+  const Index n = model.node_count();
+  auto yields = [](const std::vector<double>& yield) {
+    return std::any_of(yield.begin(), yield.end(), [](double y) { return y != kNoYield; });
+  };
+  model.bar_colours = colour_springs(model.bar_nodes, 2, n);
+  model.bar_colours.any_yield = yields(model.bar_yield_force);
+  model.bend_colours = colour_springs(model.bend_nodes, 3, n);
+  model.bend_colours.any_yield = yields(model.bend_yield_moment);
+  model.torsion_colours = colour_springs(model.torsion_nodes, 4, n);
+  model.torsion_colours.any_yield = yields(model.torsion_yield_moment);
+}
+
 // Marks the bars that are an edge of some mesh face, found through each node's bars.
 void mark_bars_on_faces(Model& model) {
   model.bar_on_face.assign(model.bar_count(), 0);
@@ -327,6 +340,7 @@ Model build_model(const SceneDescription& scene) {
   add_fields(scene, objects, model);
   add_wind(scene, model);
   add_ground(scene, model);
+  colour_all_springs(model);
   return model;
 }
 

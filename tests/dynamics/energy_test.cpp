@@ -87,17 +87,19 @@ objects:
 }
 
 // A chain without bending whips: its free end concentrates the energy in fast, tightly curved
-// motion, and after ~20 s of chaotic swinging the energy error at the automatic step reaches a
-// few percent of the kinetic energy. It is discretisation error, not instability nor a booking
-// fault: it falls with the fourth power of the step (measured 0.080 → 0.0055 → 0.0003 J for
-// factors 0.8, 0.4, 0.2 of the limit), so whipping ropes want an explicit, smaller step.
-TEST(Energy, WhippingChainEnergyErrorFallsFastWithTheStep) {
+// motion, and the energy error at the automatic step grows to a few tenths of a percent of the
+// kinetic energy. It is discretisation error, not instability nor a booking fault: the leapfrog's
+// energy error is of second order in the step, so halving the step divides it by about 4
+// (measured 6.3e-5 → 1.5e-5 J over the first 10 000 steps). Later the swinging is chaotic and
+// runs at two steps no longer follow one path, so the comparison stops there; a factor of 3
+// leaves room for that, while a first-order error (a booking fault) would give 2.
+TEST(Energy, WhippingChainEnergyErrorFallsWithTheSquareOfTheStep) {
   const Model model = swinging_chain("bending_pairs: none\n    torsion: false");
   const double limit = critical_timestep(model);
-  const EnergyHistory coarse = run_tracking_energy(model, 100000, 0.8 * limit);
-  const EnergyHistory fine = run_tracking_energy(model, 200000, 0.4 * limit);
+  const EnergyHistory coarse = run_tracking_energy(model, 10000, 0.8 * limit);
+  const EnergyHistory fine = run_tracking_energy(model, 20000, 0.4 * limit);
   ASSERT_GT(coarse.peak_kinetic, 0.5);
-  EXPECT_LT(fine.largest_drift, coarse.largest_drift / 8.0);  // at least third order
+  EXPECT_LT(fine.largest_drift, coarse.largest_drift / 3.0);
 }
 
 TEST(Energy, UndampedFlexibleRodConservesEnergyWithBending) {

@@ -1,0 +1,52 @@
+#pragma once
+// The two ways the force loops and the integrator share work between OpenMP threads without
+// changing a bit of the result: per-node loops, where each iteration writes only its own node,
+// and spring loops taken colour by colour (model/spring_colouring.hpp), where the springs of one
+// colour touch disjoint nodes. No sum anywhere depends on how iterations are scheduled.
+#include "core/types.hpp"
+#include "model/spring_colouring.hpp"
+
+namespace dinam {
+
+// Loops shorter than this run on the calling thread alone: below it, waking the other threads
+// costs more than they save (a few microseconds per loop with libgomp).
+inline constexpr Index kMinParallelItems = 4096;
+
+// body(i) for i in [0, count), each i writing only data of its own.
+// (Short loops never enter the OpenMP runtime at all: even a parallel region that the `if`
+// clause turns off costs about a microsecond, which a small model's step cannot afford.)
+template <class Body>
+void for_each_index(Index count, const Body& body) {
+  if (count < kMinParallelItems) {
+    for (Index i = 0; i < count; ++i) {
+      body(i);
+    }
+    return;
+  }
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < count; ++i) {
+    body(i);
+  }
+}
+
+// body(s) for every spring, colour after colour; within a colour in parallel.
+template <class Body>
+void for_each_spring_by_colour(const SpringColouring& colouring, const Body& body) {
+  const auto count = static_cast<Index>(colouring.order.size());
+  if (count < kMinParallelItems) {
+    for (Index k = 0; k < count; ++k) {
+      body(colouring.order[k]);
+    }
+    return;
+  }
+  for (Index c = 0; c < colouring.colour_count(); ++c) {
+    const Index begin = colouring.offsets[c];
+    const Index end = colouring.offsets[c + 1];
+#pragma omp parallel for schedule(static)
+    for (Index k = begin; k < end; ++k) {
+      body(colouring.order[k]);
+    }
+  }
+}
+
+}  // namespace dinam
