@@ -1,0 +1,166 @@
+// The whole-run figures of docs/performance.md, measured in one run on this machine:
+//   cmake --build build --target bench_whole_run && build/bench/bench_whole_run [path/to/dinam]
+// Each time is the median of several repetitions; the machine is shared, so compare figures
+// from one run only.
+#include <fmt/format.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/draw_list_from_model.hpp"
+#include "app/frame_source.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/stability.hpp"
+#include "io/png_file.hpp"
+#include "model/model.hpp"
+#include "render/osmesa_renderer.hpp"
+#include "scene/scene_description.hpp"
+
+namespace dinam {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The median of `repeats` timings of `run`, in seconds.
+double median_seconds(int repeats, const std::function<void()>& run) {
+  std::vector<double> times;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = Clock::now();
+    run();
+    times.push_back(seconds_since(start));
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+// Resident memory now, bytes (Linux /proc).
+double resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0.0;
+  double resident = 0.0;
+  statm >> pages >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
+Index spring_count(const Model& model) {
+  return model.bar_count() + model.bend_count() + model.torsion_count();
+}
+
+// `steps` steps from the model's initial (for the flag: settled) state on `threads` threads.
+double simulate_seconds(const Model& model, double dt, int steps, int threads) {
+  omp_set_num_threads(threads);
+  State state = initial_state(model, dt);
+  return median_seconds(3, [&] {
+    for (int s = 0; s < steps; ++s) {
+      step(model, dt, {}, state);
+    }
+  });
+}
+
+void report_simulation(const char* name, const Model& model, double dt, int steps) {
+  for (const int threads : {1, 2}) {
+    const double seconds = simulate_seconds(model, dt, steps, threads);
+    fmt::print("{:<34} {} thread{}: {:8.1f} ms for {} steps, {:6.1f} M spring evaluations/s\n",
+               name, threads, threads == 1 ? " " : "s", 1e3 * seconds, steps,
+               1e-6 * static_cast<double>(spring_count(model)) * steps / seconds);
+  }
+}
+
+SceneDescription large_flag() {
+  // About 100 000 bars: a 180 × 180 grid with one diagonal per cell, hung from one edge.
+  return read_scene_text(R"(version: 1
+duration: 1
+objects:
+  - name: cloth
+    mesh:
+      grid: {width: 3.6, height: 3.6, columns: 180, rows: 180, diagonals: one}
+      rotation: [90, 0, 0]
+      translation: [0, 0, 1.0]
+    material: {density: 1200, youngs_modulus: 5.0e6, radius: 0.001}
+    torsion: false
+    pinned: {box: {min: [-0.01, -0.01, 0], max: [0.01, 0.01, 5]}}
+)",
+                         std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/large_flag.yaml");
+}
+
+}  // namespace
+}  // namespace dinam
+
+int main(int argc, char** argv) {
+  using namespace dinam;
+  const std::filesystem::path source = DINAM_SOURCE_DIR;
+  const std::string program = argc > 1 ? argv[1] : (source / "build/dinam").string();
+  fmt::print("dinam whole-run benchmark; {} cores, OpenMP max threads {}\n\n",
+             sysconf(_SC_NPROCESSORS_ONLN), omp_get_max_threads());
+
+  // 1. The paper's flag: 12 000 steps of 0.5 ms from its settled shape.
+  const SceneDescription flag_scene = read_scene(source / "scenes/flag.yaml");
+  const Model flag = build_model(flag_scene);
+  const TimeStep flag_step =
+      choose_timestep(flag, flag_scene.timestep, flag_scene.fps, flag_scene.timestep_loc);
+  report_simulation("paper flag (254 nodes, 587 bars)", flag, flag_step.dt, 12000);
+
+  // 2. A large flag, and what its model and state cost in memory.
+  const double before = resident_bytes();
+  const SceneDescription large_scene = large_flag();
+  const Model large = build_model(large_scene);
+  const double dt = kAutoTimestepSafety * critical_timestep(large);
+  {
+    const State state = initial_state(large, dt);
+    fmt::print("large flag: {} nodes, {} bars, {} springs; model + state {:.0f} bytes per bar\n",
+               large.node_count(), large.bar_count(), spring_count(large),
+               (resident_bytes() - before) / large.bar_count());
+  }
+  report_simulation("large flag", large, dt, 200);
+
+  // 3. Drawing and PNG encoding of the flag at 1280 × 720 with the scene's quality.
+  omp_set_num_threads(2);
+  const SimulatedFrames frames = simulate_frames(flag, flag_step, flag_scene.frame_count(), false);
+  const std::vector<RenderCamera> cameras = frame_cameras(flag_scene, flag, frames);
+  const DrawList list = make_draw_list(flag_scene, flag, motion_bounds(frames.positions));
+  OsmesaRenderer renderer(
+      RenderSettings{flag_scene.image_width, flag_scene.image_height, flag_scene.quality.samples,
+                     flag_scene.quality.shadows ? flag_scene.quality.shadow_resolution : 0});
+  Image image;
+  int frame = 0;
+  const double draw = median_seconds(21, [&] {
+    renderer.render(list, frames.positions[static_cast<std::size_t>(frame)],
+                    cameras[static_cast<std::size_t>(frame)], image);
+    frame = (frame + 7) % static_cast<int>(frames.positions.size());
+  });
+  const std::filesystem::path png = std::filesystem::temp_directory_path() / "dinam_bench.png";
+  const double encode = median_seconds(21, [&] { write_png(png, image); });
+  std::filesystem::remove(png);
+  fmt::print("flag frame 1280x720 (samples {}, shadows {}): draw {:.1f} ms, PNG {:.1f} ms\n",
+             flag_scene.quality.samples, flag_scene.quality.shadows, 1e3 * draw, 1e3 * encode);
+
+  // 4. End to end: the 120-frame movie from the scene file, as a user runs it.
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "dinam_bench_out";
+  const std::string command = fmt::format("'{}' render '{}' -o '{}' -q", program,
+                                          (source / "scenes/flag.yaml").string(), out.string());
+  const double end_to_end = median_seconds(3, [&] {
+    if (std::system(command.c_str()) != 0) {
+      fmt::print(stderr, "failed: {}\n", command);
+      std::exit(1);
+    }
+  });
+  std::filesystem::remove_all(out);
+  fmt::print(
+      "flag movie, 120 frames to mp4, end to end: {:.2f} s ({:.2f} s of it drawing and "
+      "PNG encoding, 120 × (draw + PNG))\n",
+      end_to_end, 120.0 * (draw + encode));
+  fmt::print("resident memory of this program at the end: {:.0f} MB\n", resident_bytes() / 1e6);
+  return 0;
+}
