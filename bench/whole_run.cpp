@@ -130,9 +130,7 @@ int main(int argc, char** argv) {
   const SimulatedFrames frames = simulate_frames(flag, flag_step, flag_scene.frame_count(), false);
   const std::vector<RenderCamera> cameras = frame_cameras(flag_scene, flag, frames);
   const DrawList list = make_draw_list(flag_scene, flag, motion_bounds(frames.positions));
-  OsmesaRenderer renderer(
-      RenderSettings{flag_scene.image_width, flag_scene.image_height, flag_scene.quality.samples,
-                     flag_scene.quality.shadows ? flag_scene.quality.shadow_resolution : 0});
+  OsmesaRenderer renderer(render_settings(flag_scene));
   Image image;
   int frame = 0;
   const double draw = median_seconds(21, [&] {

@@ -9,28 +9,15 @@ per storey, beams and half-diagonals into segments of about 0.2 m. The feet are 
 
     python3 scripts/make-frame-tower.py
 """
-import math
 from pathlib import Path
+
+from wire_mesh import WireMesh
 
 STOREYS, STOREY_HEIGHT, HALF = 5, 0.6, 0.4
 COLUMN_SEGMENTS, SEGMENT = 3, 0.2
 
-vertices, index, edges = [], {}, []
-
-
-def vertex(p):
-    key = tuple(round(c, 9) for c in p)
-    if key not in index:
-        index[key] = len(vertices)
-        vertices.append(key)
-    return index[key]
-
-
-def member(p, q, segments=None):
-    n = segments or max(1, math.ceil(math.dist(p, q) / SEGMENT - 1e-9))
-    ids = [vertex(tuple(a + (b - a) * k / n for a, b in zip(p, q))) for k in range(n + 1)]
-    edges.extend(zip(ids[:-1], ids[1:]))
-
+mesh = WireMesh(SEGMENT)
+member = mesh.member
 
 corners = [(-HALF, -HALF), (HALF, -HALF), (HALF, HALF), (-HALF, HALF)]
 for floor in range(1, STOREYS + 1):
@@ -42,7 +29,8 @@ for floor in range(1, STOREYS + 1):
     for x, y in corners:  # two diagonals, meeting at the floor's centre
         member((x, y, z1), (0.0, 0.0, z1))
 
-assert len({frozenset(e) for e in edges}) == len(edges)
+mesh.check()
+vertices, edges = mesh.vertices, mesh.edges
 lines = ["# dinam scripts/make-frame-tower.py: a five-storey moment frame, z up, feet at z = 0"]
 lines += [f"v {x:.6f} {y:.6f} {z:.6f}" for x, y, z in vertices]
 lines += [f"l {a + 1} {b + 1}" for a, b in edges]

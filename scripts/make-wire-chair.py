@@ -11,31 +11,16 @@ towards +y.
 import math
 from pathlib import Path
 
+from wire_mesh import WireMesh
+
 SEGMENT = 0.075      # m, longest segment
 SEAT, HALF = 0.45, 0.22
 FOOT = 0.25          # half-spread of the feet: the legs lean out a little
 BACK_TOP = 0.95
 BACK_RAIL = SEAT + 4 * (BACK_TOP - SEAT) / 7   # on the 4th of the uprights' 7 joints
 
-vertices = []
-index = {}
-edges = []
-
-
-def vertex(p):
-    key = tuple(round(c, 9) for c in p)
-    if key not in index:
-        index[key] = len(vertices)
-        vertices.append(key)
-    return index[key]
-
-
-def member(p, q):
-    """A straight wire from p to q in equal segments no longer than SEGMENT."""
-    n = max(1, math.ceil(math.dist(p, q) / SEGMENT - 1e-9))
-    ids = [vertex(tuple(a + (b - a) * k / n for a, b in zip(p, q))) for k in range(n + 1)]
-    edges.extend(zip(ids[:-1], ids[1:]))
-
+mesh = WireMesh(SEGMENT)
+member = mesh.member
 
 corners = [(sx * HALF, sy * HALF, SEAT) for sx in (-1, 1) for sy in (-1, 1)]
 for (x, y, z) in corners:                               # legs
@@ -50,14 +35,8 @@ member((-HALF, HALF, BACK_TOP), (HALF, HALF, BACK_TOP))  # its top rail and a mi
 member((-HALF, HALF, BACK_RAIL), (HALF, HALF, BACK_RAIL))
 
 # Slats and rails meet the seat's sides and the uprights at joints they share: one piece of wire.
-assert len(set(frozenset(e) for e in edges)) == len(edges)
-component = {0}
-while True:
-    grown = component | {b for a, b in edges if a in component} | {a for a, b in edges if b in component}
-    if grown == component:
-        break
-    component = grown
-assert len(component) == len(vertices), "the chair falls apart"
+mesh.check()
+vertices, edges = mesh.vertices, mesh.edges
 
 lines = ["ply", "format ascii 1.0", "comment dinam scripts/make-wire-chair.py: a wire chair",
          f"element vertex {len(vertices)}", "property float x", "property float y",

@@ -48,11 +48,6 @@ MovieFormat parse_movie_format(const std::string& text) {
   throw_user_error({}, "--movie takes mp4, gif or none; got '{}'", text);
 }
 
-RenderSettings render_settings(const SceneDescription& scene) {
-  return {scene.image_width, scene.image_height, scene.quality.samples,
-          scene.quality.shadows ? scene.quality.shadow_resolution : 0};
-}
-
 void create_folder(const std::filesystem::path& folder) {
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);

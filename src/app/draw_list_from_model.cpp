@@ -5,6 +5,7 @@
 
 #include "io/png_file.hpp"
 #include "model/model.hpp"
+#include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
@@ -22,6 +23,11 @@ double round_down_nice(double value) {
 }
 
 }  // namespace
+
+RenderSettings render_settings(const SceneDescription& scene) {
+  return {scene.image_width, scene.image_height, scene.quality.samples,
+          scene.quality.shadows ? scene.quality.shadow_resolution : 0};
+}
 
 Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames) {
   Bounds bounds;

@@ -9,6 +9,7 @@
 namespace dinam {
 
 struct Model;
+struct RenderSettings;
 struct SceneDescription;
 
 // Bars become segments and nodes become joints, each object in its colour; the faces of objects
@@ -17,6 +18,9 @@ struct SceneDescription;
 // the model's size, so a cloth of fine threads stays visible. `motion` bounds every frame's
 // positions: the ground and the shadow map are framed on it.
 DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion);
+
+// The renderer's settings from the scene: image size, multisampling, shadow map.
+RenderSettings render_settings(const SceneDescription& scene);
 
 // The bounds of every position of every frame.
 Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames);

@@ -18,9 +18,7 @@ void add_axial_spring_forces(ForceContext& context) {
     context.force[n1] -= r.force_on_n0;
     context.record_plastic_flow(b, state.bar_plastic_set[b], r.plastic_set, r.dissipated);
   });
-  if (model.bar_colours.any_yield) {
-    context.book_plastic_flow(model.bar_count());
-  }
+  context.book_plastic_flow(model.bar_colours);
 }
 
 void add_axial_damper_forces(ForceContext& context) {

@@ -55,9 +55,7 @@ void add_bending_spring_forces(ForceContext& context) {
     context.force[b] += r.force_b;
     context.record_plastic_flow(s, state.bend_plastic_set[s], r.plastic_set, r.dissipated);
   });
-  if (model.bend_colours.any_yield) {
-    context.book_plastic_flow(model.bend_count());
-  }
+  context.book_plastic_flow(model.bend_colours);
 }
 
 double bending_spring_energy(const Model& model, const State& state) {

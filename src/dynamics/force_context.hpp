@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "dynamics/state.hpp"
+#include "model/spring_colouring.hpp"
 
 namespace dinam {
 
@@ -27,12 +28,13 @@ struct ForceContext {
     }
   }
 
-  // After a loop over `count` springs that may have flowed: books their dissipation, summed in
-  // spring order so that the total does not depend on the threads.
-  void book_plastic_flow(Index count) {
-    if (update_history) {
-      for (Index s = 0; s < count; ++s) {
-        state.energy.plastic_dissipation += state.plastic_flow[static_cast<std::size_t>(s)];
+  // After a loop over the springs of one kind: books the dissipation of their flow, summed in
+  // spring order so that the total does not depend on the threads. Nothing to do for a kind
+  // that cannot yield.
+  void book_plastic_flow(const SpringColouring& springs) {
+    if (update_history && springs.any_yield) {
+      for (std::size_t s = 0; s < springs.order.size(); ++s) {
+        state.energy.plastic_dissipation += state.plastic_flow[s];
       }
     }
   }

@@ -57,9 +57,7 @@ void add_torsion_spring_forces(ForceContext& context) {
     context.force[nodes[3]] += r.force_b;
     context.record_plastic_flow(s, state.torsion_plastic_set[s], r.plastic_set, r.dissipated);
   });
-  if (model.torsion_colours.any_yield) {
-    context.book_plastic_flow(model.torsion_count());
-  }
+  context.book_plastic_flow(model.torsion_colours);
 }
 
 double torsion_spring_energy(const Model& model, const State& state) {
