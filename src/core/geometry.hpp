@@ -8,46 +8,51 @@
 
 namespace dinam {
 
-// atan2(y, x) in (−π, π], about four times faster than glibc's and within a few ulps of it: the
-// springs take one per spring per step, which made glibc's atan2 half the cost of a step. Range
-// reduction to |t| ≤ 0.66 and a rational approximation of atan there (Cephes, S. L. Moshier:
-// the coefficients of its atan.c).
+// The dot and cross products of 3-vectors in plain scalar arithmetic. Eigen's own (and its norms)
+// work on SSE packets of two coordinates, which keeps the compiler from vectorising the spring
+// loops across springs (spring_block.hpp); these it vectorises one spring per SIMD lane.
+inline double dot3(const Vec3& a, const Vec3& b) {
+  return a.x() * b.x() + a.y() * b.y() + a.z() * b.z();
+}
+inline Vec3 cross3(const Vec3& a, const Vec3& b) {
+  return {a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
+          a.x() * b.y() - a.y() * b.x()};
+}
+
+// atan2(y, x) in [−π, π], about four times faster than glibc's and within a few ulps of it: the
+// springs take one per spring per step, which made glibc's atan2 half the cost of a step. It is
+// written with selects only, no branches, so that the loops over springs that call it vectorise.
+// The ratio of the smaller to the larger of |x|, |y| is reduced to |t| ≤ tan(π/8) (atan t =
+// π/4 + atan((t − 1)/(t + 1)) above it), where a rational approximation of atan (Cephes, S. L.
+// Moshier: the coefficients of its atan.c, made for |t| ≤ 0.66) is accurate to an ulp.
 inline double fast_atan2(double y, double x) {
-  constexpr double kTan3PiOver8 = 2.41421356237309504880;
-  constexpr double kMoreBits = 6.123233995736765886130e-17;  // π/2 − double(π/2)
-  const double ay = std::abs(y);
+  constexpr double kTanPiOver8 = 0.41421356237309504880;
   const double ax = std::abs(x);
-  if (ax == 0.0 && ay == 0.0) {
-    return std::atan2(y, x);  // signed zeros and the x < 0 case: leave them to libm
-  }
-  // atan of t = min/max-free ratio ay/ax ∈ [0, ∞], reduced as Cephes does.
-  auto atan_small = [](double t) {
-    const double z = t * t;
-    const double p = ((((-8.750608600031904122785e-01 * z - 1.615753718733365076637e+01) * z -
-                        7.500855792314704667340e+01) *
-                           z -
-                       1.228866684490136173410e+02) *
-                          z -
-                      6.485021904942025371773e+01);
-    const double q = (((((z + 2.485846490142306297962e+01) * z + 1.650270098316988542046e+02) * z +
-                        4.328810604912902668951e+02) *
-                           z +
-                       4.853903996359136964868e+02) *
-                          z +
-                      1.945506571482613964425e+02);
-    return t + t * (z * p / q);
-  };
-  double angle = 0.0;
-  if (ay > kTan3PiOver8 * ax) {  // t > tan(3π/8): π/2 − atan(1/t)
-    angle = std::numbers::pi / 2 - atan_small(ax / ay) + kMoreBits;
-  } else if (ay > 0.66 * ax) {  // π/4 + atan((t − 1)/(t + 1))
-    angle = std::numbers::pi / 4 + atan_small((ay - ax) / (ay + ax)) + 0.5 * kMoreBits;
-  } else {
-    angle = atan_small(ay / ax);
-  }
-  if (x < 0.0) {
-    angle = std::numbers::pi - angle;
-  }
+  const double ay = std::abs(y);
+  const bool steep = ay > ax;
+  const double small = steep ? ax : ay;
+  const double large = steep ? ay : ax;
+  const bool upper = small > kTanPiOver8 * large;
+  const double top = upper ? small - large : small;
+  const double bottom = upper ? small + large : large;
+  // bottom is 0 only for x = y = 0, where top is 0 too and the angle is 0.
+  const double t = top / (bottom > 0.0 ? bottom : 1.0);
+  const double z = t * t;
+  const double p = ((((-8.750608600031904122785e-01 * z - 1.615753718733365076637e+01) * z -
+                      7.500855792314704667340e+01) *
+                         z -
+                     1.228866684490136173410e+02) *
+                        z -
+                    6.485021904942025371773e+01);
+  const double q = (((((z + 2.485846490142306297962e+01) * z + 1.650270098316988542046e+02) * z +
+                      4.328810604912902668951e+02) *
+                         z +
+                     4.853903996359136964868e+02) *
+                        z +
+                    1.945506571482613964425e+02);
+  double angle = (upper ? std::numbers::pi / 4 : 0.0) + (t + t * (z * p / q));
+  angle = steep ? std::numbers::pi / 2 - angle : angle;
+  angle = x < 0.0 ? std::numbers::pi - angle : angle;
   return std::copysign(angle, y);
 }
 
@@ -70,14 +75,10 @@ inline double dihedral_angle(const Vec3& xa, const Vec3& xi, const Vec3& xj, con
   return fast_atan2(b2.norm() * b1.dot(n2), n1.dot(n2));
 }
 
-// An angle difference wrapped into (−π, π], so a twist through ±π is measured the short way.
+// An angle difference wrapped into [−π, π), so a twist through ±π is measured the short way.
 inline double wrap_angle(double angle) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  angle = std::fmod(angle + std::numbers::pi, kTwoPi);
-  if (angle <= 0.0) {
-    angle += kTwoPi;
-  }
-  return angle - std::numbers::pi;
+  return angle - kTwoPi * std::floor((angle + std::numbers::pi) / kTwoPi);
 }
 
 }  // namespace dinam

@@ -1,24 +1,26 @@
 #include "dynamics/axial_spring.hpp"
 
 #include "dynamics/parallel_loops.hpp"
+#include "dynamics/spring_block.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
 
 void add_axial_spring_forces(ForceContext& context) {
   const Model& model = context.model;
-  State& state = context.state;
-  for_each_spring_by_colour(model.bar_colours, [&](Index b) {
-    const Index n0 = model.bar_nodes[2 * b];
-    const Index n1 = model.bar_nodes[2 * b + 1];
-    const AxialSpringResult r = axial_spring(state.x[n0], state.x[n1], model.bar_rest_length[b],
-                                             model.bar_axial_stiffness[b], state.bar_plastic_set[b],
-                                             model.bar_yield_force[b]);
-    context.force[n0] += r.force_on_n0;
-    context.force[n1] -= r.force_on_n0;
-    context.record_plastic_flow(b, state.bar_plastic_set[b], r.plastic_set, r.dissipated);
-  });
-  context.book_plastic_flow(model.bar_colours);
+  const SpringArrays springs{model.bar_colours,     model.bar_nodes,
+                             model.bar_rest_length, model.bar_axial_stiffness,
+                             model.bar_yield_force, context.state.bar_plastic_set};
+  add_spring_forces<2>(context, springs,
+                       [](SpringBlock<2>& block, Index k, double plastic_set, double yield) {
+                         const AxialSpringResult r =
+                             axial_spring(block.node_position(0, k), block.node_position(1, k),
+                                          block.rest[k], block.stiffness[k], plastic_set, yield);
+                         block.set_force(0, k, r.force_on_n0);
+                         block.set_force(1, k, -r.force_on_n0);
+                         block.new_plastic_set[k] = r.plastic_set;
+                         block.dissipated[k] = r.dissipated;
+                       });
 }
 
 void add_axial_damper_forces(ForceContext& context) {
@@ -32,8 +34,8 @@ void add_axial_damper_forces(ForceContext& context) {
     const Index n1 = model.bar_nodes[2 * b + 1];
     const Vec3 f0 = axial_damper(state.x[n0], state.x[n1], state.v_half[n0], state.v_half[n1],
                                  model.bar_damping[b]);
-    context.force[n0] += f0;
-    context.force[n1] -= f0;
+    context.add(n0, f0);
+    context.add(n1, -f0);
   });
 }
 

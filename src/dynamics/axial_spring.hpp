@@ -1,8 +1,10 @@
 #pragma once
 // Axial springs and dampers: one per bar, k = EA / L0, elastoplastic in the extension, with a
 // viscous damper on the relative axial velocity of the two ends.
+#include <cmath>
 #include <limits>
 
+#include "core/geometry.hpp"
 #include "core/types.hpp"
 #include "dynamics/elastoplastic.hpp"
 #include "dynamics/force_context.hpp"
@@ -19,16 +21,16 @@ struct AxialSpringResult {
 // The kernel over one bar's two nodes. With d = x1 − x0, L = |d|, n = d / L and the axial force
 // N = k (L − L0 − p) (tension positive, flattened at ±Ny): f0 = N n, f1 = −f0.
 // A bar of zero current length has no direction and gives no force.
+// No branches: the spring loop vectorises (spring_block.hpp).
 inline AxialSpringResult axial_spring(const Vec3& x0, const Vec3& x1, double rest_length,
                                       double stiffness, double plastic_set = 0.0,
                                       double yield = std::numeric_limits<double>::infinity()) {
   const Vec3 d = x1 - x0;
-  const double length = d.norm();
+  const double length = std::sqrt(dot3(d, d));
   const ElastoplasticResult r = elastoplastic(length - rest_length, plastic_set, stiffness, yield);
-  if (length <= 0.0) {
-    return {Vec3::Zero(), r.energy, r.plastic_set, r.dissipated};
-  }
-  return {(r.force / length) * d, r.energy, r.plastic_set, r.dissipated};
+  const double quotient = r.force / (length > 0.0 ? length : 1.0);
+  const double scale = length > 0.0 ? quotient : 0.0;  // N / |d|
+  return {scale * d, r.energy, r.plastic_set, r.dissipated};
 }
 
 // The damper's force on n0: c ((v1 − v0)·n) n, pulling the ends' separation speed to zero.

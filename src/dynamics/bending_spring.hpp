@@ -1,9 +1,12 @@
 #pragma once
 // Bending springs: a rotational spring at node c between the bars c–a and c–b, on the angle θ
 // between them, elastoplastic in θ − θ0.
+#include <cmath>
 #include <limits>
 
+#include "core/geometry.hpp"
 #include "core/types.hpp"
+#include "dynamics/elastoplastic.hpp"
 #include "dynamics/force_context.hpp"
 
 namespace dinam {
@@ -15,17 +18,45 @@ struct BendingSpringResult {
   double dissipated = 0.0;         // J
 };
 
-// With u = (xa − xc)/|xa − xc|, w = (xb − xc)/|xb − xc|, c = u·w, s = |u × w|, θ = atan2(s, c):
-//   ∂θ/∂xa = −(w − c u) / (|xa − xc| s),  ∂θ/∂xb = −(u − c w) / (|xb − xc| s),
+// With e1 = xa − xc, e2 = xb − xc and n = e1 × e2, θ = atan2(|n|, e1·e2) and
+//   ∂θ/∂xa = (e1 × n) / (|e1|² |n|),  ∂θ/∂xb = (n × e2) / (|e2|² |n|),
 //   ∂θ/∂xc = −(∂θ/∂xa + ∂θ/∂xb),
-// each a unit direction in the plane of the bars over a length, and the force is −M ∇θ with
-// M = k (θ − θ0 − p) flattened at ±My. When the bars are (nearly) straight the plane is
-// undefined; then M → 0 for a straight rest angle (the force fades smoothly), and otherwise the
-// force is left out for that one configuration (bounded, no NaN) rather than given a random
-// direction.
-BendingSpringResult bending_spring(const Vec3& xa, const Vec3& xc, const Vec3& xb,
-                                   double rest_angle, double stiffness, double plastic_set = 0.0,
-                                   double yield = std::numeric_limits<double>::infinity());
+// each perpendicular to its bar in the plane of the bars, over the bar's length; the force is
+// −M ∇θ with M = k (θ − θ0 − p) flattened at ±My. One square root and two quotients (one of them
+// in the arctangent's rational approximation) per spring. When the bars are (nearly) straight
+// the plane is undefined; then M → 0 for a straight rest angle (the force fades smoothly), and
+// otherwise the force is left out for that one configuration (bounded, no NaN) rather than given
+// a random direction. A bar of zero length leaves the spring at rest. No branches: the spring
+// loop vectorises (spring_block.hpp).
+inline BendingSpringResult bending_spring(const Vec3& xa, const Vec3& xc, const Vec3& xb,
+                                          double rest_angle, double stiffness,
+                                          double plastic_set = 0.0,
+                                          double yield = std::numeric_limits<double>::infinity()) {
+  // Below this sine of θ, |n| / (|e1| |e2|), the in-plane directions are lost in rounding.
+  constexpr double kMinSine = 1e-9;
+  const Vec3 e1 = xa - xc;
+  const Vec3 e2 = xb - xc;
+  const double l1_squared = dot3(e1, e1);
+  const double l2_squared = dot3(e2, e2);
+  const double lengths_squared = l1_squared * l2_squared;
+  const Vec3 n = cross3(e1, e2);
+  const double n_squared = dot3(n, n);
+  const double n_norm = std::sqrt(n_squared);
+  const double measured = fast_atan2(n_norm, dot3(e1, e2));
+  const double angle = lengths_squared > 0.0 ? measured : rest_angle + plastic_set;
+  const ElastoplasticResult r = elastoplastic(angle - rest_angle, plastic_set, stiffness, yield);
+  const bool has_plane = n_squared > kMinSine * kMinSine * lengths_squared;
+  const double quotient = r.force / (has_plane ? n_norm * lengths_squared : 1.0);
+  const double scale = has_plane ? quotient : 0.0;  // M / (|e1|² |e2|² |n|)
+  BendingSpringResult result;
+  result.force_a = (-scale * l2_squared) * cross3(e1, n);
+  result.force_b = (-scale * l1_squared) * cross3(n, e2);
+  result.force_c = -(result.force_a + result.force_b);
+  result.energy = r.energy;
+  result.plastic_set = r.plastic_set;
+  result.dissipated = r.dissipated;
+  return result;
+}
 
 void add_bending_spring_forces(ForceContext& context);
 double bending_spring_energy(const Model& model, const State& state);

@@ -14,18 +14,18 @@ struct ElastoplasticResult {
 // d is the deformation (extension or change of angle), p the plastic set so far. When the elastic
 // force k (d − p) would exceed the yield value, it is flattened to it and the excess deformation
 // moves into the plastic set, which stays after unloading. yield = ∞ keeps the spring elastic.
+// Selects rather than branches (every quotient is computed, then chosen), so that the spring loops
+// that call it vectorise.
 inline ElastoplasticResult elastoplastic(double deformation, double plastic_set, double stiffness,
                                          double yield) {
   const double trial = stiffness * (deformation - plastic_set);
-  if (std::abs(trial) <= yield) {
-    const double elastic = deformation - plastic_set;
-    return {trial, plastic_set, 0.5 * stiffness * elastic * elastic, 0.0};
-  }
-  const double force = std::copysign(yield, trial);
-  const double new_set = deformation - force / stiffness;
-  const double elastic = force / stiffness;
-  return {force, new_set, 0.5 * stiffness * elastic * elastic,
-          yield * std::abs(new_set - plastic_set)};
+  const bool flows = std::abs(trial) > yield;
+  const double force = flows ? std::copysign(yield, trial) : trial;
+  const double flattened_elastic = force / stiffness;
+  const double elastic = flows ? flattened_elastic : deformation - plastic_set;
+  const double new_set = flows ? deformation - flattened_elastic : plastic_set;
+  const double dissipated = flows ? yield * std::abs(new_set - plastic_set) : 0.0;
+  return {force, new_set, 0.5 * stiffness * elastic * elastic, dissipated};
 }
 
 }  // namespace dinam

@@ -17,7 +17,7 @@ void add_field_forces(ForceContext& context) {
   for (const FieldForce& field : model.fields) {
     const Vec3 value = field.profile(context.state.time) * field.value;
     for (const Index i : field.nodes) {
-      context.force[i] += field.per_unit_mass ? Vec3(model.node_mass[i] * value) : value;
+      context.add(i, field.per_unit_mass ? Vec3(model.node_mass[i] * value) : value);
     }
   }
 }

@@ -13,10 +13,22 @@ struct Model;
 struct ForceContext {
   const Model& model;
   State& state;
-  std::vector<Vec3>& force;  // (n_nodes) N, added to
+  std::vector<Vec3>& force;  // (n_nodes) N, the total, added to
   // False while probing forces without advancing (finite differences, energy reports): plastic
   // sets and contact anchors are then read but not written.
   bool update_history = true;
+  // While the energy is tracked, a dissipative or driving kind (fields, wind, dampers) also adds
+  // its forces to its own array here, whose work the report books; null otherwise. The total is
+  // summed in the same order either way, so tracking cannot change a bit of the motion.
+  std::vector<Vec3>* ledger = nullptr;
+
+  // Adds f to the node's total force and, while tracked, to the kind's ledger.
+  void add(Index node, const Vec3& f) {
+    force[node] += f;
+    if (ledger != nullptr) {
+      (*ledger)[node] += f;
+    }
+  }
 
   // An elastoplastic spring's new plastic set and the work its flow dissipated, kept only when
   // the context advances history. Safe from parallel loops: each spring writes its own slots.

@@ -11,7 +11,7 @@ void add_global_damping_forces(ForceContext& context) {
     return;
   }
   for (Index i = 0; i < model.node_count(); ++i) {
-    context.force[i] -= (alpha * model.node_mass[i]) * context.state.v_half[i];
+    context.add(i, -(alpha * model.node_mass[i]) * context.state.v_half[i]);
   }
 }
 

@@ -38,16 +38,14 @@ ContactForces ground_contact(const GroundContact& ground, double stiffness, doub
   return result;
 }
 
-void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping,
-                               std::vector<Vec3>* friction) {
+void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger,
+                               std::vector<Vec3>* friction_ledger) {
   const Model& model = context.model;
   const GroundContact& ground = model.ground;
   if (!ground.enabled) {
     return;
   }
   State& state = context.state;
-  std::vector<Vec3>& damping_out = damping != nullptr ? *damping : context.force;
-  std::vector<Vec3>& friction_out = friction != nullptr ? *friction : context.force;
   for (Index i = 0; i < model.node_count(); ++i) {
     const double distance = (state.x[i] - ground.point).dot(ground.normal);
     if (distance >= 0.0 || model.pinned(i)) {
@@ -65,8 +63,12 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
         ground_contact(ground, ground.node_stiffness[i], ground.node_damping[i], state.x[i],
                        state.v_half[i], anchor, state.contact_sliding[i] != 0);
     context.force[i] += f.normal_elastic;
-    damping_out[i] += f.normal_damping;
-    friction_out[i] += f.friction;
+    context.force[i] += f.normal_damping;
+    context.force[i] += f.friction;
+    if (damping_ledger != nullptr) {
+      (*damping_ledger)[i] += f.normal_damping;
+      (*friction_ledger)[i] += f.friction;
+    }
     if (context.update_history) {
       state.contact_touching[i] = 1;
       state.contact_anchor[i] = f.anchor;

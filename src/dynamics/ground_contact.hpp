@@ -35,10 +35,11 @@ struct ContactForces {
 ContactForces ground_contact(const GroundContact& ground, double stiffness, double damping,
                              const Vec3& x, const Vec3& v, const Vec3& anchor, bool sliding);
 
-// Adds the contact forces of every free node below the plane. The damping and friction parts go
-// to their own arrays when given (for energy accounts), else into context.force too.
-void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping = nullptr,
-                               std::vector<Vec3>* friction = nullptr);
+// Adds the contact forces of every free node below the plane to context.force: the elastic
+// push, the normal damping and the friction, in that order. While the energy is tracked the
+// damping and the friction also go to their ledgers (both given or both null).
+void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger = nullptr,
+                               std::vector<Vec3>* friction_ledger = nullptr);
 
 double ground_contact_energy(const Model& model, const State& state);  // Σ ½ k d², J
 

@@ -41,10 +41,6 @@ void clear(std::vector<Vec3>& forces) {
   for_each_index(static_cast<Index>(forces.size()), [&](Index i) { forces[i].setZero(); });
 }
 
-void add_into(std::vector<Vec3>& total, const std::vector<Vec3>& part) {
-  for_each_index(static_cast<Index>(total.size()), [&](Index i) { total[i] += part[i]; });
-}
-
 // Δt Σ F_i · v_i with the whole-step velocity v_n = ½ (v_{n−½} + v_{n+½}): the work of a force
 // kind over the step around t_n. It is the trapezoid rule ½ (F_n + F_{n+1}) · Δx summed by parts,
 // and pairs with the kinetic energy reported at whole steps; F_n · Δt v_{n+½} instead would book
@@ -61,14 +57,20 @@ double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_whole, do
 
 void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
                     bool update_history) {
-  // The dissipative and driving kinds always gather in their own arrays and join the total in
-  // one fixed order, so that tracking energy (which reads those arrays) cannot change a bit of the
-  // motion.
-  EnergyWorkspace& parts = state.energy_workspace;
+  // Every kind adds to the total in this fixed order. While the energy is tracked, the
+  // dissipative and driving kinds also keep their own forces in the ledger's arrays, for the
+  // work they do; that does not change the order of the total's sums.
+  EnergyWorkspace& ledger = state.energy_workspace;
+  auto kind = [&](std::vector<Vec3>& part) {
+    return ForceContext{model, state, state.force, update_history,
+                        ledger.enabled ? &part : nullptr};
+  };
   clear(state.force);
-  for (auto* part :
-       {&parts.damping, &parts.contact_damping, &parts.friction, &parts.wind, &parts.field}) {
-    clear(*part);
+  if (ledger.enabled) {
+    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
+                       &ledger.field}) {
+      clear(*part);
+    }
   }
   ForceContext total{model, state, state.force, update_history};
 
@@ -77,12 +79,12 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
     add_gravity_forces(total);
   }
   if (switches.fields) {
-    ForceContext fields{model, state, parts.field, update_history};
+    ForceContext fields = kind(ledger.field);
     add_field_forces(fields);
   }
   // 2. Aerodynamic drag.
   if (switches.wind) {
-    ForceContext wind{model, state, parts.wind, update_history};
+    ForceContext wind = kind(ledger.wind);
     add_wind_forces(wind);
   }
   // 3. Internal elastoplastic springs.
@@ -96,20 +98,17 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
     add_torsion_spring_forces(total);
   }
   // 4. Viscous damping: axial dampers and global friction.
-  ForceContext damping{model, state, parts.damping, update_history};
+  ForceContext damping = kind(ledger.damping);
   if (switches.axial_dampers) {
     add_axial_damper_forces(damping);
   }
   if (switches.global_damping) {
     add_global_damping_forces(damping);
   }
-  // 5. Boundary conditions: the ground (its elastic push with the total).
+  // 5. Boundary conditions: the ground.
   if (switches.ground) {
-    add_ground_contact_forces(total, &parts.contact_damping, &parts.friction);
-  }
-  for (const auto* part :
-       {&parts.damping, &parts.contact_damping, &parts.friction, &parts.wind, &parts.field}) {
-    add_into(state.force, *part);
+    add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
+                              ledger.enabled ? &ledger.friction : nullptr);
   }
 }
 
@@ -132,11 +131,11 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   settle_under_gravity(model, dt, switches, state);
   EnergyWorkspace& ledger = state.energy_workspace;
   ledger.enabled = track_energy;
-  for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
-                     &ledger.field, &ledger.v_previous}) {
-    part->assign(n, Vec3::Zero());
-  }
-  if (track_energy) {
+  if (track_energy) {  // the ledger's arrays exist only then (memory: 144 bytes per node)
+    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
+                       &ledger.field, &ledger.v_previous}) {
+      part->assign(n, Vec3::Zero());
+    }
     ledger.last = energy_report(model, state, state.v_half);
   }
   compute_forces(model, switches, state, false);

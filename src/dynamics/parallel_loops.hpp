@@ -3,6 +3,8 @@
 // changing a bit of the result: per-node loops, where each iteration writes only its own node,
 // and spring loops taken colour by colour (model/spring_colouring.hpp), where the springs of one
 // colour touch disjoint nodes. No sum anywhere depends on how iterations are scheduled.
+#include <algorithm>
+
 #include "core/types.hpp"
 #include "model/spring_colouring.hpp"
 
@@ -45,6 +47,36 @@ void for_each_spring_by_colour(const SpringColouring& colouring, const Body& bod
 #pragma omp parallel for schedule(static)
     for (Index k = begin; k < end; ++k) {
       body(colouring.order[k]);
+    }
+  }
+}
+
+// How many springs one block holds: a block's results (spring_block.hpp) stay in the first-level
+// cache between the pass that computes them and the pass that adds them to the nodes.
+inline constexpr Index kSpringBlockSize = 64;
+
+// body(springs, count) for every spring in blocks of at most kSpringBlockSize ids of one colour
+// (`springs` points into colouring.order), colour after colour; within a colour in parallel.
+template <class Body>
+void for_each_spring_block(const SpringColouring& colouring, const Body& body) {
+  const bool parallel = static_cast<Index>(colouring.order.size()) >= kMinParallelItems;
+  for (Index c = 0; c < colouring.colour_count(); ++c) {
+    const Index begin = colouring.offsets[c];
+    const Index end = colouring.offsets[c + 1];
+    const Index blocks = (end - begin + kSpringBlockSize - 1) / kSpringBlockSize;
+    auto run_block = [&](Index block) {
+      const Index first = begin + block * kSpringBlockSize;
+      body(&colouring.order[first], std::min(kSpringBlockSize, end - first));
+    };
+    if (!parallel) {
+      for (Index block = 0; block < blocks; ++block) {
+        run_block(block);
+      }
+      continue;
+    }
+#pragma omp parallel for schedule(static)
+    for (Index block = 0; block < blocks; ++block) {
+      run_block(block);
     }
   }
 }

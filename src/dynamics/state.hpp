@@ -32,7 +32,8 @@ struct EnergyReport {
   double total = 0.0;  // kinetic + elastic + gravitational + contact − works + dissipation
 };
 
-// The dissipative and driving forces by kind (always), and the energy report (when tracked).
+// The dissipative and driving forces by kind and the energy report, while the energy is tracked
+// (the arrays are empty otherwise).
 struct EnergyWorkspace {
   bool enabled = false;
   std::vector<Vec3> damping;          // (n_nodes) N

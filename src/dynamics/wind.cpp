@@ -123,7 +123,7 @@ void add_wind_forces(ForceContext& context) {
                   wind.field.face_drag) /
         count;
     for (Index k = begin; k < end; ++k) {
-      context.force[model.face_nodes[k]] += force;
+      context.add(model.face_nodes[k], force);
     }
   }
   for (const Index b : wind.bars) {
@@ -134,8 +134,8 @@ void add_wind_forces(ForceContext& context) {
     const Vec3 force = 0.5 * bar_drag(state.x[n1] - state.x[n0], 2.0 * model.bar_radius[b],
                                       wind_velocity(wind.field, middle, state.time) - velocity, rho,
                                       wind.field.bar_drag);
-    context.force[n0] += force;
-    context.force[n1] += force;
+    context.add(n0, force);
+    context.add(n1, force);
   }
 }
 
