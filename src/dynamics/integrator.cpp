@@ -122,11 +122,21 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   state.bar_plastic_set.assign(model.bar_count(), 0.0);
   state.bend_plastic_set.assign(model.bend_count(), 0.0);
   state.torsion_plastic_set.assign(model.torsion_count(), 0.0);
-  state.plastic_flow.assign(
-      std::max({model.bar_count(), model.bend_count(), model.torsion_count()}), 0.0);
-  state.contact_anchor.assign(n, Vec3::Zero());
-  state.contact_touching.assign(n, 0);
-  state.contact_sliding.assign(n, 0);
+  // Scratch for the kinds that can yield, and contact history where there is a ground: an elastic
+  // structure in the air carries neither (memory is part of speed for large models).
+  Index yielding = 0;
+  for (const auto& [colouring, count] :
+       {std::pair{&model.bar_colours, model.bar_count()},
+        std::pair{&model.bend_colours, model.bend_count()},
+        std::pair{&model.torsion_colours, model.torsion_count()}}) {
+    yielding = colouring->any_yield ? std::max(yielding, count) : yielding;
+  }
+  state.plastic_flow.assign(static_cast<std::size_t>(yielding), 0.0);
+  if (model.ground.enabled) {
+    state.contact_anchor.assign(n, Vec3::Zero());
+    state.contact_touching.assign(n, 0);
+    state.contact_sliding.assign(n, 0);
+  }
   place_driven_nodes(model, 0.0, state);
   settle_under_gravity(model, dt, switches, state);
   EnergyWorkspace& ledger = state.energy_workspace;

@@ -305,6 +305,20 @@ void add_ground(const SceneDescription& scene, Model& model) {
   }
 }
 
+// The arrays grew by push_back, to up to twice their length: give the spare capacity back, since
+// a model lives as long as its run.
+void release_spare_capacity(Model& model) {
+  auto shrink = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
+  shrink(model.node_initial_x, model.node_initial_v, model.node_mass, model.node_inv_mass,
+         model.node_object, model.node_uv);
+  shrink(model.bar_nodes, model.bar_rest_length, model.bar_axial_stiffness, model.bar_yield_force,
+         model.bar_damping, model.bar_radius, model.bar_on_face);
+  shrink(model.bend_nodes, model.bend_rest_angle, model.bend_stiffness, model.bend_yield_moment);
+  shrink(model.torsion_nodes, model.torsion_rest_angle, model.torsion_stiffness,
+         model.torsion_yield_moment);
+  shrink(model.face_offsets, model.face_nodes, model.wind.faces, model.wind.bars);
+}
+
 }  // namespace
 
 double Model::total_mass() const {
@@ -341,6 +355,7 @@ Model build_model(const SceneDescription& scene) {
   add_wind(scene, model);
   add_ground(scene, model);
   colour_all_springs(model);
+  release_spare_capacity(model);
   return model;
 }
 
