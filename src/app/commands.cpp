@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <set>
 #include <system_error>
@@ -12,6 +13,7 @@
 #include "app/energy_csv.hpp"
 #include "app/frame_range.hpp"
 #include "app/frame_source.hpp"
+#include "app/frame_writer.hpp"
 #include "app/progress.hpp"
 #include "core/error.hpp"
 #include "dynamics/stability.hpp"
@@ -114,43 +116,47 @@ int run_render(const RenderOptions& options) {
     energy_csv->close();
   }
 
-  // 2. Draw and write the frames.
+  // 2. Draw the frames; a thread of their own writes them (PNG) and feeds them to ffmpeg, which
+  //    encodes the movie meanwhile.
   const DrawList draw_list = make_draw_list(scene, model, motion_bounds(frames.positions));
   const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
-  const int digits = frame_number_digits(scene.frame_count());
-  Progress progress(range.count(), !options.quiet, "draw");
-  const auto draw_start = Clock::now();
-  draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
-              [&](int frame, const Image& image) {
-                write_png(folder / fmt::format("frame_{:0{}}.png", frame, digits), image);
-                progress.update(frame - range.first + 1,
-                                fmt::format("draw and write {:.1f} s", seconds_since(draw_start)));
-              });
-  progress.finish();
-  const double draw_seconds = seconds_since(draw_start);
-
-  // 3. The movie.
   int exit_code = kExitOk;
   std::string movie_note;
+  std::unique_ptr<MovieEncoder> movie;
+  std::filesystem::path movie_path;
   if (scene.movie != MovieFormat::kNone) {
     const bool gif = scene.movie == MovieFormat::kGif;
-    const std::filesystem::path movie = folder / (scene.name + (gif ? ".gif" : ".mp4"));
-    MovieRequest request{folder / fmt::format("frame_%0{}d.png", digits),
-                         range.first,
-                         range.count(),
-                         scene.fps,
-                         movie,
-                         gif};
-    if (encode_movie(request) == MovieOutcome::kWritten) {
-      movie_note = fmt::format(", movie {}", movie.string());
-    } else {
+    movie_path = folder / (scene.name + (gif ? ".gif" : ".mp4"));
+    movie =
+        MovieEncoder::start({scene.image_width, scene.image_height, scene.fps, movie_path, gif});
+    if (!movie) {
       fmt::print(stderr,
-                 "dinam: ffmpeg was not found, so no movie was made; the frames are in {}. "
-                 "Install it with: sudo apt-get install ffmpeg\n",
+                 "dinam: ffmpeg was not found, so no movie will be made; the frames will be in "
+                 "{}. Install it with: sudo apt-get install ffmpeg\n",
                  folder.string());
       exit_code = kExitFailure;
     }
+  }
+  Progress progress(range.count(), !options.quiet, "draw");
+  const auto draw_start = Clock::now();
+  {
+    FrameWriter writer(folder, frame_number_digits(scene.frame_count()), movie.get());
+    draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
+                [&](int frame, const Image& image) {
+                  writer.write(frame, image);
+                  progress.update(frame - range.first + 1, fmt::format("draw and write {:.1f} s",
+                                                                       seconds_since(draw_start)));
+                });
+    writer.finish();
+  }
+  progress.finish();
+  const double draw_seconds = seconds_since(draw_start);
+
+  // 3. The movie: ffmpeg finishes what it has been encoding all along.
+  if (movie) {
+    movie->finish();
+    movie_note = fmt::format(", movie {}", movie_path.string());
   }
   if (!options.quiet) {
     fmt::print("dinam: {} frames in {}{} ({:.1f} s: simulate {:.2f} s, draw and write {:.2f} s)\n",

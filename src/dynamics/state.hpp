@@ -56,7 +56,8 @@ struct State {
   std::vector<double> bar_plastic_set;      // (n_bars) m
   std::vector<double> bend_plastic_set;     // (n_bends) rad
   std::vector<double> torsion_plastic_set;  // (n_torsions) rad
-  std::vector<double> plastic_flow;  // (most springs of a kind that yields) J, scratch: each one's last flow
+  std::vector<double>
+      plastic_flow;  // (most springs of a kind that yields) J, scratch: each one's last flow
 
   // Ground contact history (empty without a ground): where each node's stick spring is anchored
   // on the plane, and whether it is sliding (kinetic friction) or sticking (static).
