@@ -1,10 +1,17 @@
-// Time of one integration step on the shipped flag, after a warm-up from its initial state.
-// Reports spring evaluations per second (items) and, as the counter movie_sim, the time the
-// whole 120-frame simulation takes at the scene's step.
+// The integration step and the spring kernels, with Google Benchmark:
+//   cmake --build build --target bench_step && build/bench/bench_step
+// flag_step is one step of the paper's flag (its counter movie_sim: the 12 000 steps of its
+// movie at that rate); the kernel benchmarks add one kind of spring force over the large flag
+// (about 100 000 of each kind), on 1 and 2 OpenMP threads, as spring evaluations per second.
 #include <benchmark/benchmark.h>
+#include <omp.h>
 
+#include "bench_scenes.hpp"
+#include "dynamics/axial_spring.hpp"
+#include "dynamics/bending_spring.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
+#include "dynamics/torsion_spring.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
@@ -24,7 +31,8 @@ void flag_step(benchmark::State& bench) {
   for (auto _ : bench) {
     step(model, timestep.dt, forces, state);
   }
-  bench.SetItemsProcessed(bench.iterations() * model.bar_count());
+  bench.SetItemsProcessed(bench.iterations() *
+                          (model.bar_count() + model.bend_count() + model.torsion_count()));
   const double steps_per_movie = (scene.frame_count() - 1.0) * timestep.steps_per_frame;
   // kIsRate divides by the elapsed seconds and kInvert flips it: elapsed × steps / iterations,
   // printed in seconds with an SI prefix (90.8m is 90.8 ms).
@@ -34,6 +42,54 @@ void flag_step(benchmark::State& bench) {
   bench.counters["bars"] = model.bar_count();
 }
 BENCHMARK(flag_step);
+
+// The large flag (with torsion springs), 50 steps into its fall so that every spring is loaded.
+struct LargeFlag {
+  Model model;
+  State state;
+  LargeFlag() : model(build_model(large_flag_scene(true))) {
+    const double dt = kAutoTimestepSafety * critical_timestep(model);
+    state = initial_state(model, dt);
+    for (int s = 0; s < 50; ++s) {
+      step(model, dt, {}, state);
+    }
+  }
+};
+
+const LargeFlag& large_flag() {
+  static const LargeFlag flag;
+  return flag;
+}
+
+// One kind's forces added over the whole large flag per iteration; range(0) is the thread count.
+template <void (*AddForces)(ForceContext&), Index (Model::*Count)() const>
+void spring_kernel(benchmark::State& bench) {
+  const LargeFlag& flag = large_flag();
+  State state = flag.state;
+  omp_set_num_threads(static_cast<int>(bench.range(0)));
+  ForceContext context{flag.model, state, state.force, false};
+  for (auto _ : bench) {
+    AddForces(context);
+    benchmark::DoNotOptimize(state.force.data());
+    benchmark::ClobberMemory();
+  }
+  bench.SetItemsProcessed(bench.iterations() * (flag.model.*Count)());
+}
+BENCHMARK(spring_kernel<add_axial_spring_forces, &Model::bar_count>)
+    ->Name("axial_springs")
+    ->Arg(1)
+    ->Arg(2)
+    ->UseRealTime();
+BENCHMARK(spring_kernel<add_bending_spring_forces, &Model::bend_count>)
+    ->Name("bending_springs")
+    ->Arg(1)
+    ->Arg(2)
+    ->UseRealTime();
+BENCHMARK(spring_kernel<add_torsion_spring_forces, &Model::torsion_count>)
+    ->Name("torsion_springs")
+    ->Arg(1)
+    ->Arg(2)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace dinam

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/draw_list_from_model.hpp"
+#include "bench_scenes.hpp"
 #include "app/frame_source.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
@@ -79,23 +80,6 @@ void report_simulation(const char* name, const Model& model, double dt, int step
   }
 }
 
-SceneDescription large_flag() {
-  // About 100 000 bars: a 180 × 180 grid with one diagonal per cell, hung from one edge.
-  return read_scene_text(R"(version: 1
-duration: 1
-objects:
-  - name: cloth
-    mesh:
-      grid: {width: 3.6, height: 3.6, columns: 180, rows: 180, diagonals: one}
-      rotation: [90, 0, 0]
-      translation: [0, 0, 1.0]
-    material: {density: 1200, youngs_modulus: 5.0e6, radius: 0.001}
-    torsion: false
-    pinned: {box: {min: [-0.01, -0.01, 0], max: [0.01, 0.01, 5]}}
-)",
-                         std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/large_flag.yaml");
-}
-
 }  // namespace
 }  // namespace dinam
 
@@ -114,7 +98,7 @@ int main(int argc, char** argv) {
   report_simulation("paper flag (254 nodes, 587 bars)", flag, flag_step.dt, 12000);
 
   // 2. A large flag, and what its model and state cost in memory.
-  const SceneDescription large_scene = large_flag();
+  const SceneDescription large_scene = large_flag_scene();
   const double before = heap_bytes_in_use();
   const Model large = build_model(large_scene);
   const double dt = kAutoTimestepSafety * critical_timestep(large);

@@ -25,7 +25,7 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b) {
 // The ratio of the smaller to the larger of |x|, |y| is reduced to |t| ≤ tan(π/8) (atan t =
 // π/4 + atan((t − 1)/(t + 1)) above it), where a rational approximation of atan (Cephes, S. L.
 // Moshier: the coefficients of its atan.c, made for |t| ≤ 0.66) is accurate to an ulp.
-inline double fast_atan2(double y, double x) {
+[[gnu::always_inline]] inline double fast_atan2(double y, double x) {
   constexpr double kTanPiOver8 = 0.41421356237309504880;
   const double ax = std::abs(x);
   const double ay = std::abs(y);

@@ -22,9 +22,9 @@ struct AxialSpringResult {
 // N = k (L − L0 − p) (tension positive, flattened at ±Ny): f0 = N n, f1 = −f0.
 // A bar of zero current length has no direction and gives no force.
 // No branches: the spring loop vectorises (spring_block.hpp).
-inline AxialSpringResult axial_spring(const Vec3& x0, const Vec3& x1, double rest_length,
-                                      double stiffness, double plastic_set = 0.0,
-                                      double yield = std::numeric_limits<double>::infinity()) {
+[[gnu::always_inline]] inline AxialSpringResult axial_spring(
+    const Vec3& x0, const Vec3& x1, double rest_length, double stiffness, double plastic_set = 0.0,
+    double yield = std::numeric_limits<double>::infinity()) {
   const Vec3 d = x1 - x0;
   const double length = std::sqrt(dot3(d, d));
   const ElastoplasticResult r = elastoplastic(length - rest_length, plastic_set, stiffness, yield);

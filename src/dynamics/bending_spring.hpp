@@ -28,10 +28,9 @@ struct BendingSpringResult {
 // otherwise the force is left out for that one configuration (bounded, no NaN) rather than given
 // a random direction. A bar of zero length leaves the spring at rest. No branches: the spring
 // loop vectorises (spring_block.hpp).
-inline BendingSpringResult bending_spring(const Vec3& xa, const Vec3& xc, const Vec3& xb,
-                                          double rest_angle, double stiffness,
-                                          double plastic_set = 0.0,
-                                          double yield = std::numeric_limits<double>::infinity()) {
+[[gnu::always_inline]] inline BendingSpringResult bending_spring(
+    const Vec3& xa, const Vec3& xc, const Vec3& xb, double rest_angle, double stiffness,
+    double plastic_set = 0.0, double yield = std::numeric_limits<double>::infinity()) {
   // Below this sine of θ, |n| / (|e1| |e2|), the in-plane directions are lost in rounding.
   constexpr double kMinSine = 1e-9;
   const Vec3 e1 = xa - xc;

@@ -16,8 +16,9 @@ struct ElastoplasticResult {
 // moves into the plastic set, which stays after unloading. yield = ∞ keeps the spring elastic.
 // Selects rather than branches (every quotient is computed, then chosen), so that the spring loops
 // that call it vectorise.
-inline ElastoplasticResult elastoplastic(double deformation, double plastic_set, double stiffness,
-                                         double yield) {
+[[gnu::always_inline]] inline ElastoplasticResult elastoplastic(double deformation,
+                                                                double plastic_set,
+                                                                double stiffness, double yield) {
   const double trial = stiffness * (deformation - plastic_set);
   const bool flows = std::abs(trial) > yield;
   const double force = flows ? std::copysign(yield, trial) : trial;

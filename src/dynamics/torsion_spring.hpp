@@ -30,11 +30,12 @@ struct TorsionSpringResult {
 // and the force is −T ∇φ with T = k wrap(φ − φ0 − p) flattened at ±Ty. If a reference bar
 // swings into line with the axis (|n| → 0) the plane is lost and the force is left out for that
 // configuration rather than made infinite.
-// No branches: the spring loop vectorises (spring_block.hpp).
-inline TorsionSpringResult torsion_spring(const Vec3& xa, const Vec3& xi, const Vec3& xj,
-                                          const Vec3& xb, double rest_angle, double stiffness,
-                                          double plastic_set = 0.0,
-                                          double yield = std::numeric_limits<double>::infinity()) {
+// No branches: the spring loop vectorises (spring_block.hpp), provided the kernel is inlined into
+// it, which the compiler would not do by itself for one this long.
+[[gnu::always_inline]] inline TorsionSpringResult torsion_spring(
+    const Vec3& xa, const Vec3& xi, const Vec3& xj, const Vec3& xb, double rest_angle,
+    double stiffness, double plastic_set = 0.0,
+    double yield = std::numeric_limits<double>::infinity()) {
   const Vec3 b1 = xi - xa;
   const Vec3 b2 = xj - xi;
   const Vec3 b3 = xb - xj;

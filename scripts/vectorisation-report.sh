@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Which loops of the spring kernels GCC vectorised, from its own report (-fopt-info-vec), with
+# the flags of the existing build (build/compile_commands.json):
+#   scripts/vectorisation-report.sh [build-folder]
+# Each kind of spring should show two vectorised compute loops (elastic, and yielding), at the
+# build's widest vectors (32 bytes with x86-64-v3), beside the gathers of the yield values.
+set -euo pipefail
+build=${1:-build}
+source_dir=$(cd "$(dirname "$0")/.." && pwd)
+for kind in axial bending torsion; do
+  file="$source_dir/src/dynamics/${kind}_spring.cpp"
+  command=$(python3 -c '
+import json, sys
+for entry in json.load(open(sys.argv[1])):
+    if entry["file"] == sys.argv[2]:
+        print(entry["command"])
+        break
+' "$build/compile_commands.json" "$file")
+  if [[ -z $command ]]; then
+    echo "no compile command for $file in $build/compile_commands.json" >&2
+    exit 1
+  fi
+  # The same compiler and flags, writing the object and the report to a scratch folder.
+  scratch=$(mktemp -d)
+  (cd "$build" && eval "$command" -fopt-info-vec-optimized="$scratch/report.txt" -o "$scratch/kernel.o")
+  echo "== ${kind} springs: vectorised loops"
+  grep -E "loop vectorized" "$scratch/report.txt" | sed "s|$source_dir/||" | sort | uniq
+  rm -rf "$scratch"
+done
