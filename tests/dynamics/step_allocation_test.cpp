@@ -1,0 +1,109 @@
+// A step allocates nothing: every array it needs exists from initial_state on. Counted through
+// the global operator new, which this test program (and only it) replaces.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "dynamics/integrator.hpp"
+#include "dynamics/parallel_loops.hpp"
+#include "dynamics/stability.hpp"
+#include "model/model.hpp"
+#include "test_support.hpp"
+
+namespace {
+std::atomic<long> allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* memory = std::malloc(size == 0 ? 1 : size)) {
+    return memory;
+  }
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t size) {
+  return operator new(size);
+}
+void operator delete(void* memory) noexcept {
+  std::free(memory);
+}
+void operator delete[](void* memory) noexcept {
+  std::free(memory);
+}
+void operator delete(void* memory, std::size_t) noexcept {
+  std::free(memory);
+}
+void operator delete[](void* memory, std::size_t) noexcept {
+  std::free(memory);
+}
+
+namespace dinam {
+namespace {
+
+// Allocations made by `steps` steps after a few to warm up (OpenMP's thread pool starts then).
+long allocations_in_steps(const Model& model, bool track_energy, int steps) {
+  const double dt = 0.8 * critical_timestep(model);
+  State state = initial_state(model, dt, {}, track_energy);
+  for (int s = 0; s < 5; ++s) {
+    step(model, dt, {}, state);
+  }
+  const long before = allocations.load();
+  for (int s = 0; s < steps; ++s) {
+    step(model, dt, {}, state);
+  }
+  return allocations.load() - before;
+}
+
+// Every kind of force at once: fields, wind on faces and bars, yielding axial, bending and
+// torsion springs, dampers, global damping and the ground; small (serial loops) and large
+// (parallel loops), with and without the energy report.
+Model every_force(int cells) {
+  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+damping: {{global: 0.1}}
+wind: {{velocity: [3, 0, 0], turbulence: {{amplitude: 1}}}}
+ground: {{height: 0.5}}
+forces:
+  - {{acceleration: [0, 2, 0], object: cloth, profile: {{type: ramp, start: 0, end: 1}}}}
+objects:
+  - name: cloth
+    mesh:
+      grid: {{width: 1.2, height: 1.2, columns: {0}, rows: {0}, diagonals: one}}
+      translation: [0, 0, 0.6]
+    material: {{density: 1200, youngs_modulus: 2.0e7, radius: 0.001, yield_stress: 2.0e5}}
+    pinned: {{box: {{min: [-1, -1, 0], max: [0.001, 2, 1]}}}}
+    damping: {{axial_ratio: 0.05}}
+    initial_velocity: [0, 0, -3]
+  - name: rope
+    mesh:
+      polyline: {{points: [[0, 0, 1.5], [1, 0, 1.5]], segments: 10}}
+    material: {{density: 1200, youngs_modulus: 2.0e7, radius: 0.002}}
+    pinned: {{indices: [0]}}
+)",
+                                                       cells)));
+}
+
+TEST(StepAllocation, AStepAllocatesNothing) {
+  const Model small = every_force(10);
+  EXPECT_EQ(allocations_in_steps(small, false, 50), 0);
+  EXPECT_EQ(allocations_in_steps(small, true, 50), 0);
+  const Model large = every_force(80);
+  ASSERT_GE(large.bend_count(), kMinParallelItems);  // its spring loops run in parallel
+  EXPECT_EQ(allocations_in_steps(large, false, 5), 0);
+  EXPECT_EQ(allocations_in_steps(large, true, 5), 0);
+}
+
+// The counter itself works: a vector that grows is seen.
+TEST(StepAllocation, TheCounterSeesAnAllocation) {
+  const long before = allocations.load();
+  std::vector<double> grown(100);
+  EXPECT_GT(allocations.load(), before);
+}
+
+}  // namespace
+}  // namespace dinam
