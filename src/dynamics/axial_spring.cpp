@@ -28,6 +28,9 @@ void add_axial_spring_forces(ForceContext& context) {
 void add_axial_damper_forces(ForceContext& context) {
   const Model& model = context.model;
   const State& state = context.state;
+  if (!model.any_bar_damping) {
+    return;
+  }
   for_each_spring_by_colour(model.bar_colours, [&](Index b) {
     if (model.bar_damping[b] == 0.0) {
       return;

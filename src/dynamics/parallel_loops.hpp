@@ -55,28 +55,28 @@ void for_each_spring_by_colour(const SpringColouring& colouring, const Body& bod
 // cache between the pass that computes them and the pass that adds them to the nodes.
 inline constexpr Index kSpringBlockSize = 64;
 
-// body(springs, count) for every spring in blocks of at most kSpringBlockSize ids of one colour
-// (`springs` points into colouring.order), colour after colour; within a colour in parallel.
+// body(springs, count) for every spring in blocks of at most kSpringBlockSize consecutive ids of
+// colouring.order (`springs` points into it). In parallel, a block holds springs of one colour
+// and the blocks of a colour are shared between threads, colour after colour. A short loop runs
+// on the calling thread and its blocks may span colours, since it visits the order in sequence
+// anyway: fewer, fuller blocks, and the same order of sums as the parallel loop.
 template <class Body>
 void for_each_spring_block(const SpringColouring& colouring, const Body& body) {
-  const bool parallel = static_cast<Index>(colouring.order.size()) >= kMinParallelItems;
+  const auto count = static_cast<Index>(colouring.order.size());
+  if (count < kMinParallelItems) {
+    for (Index first = 0; first < count; first += kSpringBlockSize) {
+      body(&colouring.order[first], std::min(kSpringBlockSize, count - first));
+    }
+    return;
+  }
   for (Index c = 0; c < colouring.colour_count(); ++c) {
     const Index begin = colouring.offsets[c];
     const Index end = colouring.offsets[c + 1];
     const Index blocks = (end - begin + kSpringBlockSize - 1) / kSpringBlockSize;
-    auto run_block = [&](Index block) {
-      const Index first = begin + block * kSpringBlockSize;
-      body(&colouring.order[first], std::min(kSpringBlockSize, end - first));
-    };
-    if (!parallel) {
-      for (Index block = 0; block < blocks; ++block) {
-        run_block(block);
-      }
-      continue;
-    }
 #pragma omp parallel for schedule(static)
     for (Index block = 0; block < blocks; ++block) {
-      run_block(block);
+      const Index first = begin + block * kSpringBlockSize;
+      body(&colouring.order[first], std::min(kSpringBlockSize, end - first));
     }
   }
 }

@@ -197,6 +197,7 @@ void add_object_conditions(const ObjectNodes& object, Model& model) {
     model.bar_damping[b] =
         desc.axial_damping.coefficient +
         2.0 * desc.axial_damping.ratio * std::sqrt(model.bar_axial_stiffness[b] * reduced_mass);
+    model.any_bar_damping = model.any_bar_damping || model.bar_damping[b] != 0.0;
   }
 }
 
