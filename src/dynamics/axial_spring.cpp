@@ -31,7 +31,7 @@ void add_axial_damper_forces(ForceContext& context) {
   if (!model.any_bar_damping) {
     return;
   }
-  for_each_spring_by_colour(model.bar_colours, [&](Index b) {
+  for_each_spring(model.bar_colours, [&](Index b) {
     if (model.bar_damping[b] == 0.0) {
       return;
     }

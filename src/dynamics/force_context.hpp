@@ -45,7 +45,7 @@ struct ForceContext {
   // that cannot yield.
   void book_plastic_flow(const SpringColouring& springs) {
     if (update_history && springs.any_yield) {
-      for (std::size_t s = 0; s < springs.order.size(); ++s) {
+      for (Index s = 0; s < springs.spring_count; ++s) {
         state.energy.plastic_dissipation += state.plastic_flow[s];
       }
     }

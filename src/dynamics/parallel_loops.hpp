@@ -1,8 +1,9 @@
 #pragma once
 // The two ways the force loops and the integrator share work between OpenMP threads without
 // changing a bit of the result: per-node loops, where each iteration writes only its own node,
-// and spring loops taken colour by colour (model/spring_colouring.hpp), where the springs of one
-// colour touch disjoint nodes. No sum anywhere depends on how iterations are scheduled.
+// and spring loops taken colour by colour (model/spring_colouring.hpp), where the blocks of
+// springs of one colour touch disjoint nodes. No sum anywhere depends on how iterations are
+// scheduled.
 #include <algorithm>
 
 #include "core/types.hpp"
@@ -31,54 +32,40 @@ void for_each_index(Index count, const Body& body) {
   }
 }
 
-// body(s) for every spring, colour after colour; within a colour in parallel.
+// body(first, count) for every block of springs (model/spring_colouring.hpp), the springs
+// [first, first + count) in one call, colour after colour; the blocks of a colour in parallel.
+// A kind with fewer springs than kMinParallelItems runs on the calling thread, in the same order.
 template <class Body>
-void for_each_spring_by_colour(const SpringColouring& colouring, const Body& body) {
-  const auto count = static_cast<Index>(colouring.order.size());
-  if (count < kMinParallelItems) {
-    for (Index k = 0; k < count; ++k) {
-      body(colouring.order[k]);
-    }
-    return;
-  }
+void for_each_spring_block(const SpringColouring& colouring, const Body& body) {
+  auto run_block = [&](Index k) {
+    const Index block = colouring.blocks[k];
+    body(SpringColouring::first_spring(block), colouring.block_size(block));
+  };
+  const bool parallel = colouring.spring_count >= kMinParallelItems;
   for (Index c = 0; c < colouring.colour_count(); ++c) {
     const Index begin = colouring.offsets[c];
     const Index end = colouring.offsets[c + 1];
+    if (!parallel) {
+      for (Index k = begin; k < end; ++k) {
+        run_block(k);
+      }
+      continue;
+    }
 #pragma omp parallel for schedule(static)
     for (Index k = begin; k < end; ++k) {
-      body(colouring.order[k]);
+      run_block(k);
     }
   }
 }
 
-// How many springs one block holds: a block's results (spring_block.hpp) stay in the first-level
-// cache between the pass that computes them and the pass that adds them to the nodes.
-inline constexpr Index kSpringBlockSize = 64;
-
-// body(springs, count) for every spring in blocks of at most kSpringBlockSize consecutive ids of
-// colouring.order (`springs` points into it). In parallel, a block holds springs of one colour
-// and the blocks of a colour are shared between threads, colour after colour. A short loop runs
-// on the calling thread and its blocks may span colours, since it visits the order in sequence
-// anyway: fewer, fuller blocks, and the same order of sums as the parallel loop.
+// body(s) for every spring, in the order and with the sharing of for_each_spring_block.
 template <class Body>
-void for_each_spring_block(const SpringColouring& colouring, const Body& body) {
-  const auto count = static_cast<Index>(colouring.order.size());
-  if (count < kMinParallelItems) {
-    for (Index first = 0; first < count; first += kSpringBlockSize) {
-      body(&colouring.order[first], std::min(kSpringBlockSize, count - first));
+void for_each_spring(const SpringColouring& colouring, const Body& body) {
+  for_each_spring_block(colouring, [&](Index first, Index count) {
+    for (Index s = first; s < first + count; ++s) {
+      body(s);
     }
-    return;
-  }
-  for (Index c = 0; c < colouring.colour_count(); ++c) {
-    const Index begin = colouring.offsets[c];
-    const Index end = colouring.offsets[c + 1];
-    const Index blocks = (end - begin + kSpringBlockSize - 1) / kSpringBlockSize;
-#pragma omp parallel for schedule(static)
-    for (Index block = 0; block < blocks; ++block) {
-      const Index first = begin + block * kSpringBlockSize;
-      body(&colouring.order[first], std::min(kSpringBlockSize, end - first));
-    }
-  }
+  });
 }
 
 }  // namespace dinam

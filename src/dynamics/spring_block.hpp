@@ -1,13 +1,15 @@
 #pragma once
-// Spring forces in blocks of one colour (parallel_loops.hpp), in three passes per block:
+// Spring forces by blocks of consecutive springs (model/spring_colouring.hpp), in three passes
+// per block:
 //   1. gather: copy each spring's node positions and parameters into the block, one array per
 //      quantity (structure of arrays);
 //   2. compute: run the spring's kernel on every spring of the block, one spring per SIMD lane;
 //      the loop reads and writes only the block's arrays, without branches, so it vectorises;
 //   3. scatter: add the forces to the nodes and keep the plastic flow.
 // Passes 1 and 3 are scalar loads and stores through the node ids; pass 2, where the arithmetic
-// is, would not vectorise with them inside (the compiler cannot gather through two levels of
-// indices, nor scatter to nodes).
+// is, would not vectorise with them inside (the compiler cannot scatter to the nodes, and the
+// x86-64 baseline has no gather either).
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -78,45 +80,40 @@ void compute_spring_block(SpringBlock<kNodes>& block, Index count, bool may_yiel
   }
 }
 
-// Adds the forces of every spring of one kind to context.force, colour by colour, and keeps the
-// plastic flow when the context advances history.
+// Adds the forces of every spring of one kind to context.force, block by block in the colouring's
+// order, and keeps the plastic flow when the context advances history.
 template <int kNodes, class Kernel>
 void add_spring_forces(ForceContext& context, const SpringArrays& springs, const Kernel& kernel) {
   const bool may_yield = springs.colouring.any_yield;
   const Vec3* x = context.state.x.data();
   Vec3* force = context.force.data();
-  const Index* spring_nodes = springs.nodes.data();
-  for_each_spring_block(springs.colouring, [&](const Index* ids, Index count) {
+  for_each_spring_block(springs.colouring, [&](Index first, Index count) {
+    const Index* spring_nodes = &springs.nodes[static_cast<std::size_t>(kNodes) * first];
     SpringBlock<kNodes> block;
     for (Index k = 0; k < count; ++k) {
-      const Index s = ids[k];
-      const Index* nodes = &spring_nodes[static_cast<std::size_t>(kNodes) * s];
       for (int j = 0; j < kNodes; ++j) {
-        const Vec3& p = x[nodes[j]];
+        const Vec3& p = x[spring_nodes[kNodes * k + j]];
         block.position[j][0][k] = p.x();
         block.position[j][1][k] = p.y();
         block.position[j][2][k] = p.z();
       }
-      block.rest[k] = springs.rest[s];
-      block.stiffness[k] = springs.stiffness[s];
     }
+    std::copy_n(&springs.rest[first], count, block.rest);
+    std::copy_n(&springs.stiffness[first], count, block.stiffness);
     if (may_yield) {
-      for (Index k = 0; k < count; ++k) {
-        block.yield[k] = springs.yield[ids[k]];
-        block.plastic_set[k] = springs.plastic_set[ids[k]];
-      }
+      std::copy_n(&springs.yield[first], count, block.yield);
+      std::copy_n(&springs.plastic_set[first], count, block.plastic_set);
     }
     compute_spring_block(block, count, may_yield, kernel);
     for (Index k = 0; k < count; ++k) {
-      const Index* nodes = &spring_nodes[static_cast<std::size_t>(kNodes) * ids[k]];
       for (int j = 0; j < kNodes; ++j) {
-        force[nodes[j]] += block.node_force(j, k);
+        force[spring_nodes[kNodes * k + j]] += block.node_force(j, k);
       }
     }
     if (may_yield) {
       for (Index k = 0; k < count; ++k) {
-        context.record_plastic_flow(ids[k], springs.plastic_set[ids[k]], block.new_plastic_set[k],
-                                    block.dissipated[k]);
+        context.record_plastic_flow(first + k, springs.plastic_set[first + k],
+                                    block.new_plastic_set[k], block.dissipated[k]);
       }
     }
   });
