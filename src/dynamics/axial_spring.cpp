@@ -13,16 +13,16 @@ void add_axial_spring_forces(ForceContext& context) {
                              model.bar_yield_force, context.state.bar_plastic_set};
   add_spring_forces<2>(
       context, springs,
-      [](SpringBlock<2> & block, Index k, double plastic_set, double yield)
-          __attribute__((always_inline)) {
-            const AxialSpringResult r =
-                axial_spring(block.node_position(0, k), block.node_position(1, k), block.rest[k],
-                             block.stiffness[k], plastic_set, yield);
-            block.set_force(0, k, r.force_on_n0);
-            block.set_force(1, k, -r.force_on_n0);
-            block.new_plastic_set[k] = r.plastic_set;
-            block.dissipated[k] = r.dissipated;
-          });
+      [](SpringBlock<2> & block, Index k, double rest, double stiffness, double plastic_set,
+         double yield) __attribute__((always_inline)) {
+        const AxialSpringResult r =
+            axial_spring(block.node_position(0, k), block.node_position(1, k), rest, stiffness,
+                         plastic_set, yield);
+        block.set_force(0, k, r.force_on_n0);
+        block.set_force(1, k, -r.force_on_n0);
+        block.new_plastic_set[k] = r.plastic_set;
+        block.dissipated[k] = r.dissipated;
+      });
 }
 
 void add_axial_damper_forces(ForceContext& context) {

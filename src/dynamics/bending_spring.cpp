@@ -12,17 +12,17 @@ void add_bending_spring_forces(ForceContext& context) {
                              model.bend_yield_moment, context.state.bend_plastic_set};
   add_spring_forces<3>(
       context, springs,
-      [](SpringBlock<3> & block, Index k, double plastic_set, double yield)
-          __attribute__((always_inline)) {
-            const BendingSpringResult r = bending_spring(
-                block.node_position(0, k), block.node_position(1, k), block.node_position(2, k),
-                block.rest[k], block.stiffness[k], plastic_set, yield);
-            block.set_force(0, k, r.force_a);
-            block.set_force(1, k, r.force_c);
-            block.set_force(2, k, r.force_b);
-            block.new_plastic_set[k] = r.plastic_set;
-            block.dissipated[k] = r.dissipated;
-          });
+      [](SpringBlock<3> & block, Index k, double rest, double stiffness, double plastic_set,
+         double yield) __attribute__((always_inline)) {
+        const BendingSpringResult r =
+            bending_spring(block.node_position(0, k), block.node_position(1, k),
+                           block.node_position(2, k), rest, stiffness, plastic_set, yield);
+        block.set_force(0, k, r.force_a);
+        block.set_force(1, k, r.force_c);
+        block.set_force(2, k, r.force_b);
+        block.new_plastic_set[k] = r.plastic_set;
+        block.dissipated[k] = r.dissipated;
+      });
 }
 
 double bending_spring_energy(const Model& model, const State& state) {

@@ -1,8 +1,8 @@
 #pragma once
 // Spring forces by blocks of consecutive springs (model/spring_colouring.hpp), in three passes
 // per block:
-//   1. gather: copy each spring's node positions and parameters into the block, one array per
-//      quantity (structure of arrays);
+//   1. gather: copy each spring's node positions into the block, one array per coordinate of
+//      each node (structure of arrays);
 //   2. compute: run the spring's kernel on every spring of the block, one spring per SIMD lane;
 //      the loop reads and writes only the block's arrays, without branches, so it vectorises;
 //   3. scatter: add the forces to the nodes and keep the plastic flow.
@@ -35,10 +35,6 @@ struct SpringBlock {
   // Inputs, gathered: position[j][axis][k] is the position of node j (in the spring's node
   // order) of the block's spring k.
   double position[kNodes][3][kSpringBlockSize];
-  double rest[kSpringBlockSize];
-  double stiffness[kSpringBlockSize];
-  double yield[kSpringBlockSize];
-  double plastic_set[kSpringBlockSize];
   // Outputs: the force on each node, the plastic set after this evaluation and the work its
   // flow dissipated (J).
   double force[kNodes][3][kSpringBlockSize];
@@ -58,24 +54,29 @@ struct SpringBlock {
   }
 };
 
-// Pass 2: kernel(block, k, plastic_set, yield) for k in [0, count). The kernel must be a lambda
-// without captures (everything it needs is in the block) and must not branch, or the loop will
-// not vectorise. For a kind that cannot yield, every plastic set stays 0: the kernel then gets
-// the constants 0 and ∞, and the compiler drops the plastic branch of elastoplastic() with its
+// Pass 2: kernel(block, k, rest, stiffness, plastic_set, yield) for the block's springs k in
+// [0, count), whose parameters it reads straight from the (contiguous) model and state arrays.
+// The kernel must be a lambda without captures and must not branch, or the loop will not
+// vectorise. For a kind that cannot yield, every plastic set stays 0: the kernel then gets the
+// constants 0 and ∞, and the compiler drops the plastic branch of elastoplastic() with its
 // division.
 template <int kNodes, class Kernel>
-void compute_spring_block(SpringBlock<kNodes>& block, Index count, bool may_yield,
-                          const Kernel& kernel) {
-  if (may_yield) {
+void compute_spring_block(SpringBlock<kNodes>& block, const SpringArrays& springs, Index first,
+                          Index count, const Kernel& kernel) {
+  const double* rest = springs.rest.data() + first;
+  const double* stiffness = springs.stiffness.data() + first;
+  if (springs.colouring.any_yield) {
+    const double* plastic_set = springs.plastic_set.data() + first;
+    const double* yield = springs.yield.data() + first;
 #pragma omp simd
     for (Index k = 0; k < count; ++k) {
-      kernel(block, k, block.plastic_set[k], block.yield[k]);
+      kernel(block, k, rest[k], stiffness[k], plastic_set[k], yield[k]);
     }
   } else {
     constexpr double kElastic = std::numeric_limits<double>::infinity();
 #pragma omp simd
     for (Index k = 0; k < count; ++k) {
-      kernel(block, k, 0.0, kElastic);
+      kernel(block, k, rest[k], stiffness[k], 0.0, kElastic);
     }
   }
 }
@@ -98,13 +99,7 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
         block.position[j][2][k] = p.z();
       }
     }
-    std::copy_n(&springs.rest[first], count, block.rest);
-    std::copy_n(&springs.stiffness[first], count, block.stiffness);
-    if (may_yield) {
-      std::copy_n(&springs.yield[first], count, block.yield);
-      std::copy_n(&springs.plastic_set[first], count, block.plastic_set);
-    }
-    compute_spring_block(block, count, may_yield, kernel);
+    compute_spring_block(block, springs, first, count, kernel);
     for (Index k = 0; k < count; ++k) {
       for (int j = 0; j < kNodes; ++j) {
         force[spring_nodes[kNodes * k + j]] += block.node_force(j, k);

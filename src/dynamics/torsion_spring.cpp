@@ -12,18 +12,18 @@ void add_torsion_spring_forces(ForceContext& context) {
                              model.torsion_yield_moment, context.state.torsion_plastic_set};
   add_spring_forces<4>(
       context, springs,
-      [](SpringBlock<4> & block, Index k, double plastic_set, double yield)
-          __attribute__((always_inline)) {
-            const TorsionSpringResult r = torsion_spring(
-                block.node_position(0, k), block.node_position(1, k), block.node_position(2, k),
-                block.node_position(3, k), block.rest[k], block.stiffness[k], plastic_set, yield);
-            block.set_force(0, k, r.force_a);
-            block.set_force(1, k, r.force_i);
-            block.set_force(2, k, r.force_j);
-            block.set_force(3, k, r.force_b);
-            block.new_plastic_set[k] = r.plastic_set;
-            block.dissipated[k] = r.dissipated;
-          });
+      [](SpringBlock<4> & block, Index k, double rest, double stiffness, double plastic_set,
+         double yield) __attribute__((always_inline)) {
+        const TorsionSpringResult r = torsion_spring(
+            block.node_position(0, k), block.node_position(1, k), block.node_position(2, k),
+            block.node_position(3, k), rest, stiffness, plastic_set, yield);
+        block.set_force(0, k, r.force_a);
+        block.set_force(1, k, r.force_i);
+        block.set_force(2, k, r.force_j);
+        block.set_force(3, k, r.force_b);
+        block.new_plastic_set[k] = r.plastic_set;
+        block.dissipated[k] = r.dissipated;
+      });
 }
 
 double torsion_spring_energy(const Model& model, const State& state) {
