@@ -3,7 +3,8 @@
 # the flags of the existing build (build/compile_commands.json):
 #   scripts/vectorisation-report.sh [build-folder]
 # Each kind of spring should show two vectorised compute loops (elastic, and yielding), at the
-# build's widest vectors (32 bytes with x86-64-v3), beside the gathers of the yield values.
+# build's widest vectors (32 bytes with x86-64-v3; 16 with the x86-64 baseline), each with its
+# narrower epilogue.
 set -euo pipefail
 build=${1:-build}
 source_dir=$(cd "$(dirname "$0")/.." && pwd)

@@ -14,9 +14,10 @@ SpringColouring colour_springs(const std::vector<Index>& spring_nodes, int nodes
   std::vector<Index> colour(static_cast<std::size_t>(block_count));
   Index colours = 0;
   for (Index b = 0; b < block_count; ++b) {
-    const auto* first = &spring_nodes[static_cast<std::size_t>(SpringColouring::first_spring(b) *
-                                                               nodes_per_spring)];
-    const auto* last = first + static_cast<std::size_t>(result.block_size(b) * nodes_per_spring);
+    const auto per_spring = static_cast<std::size_t>(nodes_per_spring);
+    const auto* first =
+        &spring_nodes[static_cast<std::size_t>(SpringColouring::first_spring(b)) * per_spring];
+    const auto* last = first + static_cast<std::size_t>(result.block_size(b)) * per_spring;
     auto free = [&](Index candidate) {
       return std::none_of(first, last, [&](Index n) {
         const auto& flags = taken[static_cast<std::size_t>(n)];
