@@ -9,7 +9,6 @@
 // Passes 1 and 3 are scalar loads and stores through the node ids; pass 2, where the arithmetic
 // is, would not vectorise with them inside (the compiler cannot scatter to the nodes, and the
 // x86-64 baseline has no gather either).
-#include <algorithm>
 #include <limits>
 #include <vector>
 
