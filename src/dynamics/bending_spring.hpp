@@ -22,12 +22,12 @@ struct BendingSpringResult {
 //   ∂θ/∂xa = (e1 × n) / (|e1|² |n|),  ∂θ/∂xb = (n × e2) / (|e2|² |n|),
 //   ∂θ/∂xc = −(∂θ/∂xa + ∂θ/∂xb),
 // each perpendicular to its bar in the plane of the bars, over the bar's length; the force is
-// −M ∇θ with M = k (θ − θ0 − p) flattened at ±My. One square root and two quotients (one of them
-// in the arctangent's rational approximation) per spring. When the bars are (nearly) straight
-// the plane is undefined; then M → 0 for a straight rest angle (the force fades smoothly), and
-// otherwise the force is left out for that one configuration (bounded, no NaN) rather than given
-// a random direction. A bar of zero length leaves the spring at rest. No branches: the spring
-// loop vectorises (spring_block.hpp).
+// −M ∇θ with M = k (θ − θ0 − p) flattened at ±My. One square root and three quotients (two of
+// them in the arctangent) per spring, and a fourth only for a spring that can yield. When the bars
+// are (nearly) straight the plane is undefined; then M → 0 for a straight rest angle (the force
+// fades smoothly), and otherwise the force is left out for that one configuration (bounded, no NaN)
+// rather than given a random direction. A bar of zero length leaves the spring at rest. No
+// branches: the spring loop vectorises (spring_block.hpp).
 [[gnu::always_inline]] inline BendingSpringResult bending_spring(
     const Vec3& xa, const Vec3& xc, const Vec3& xb, double rest_angle, double stiffness,
     double plastic_set = 0.0, double yield = std::numeric_limits<double>::infinity()) {
