@@ -67,8 +67,7 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   };
   clear(state.force);
   if (ledger.enabled) {
-    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
-                       &ledger.field}) {
+    for (std::vector<Vec3>* part : ledger.force_parts()) {
       clear(*part);
     }
   }
@@ -125,11 +124,9 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   // Scratch for the kinds that can yield, and contact history where there is a ground: an elastic
   // structure in the air carries neither (memory is part of speed for large models).
   Index yielding = 0;
-  for (const auto& [colouring, count] :
-       {std::pair{&model.bar_colours, model.bar_count()},
-        std::pair{&model.bend_colours, model.bend_count()},
-        std::pair{&model.torsion_colours, model.torsion_count()}}) {
-    yielding = colouring->any_yield ? std::max(yielding, count) : yielding;
+  for (const SpringColouring* kind :
+       {&model.bar_colours, &model.bend_colours, &model.torsion_colours}) {
+    yielding = kind->any_yield ? std::max(yielding, kind->spring_count) : yielding;
   }
   state.plastic_flow.assign(static_cast<std::size_t>(yielding), 0.0);
   if (model.ground.enabled) {
@@ -142,10 +139,10 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   EnergyWorkspace& ledger = state.energy_workspace;
   ledger.enabled = track_energy;
   if (track_energy) {  // the ledger's arrays exist only then (memory: 144 bytes per node)
-    for (auto* part : {&ledger.damping, &ledger.contact_damping, &ledger.friction, &ledger.wind,
-                       &ledger.field, &ledger.v_previous}) {
+    for (std::vector<Vec3>* part : ledger.force_parts()) {
       part->assign(n, Vec3::Zero());
     }
+    ledger.v_previous.assign(n, Vec3::Zero());
     ledger.last = energy_report(model, state, state.v_half);
   }
   compute_forces(model, switches, state, false);
@@ -180,18 +177,9 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
     step_work.friction_work = work(ledger.friction, v_whole, dt);
     step_work.wind_work = work(ledger.wind, v_whole, dt);
     step_work.field_work = work(ledger.field, v_whole, dt);
-    EnergyAccounts& a = state.energy;
-    a.damping_work += 0.5 * step_work.damping_work;
-    a.contact_damping_work += 0.5 * step_work.contact_damping_work;
-    a.friction_work += 0.5 * step_work.friction_work;
-    a.wind_work += 0.5 * step_work.wind_work;
-    a.field_work += 0.5 * step_work.field_work;
+    state.energy.add_works(step_work, 0.5);
     ledger.last = energy_report(model, state, v_whole);
-    a.damping_work += 0.5 * step_work.damping_work;
-    a.contact_damping_work += 0.5 * step_work.contact_damping_work;
-    a.friction_work += 0.5 * step_work.friction_work;
-    a.wind_work += 0.5 * step_work.wind_work;
-    a.field_work += 0.5 * step_work.field_work;
+    state.energy.add_works(step_work, 0.5);
   }
   // 4. Positions to n + 1.
   for_each_index(n, [&](Index i) { state.x[i] += dt * state.v_half[i]; });

@@ -1,5 +1,6 @@
 #pragma once
 // Everything that changes during a run. The model it belongs to is passed beside it.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -15,6 +16,15 @@ struct EnergyAccounts {
   double contact_damping_work = 0.0;  // the ground's normal damping (≤ 0)
   double wind_work = 0.0;             // aerodynamic drag
   double field_work = 0.0;            // field forces other than gravity
+
+  // Adds `fraction` of every work in `works` (the dissipation is booked elsewhere).
+  void add_works(const EnergyAccounts& works, double fraction) {
+    damping_work += fraction * works.damping_work;
+    contact_damping_work += fraction * works.contact_damping_work;
+    friction_work += fraction * works.friction_work;
+    wind_work += fraction * works.wind_work;
+    field_work += fraction * works.field_work;
+  }
 };
 
 // The energy of the system at one whole step, and what has come in and gone out since t = 0.
@@ -43,6 +53,11 @@ struct EnergyWorkspace {
   std::vector<Vec3> field;            // (n_nodes) N
   std::vector<Vec3> v_previous;       // (n_nodes) m/s, v_{n−½} during a step
   EnergyReport last;                  // at the last step taken
+
+  // The five per-kind force arrays, to clear or size them together.
+  std::array<std::vector<Vec3>*, 5> force_parts() {
+    return {&damping, &contact_damping, &friction, &wind, &field};
+  }
 };
 
 // Leapfrog state at step n: positions at whole steps, velocities at half steps.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -15,7 +16,8 @@ namespace {
 
 // One bar along x from a pinned node to a free one: a single mass on a spring. With ρ = 1000,
 // A = 1e-4, L = 1, E = 1e6: k = EA/L = 100 N/m, m = ρAL/2 = 0.05 kg, ω = √(k/m) = √2000 rad/s.
-Model spring_mass_model(double initial_speed) {
+// `more` adds keys to the object, each line indented by four spaces.
+Model spring_mass_model(double initial_speed, const std::string& more = "") {
   return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
 duration: 1
 gravity: [0, 0, 0]
@@ -24,8 +26,8 @@ objects:
     material: {{density: 1000, youngs_modulus: 1.0e6, area: 1.0e-4}}
     pinned: {{indices: [0]}}
     initial_velocity: [{}, 0, 0]
-)",
-                                                       initial_speed)));
+{})",
+                                                       initial_speed, more)));
 }
 
 constexpr double kSpringOmega = 44.721359549995796;  // √2000
@@ -190,17 +192,10 @@ TEST(Integrator, StabilityLimitOfOneOscillatorIsTwoOverOmega) {
 TEST(Integrator, ShakenSupportDrivesTheSpringMassAsTheClosedFormSays) {
   constexpr double kAmplitude = 0.01;
   const double drive_omega = 0.5 * kSpringOmega;
-  const Model model = build_model(
-      test::scene_from_yaml(fmt::format(R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-objects:
-  - mesh: {{polyline: {{points: [[0, 0, 0], [1, 0, 0]]}}}}
-    material: {{density: 1000, youngs_modulus: 1.0e6, area: 1.0e-4}}
-    pinned: {{indices: [0]}}
-    pin_motion: {{displacement: [{}, 0, 0], profile: {{type: sine, frequency: {:.17g}}}}}
-)",
-                                        kAmplitude, drive_omega / (2.0 * std::numbers::pi))));
+  const Model model = spring_mass_model(
+      0.0, fmt::format("    pin_motion: {{displacement: [{}, 0, 0], profile: {{type: sine, "
+                       "frequency: {:.17g}}}}}\n",
+                       kAmplitude, drive_omega / (2.0 * std::numbers::pi)));
   const double dt = 2.0 * std::numbers::pi / kSpringOmega / 400.0;
   State state = initial_state(model, dt);
   const double w2 = kSpringOmega * kSpringOmega;
