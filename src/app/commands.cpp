@@ -9,12 +9,15 @@
 #include <set>
 #include <system_error>
 
+#include "app/command_support.hpp"
 #include "app/draw_list_from_model.hpp"
 #include "app/energy_csv.hpp"
+#include "app/frame_folder.hpp"
 #include "app/frame_range.hpp"
 #include "app/frame_source.hpp"
 #include "app/frame_writer.hpp"
 #include "app/progress.hpp"
+#include "cache/motion_cache.hpp"
 #include "core/error.hpp"
 #include "dynamics/stability.hpp"
 #include "io/movie_encoder.hpp"
@@ -25,39 +28,6 @@
 
 namespace dinam {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// Frame files are numbered from 1 with at least four digits: frame_0001.png.
-int frame_number_digits(int frame_count) {
-  return std::max(4, static_cast<int>(std::to_string(frame_count).size()));
-}
-
-MovieFormat parse_movie_format(const std::string& text) {
-  if (text == "mp4") {
-    return MovieFormat::kMp4;
-  }
-  if (text == "gif") {
-    return MovieFormat::kGif;
-  }
-  if (text == "none") {
-    return MovieFormat::kNone;
-  }
-  throw_user_error({}, "--movie takes mp4, gif or none; got '{}'", text);
-}
-
-void create_folder(const std::filesystem::path& folder) {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if (ec) {
-    throw RuntimeError(
-        fmt::format("cannot create the output folder {}: {}", folder.string(), ec.message()));
-  }
-}
 
 // "1,5-7,12" → {1, 5, 6, 7, 12}, each within 1..frame_count.
 std::vector<int> parse_frame_list(const std::string& text, int frame_count) {
@@ -87,38 +57,61 @@ int run_render(const RenderOptions& options) {
   if (options.size) {
     parse_image_size(*options.size, scene.image_width, scene.image_height);
   }
+  const MovieFormat scene_movie = scene.movie;  // `dinam movie` makes it from chunks drawn without
   if (options.movie) {
     scene.movie = parse_movie_format(*options.movie);
   }
   const FrameRange range = options.frames ? parse_frame_range(*options.frames, scene.frame_count())
                                           : FrameRange{1, scene.frame_count()};
+  std::optional<MotionCache> cache;
+  if (options.cache) {
+    if (options.energy_csv) {
+      throw_user_error({},
+                       "--energy reports what the simulation did, and --cache simulates nothing; "
+                       "ask 'dinam simulate --energy' for it (manifest.json and energy.csv)");
+    }
+    cache.emplace(*options.cache);
+    cache->check_scene(scene);
+  }
   const Model model = build_model(scene);
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  if (cache) {
+    cache->check_model(model);
+  }
+  const std::optional<TimeStep> timestep =
+      cache ? std::nullopt
+            : std::optional(choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc));
   const std::filesystem::path folder = options.output.value_or(scene.output);
   create_folder(folder);
   const auto start = Clock::now();
+  const StopOnSignals stop_on_signals;
 
-  // 1. Simulate every frame up to the last one shown (the camera may need them all).
+  // 1. The motion: from the cache, or simulated to the last frame of the movie, whichever frames
+  //    are drawn, since the whole motion frames the camera, the ground and the shadows.
   std::optional<EnergyCsv> energy_csv;
   if (options.energy_csv) {
     energy_csv.emplace(folder / "energy.csv");
   }
-  Progress simulation_progress(range.last, !options.quiet, "simulate");
-  const SimulatedFrames frames = simulate_frames(
-      model, timestep, range.last, options.energy_csv, [&](int frame, const State& s) {
-        if (energy_csv) {
-          energy_csv->write(s.energy_workspace.last);
-        }
-        simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
-      });
-  simulation_progress.finish();
+  SimulatedFrames frames;
+  if (cache) {
+    frames = cached_frames(*cache, range.first, range.last);
+  } else {
+    Progress simulation_progress(scene.frame_count(), !options.quiet, "simulate");
+    frames = simulate_frames(
+        model, *timestep, scene.frame_count(), options.energy_csv, [&](int frame, const State& s) {
+          stop_if_asked();
+          if (energy_csv) {
+            energy_csv->write(s.energy_workspace.last);
+          }
+          simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
+        });
+  }
   if (energy_csv) {
     energy_csv->close();
   }
 
   // 2. Draw the frames; a thread of their own writes them (PNG) and feeds them to ffmpeg, which
   //    encodes the movie meanwhile.
-  const DrawList draw_list = make_draw_list(scene, model, motion_bounds(frames.positions));
+  const DrawList draw_list = make_draw_list(scene, model, frames.motion);
   const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
   int exit_code = kExitOk;
@@ -144,6 +137,7 @@ int run_render(const RenderOptions& options) {
     FrameWriter writer(folder, frame_number_digits(scene.frame_count()), movie.get());
     draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
                 [&](int frame, const Image& image) {
+                  stop_if_asked();
                   writer.write(frame, image);
                   progress.update(frame - range.first + 1, fmt::format("draw and write {:.1f} s",
                                                                        seconds_since(draw_start)));
@@ -151,6 +145,8 @@ int run_render(const RenderOptions& options) {
     writer.finish();
   }
   progress.finish();
+  write_frame_folder_info(folder, {scene.name, scene.fps, scene.frame_count(), scene.image_width,
+                                   scene.image_height, scene_movie});
   const double draw_seconds = seconds_since(draw_start);
 
   // 3. The movie: ffmpeg finishes what it has been encoding all along.
@@ -159,9 +155,9 @@ int run_render(const RenderOptions& options) {
     movie_note = fmt::format(", movie {}", movie_path.string());
   }
   if (!options.quiet) {
-    fmt::print("dinam: {} frames in {}{} ({:.1f} s: simulate {:.2f} s, draw and write {:.2f} s)\n",
-               range.count(), folder.string(), movie_note, seconds_since(start), frames.seconds,
-               draw_seconds);
+    fmt::print("dinam: {} frames in {}{} ({:.1f} s: {} {:.2f} s, draw and write {:.2f} s)\n",
+               range.count(), folder.string(), movie_note, seconds_since(start),
+               cache ? "read the cache" : "simulate", frames.seconds, draw_seconds);
   }
   return exit_code;
 }
@@ -177,16 +173,17 @@ int run_snapshot(const SnapshotOptions& options) {
   const std::filesystem::path output =
       options.output.value_or(std::filesystem::path("out/snapshot") / scene.name);
 
-  const SimulatedFrames frames = simulate_frames(model, timestep, chosen.back(), false);
-  const DrawList draw_list = make_draw_list(scene, model, motion_bounds(frames.positions));
+  // The whole motion frames the camera, so a frame looks as it does in the movie.
+  const SimulatedFrames frames = simulate_frames(model, timestep, count, false);
+  const DrawList draw_list = make_draw_list(scene, model, frames.motion);
   const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
 
   int failures = 0;
   Image image;
   for (const int frame : chosen) {
-    const auto k = static_cast<std::size_t>(frame - 1);
-    renderer.render(draw_list, frames.positions[k], cameras[k], image);
+    renderer.render(draw_list, frames.at(frame), cameras[static_cast<std::size_t>(frame - 1)],
+                    image);
     const std::string name = fmt::format("{}_{:04}", scene.name, frame);
     const std::filesystem::path golden = options.golden / (name + ".png");
     std::error_code ec;
@@ -233,46 +230,6 @@ int run_snapshot(const SnapshotOptions& options) {
                expected_path.string(), diff_path.string());
   }
   return failures == 0 ? kExitOk : kExitFailure;
-}
-
-int run_info(const std::filesystem::path& scene_path) {
-  const SceneDescription scene = read_scene(scene_path);
-  const Model model = build_model(scene);
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  Index pinned = 0;
-  for (Index i = 0; i < model.node_count(); ++i) {
-    pinned += model.pinned(i) ? 1 : 0;
-  }
-  const int frames = scene.frame_count();
-  fmt::print("scene            {} ('{}')\n", scene.source.string(), scene.name);
-  fmt::print("objects          {}\n", model.objects.size());
-  for (const ModelObject& object : model.objects) {
-    fmt::print("  {:<14} {} nodes, {} bars\n", object.name, object.node_count, object.bar_count);
-  }
-  fmt::print("nodes            {} ({} pinned)\n", model.node_count(), pinned);
-  fmt::print("bars             {}\n", model.bar_count());
-  fmt::print("springs          axial {}, bending {}, torsion {}\n", model.bar_count(),
-             model.bend_count(), model.torsion_count());
-  fmt::print("no torsion       {} bars (torsion off, or no usable reference neighbour)\n",
-             model.bars_without_torsion);
-  fmt::print("total mass       {:.6g} kg\n", model.total_mass());
-  fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
-             timestep.critical);
-  fmt::print("time step        {:.6g} s ({})\n", timestep.dt,
-             timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
-                                : "from the scene, fitted to whole steps per frame");
-  fmt::print("steps per frame  {}\n", timestep.steps_per_frame);
-  const long long steps_to_last_frame =
-      static_cast<long long>(frames - 1) * timestep.steps_per_frame;
-  fmt::print("frames           {} at {:g} fps, t = 0 … {:g} s\n", frames, scene.fps,
-             (frames - 1) / scene.fps);
-  fmt::print("steps            {} over the {:g} s duration ({} up to the last frame)\n",
-             steps_to_last_frame + timestep.steps_per_frame, scene.duration, steps_to_last_frame);
-  if (model.settle.duration > 0.0) {
-    fmt::print("settling         {:g} s before t = 0 ({} steps), under gravity alone\n",
-               model.settle.duration, std::llround(model.settle.duration / timestep.dt));
-  }
-  return kExitOk;
 }
 
 }  // namespace dinam

@@ -19,17 +19,44 @@ struct RenderOptions {
   std::optional<std::string> frames;            // "A-B"
   std::optional<std::string> size;              // "WxH"
   std::optional<std::string> movie;             // mp4, gif or none: overrides the scene
+  std::optional<std::filesystem::path> cache;   // draw from this motion cache, simulating nothing
   bool quiet = false;
   bool energy_csv = false;  // write DIR/energy.csv, one row per frame
 };
 
-// Simulates the scene, writes DIR/frame_NNNN.png and the movie. Throws UserError for bad input
-// (before anything is written) and RuntimeError for other failures. Returns the exit code:
-// kExitFailure when the frames were written but ffmpeg is missing.
+// Simulates the scene (or reads its motion from a cache), writes DIR/frame_NNNN.png, DIR/
+// frames.json and the movie. The frames are the same whether the whole motion is drawn at once or
+// in ranges, from the scene or from its cache. Throws UserError for bad input (before anything is
+// written) and RuntimeError for other failures. Returns the exit code: kExitFailure when the
+// frames were written but ffmpeg is missing.
 int run_render(const RenderOptions& options);
 
-// Prints the model summary to stdout. Throws UserError for a bad scene.
-int run_info(const std::filesystem::path& scene);
+struct SimulateOptions {
+  std::filesystem::path scene;
+  std::optional<std::filesystem::path> output;  // default: the scene's `output`/cache
+  std::string formats = "pc2";                  // "pc2", "mdd" or "pc2,mdd"
+  bool quiet = false;
+  bool energy = false;  // the energy report in the manifest and as energy.csv
+};
+
+// Simulates the scene once and writes its motion cache: a rest mesh (OBJ) and point caches (PC2,
+// MDD) per object and manifest.json, all at once or not at all. Throws UserError for bad input.
+int run_simulate(const SimulateOptions& options);
+
+struct MovieOptions {
+  std::filesystem::path folder;      // frames and frames.json, written by render
+  std::optional<std::string> movie;  // mp4 or gif: overrides frames.json's choice
+  bool quiet = false;
+};
+
+// Assembles the frames on disk into the movie, DIR/<name>.mp4 or .gif. Throws UserError naming the
+// missing and extra frames by number, writing nothing, when the folder does not hold exactly the
+// movie's frames.
+int run_movie(const MovieOptions& options);
+
+// Prints the model summary to stdout, as text or as one JSON object. Throws UserError for a bad
+// scene.
+int run_info(const std::filesystem::path& scene, bool json = false);
 
 struct SnapshotOptions {
   std::filesystem::path scene;

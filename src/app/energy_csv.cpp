@@ -1,6 +1,7 @@
 #include "app/energy_csv.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cerrno>
 #include <cstring>
@@ -10,6 +11,24 @@
 
 namespace dinam {
 
+std::array<double, kEnergyColumns.size()> energy_row(const EnergyReport& r) {
+  const EnergyAccounts& a = r.accounts;
+  return {r.time,
+          r.kinetic,
+          r.axial,
+          r.bending,
+          r.torsion,
+          r.gravitational,
+          r.contact,
+          a.damping_work,
+          a.plastic_dissipation,
+          a.friction_work,
+          a.contact_damping_work,
+          a.wind_work,
+          a.field_work,
+          r.total};
+}
+
 EnergyCsv::EnergyCsv(std::filesystem::path path) : path_(std::move(path)) {
   temporary_ = path_;
   temporary_ += ".tmp";
@@ -18,10 +37,7 @@ EnergyCsv::EnergyCsv(std::filesystem::path path) : path_(std::move(path)) {
     throw RuntimeError(
         fmt::format("cannot write {}: {}", temporary_.string(), std::strerror(errno)));
   }
-  fmt::print(file_,
-             "time_s,kinetic_J,axial_J,bending_J,torsion_J,gravitational_J,contact_J,"
-             "damping_work_J,plastic_dissipation_J,friction_work_J,contact_damping_work_J,"
-             "wind_work_J,field_work_J,total_J\n");
+  fmt::print(file_, "{}\n", fmt::join(kEnergyColumns, ","));
 }
 
 EnergyCsv::~EnergyCsv() {
@@ -32,14 +48,13 @@ EnergyCsv::~EnergyCsv() {
   }
 }
 
-void EnergyCsv::write(const EnergyReport& r) {
-  const EnergyAccounts& a = r.accounts;
-  fmt::print(file_,
-             "{:.6f},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{"
-             ":.9g},{:.9g}\n",
-             r.time, r.kinetic, r.axial, r.bending, r.torsion, r.gravitational, r.contact,
-             a.damping_work, a.plastic_dissipation, a.friction_work, a.contact_damping_work,
-             a.wind_work, a.field_work, r.total);
+void EnergyCsv::write(const EnergyReport& report) {
+  const auto row = energy_row(report);
+  fmt::print(file_, "{:.6f}", row[0]);  // the time; the energies to 9 significant digits
+  for (std::size_t c = 1; c < row.size(); ++c) {
+    fmt::print(file_, ",{:.9g}", row[c]);
+  }
+  std::fputc('\n', file_);
 }
 
 void EnergyCsv::close() {

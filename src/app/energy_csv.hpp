@@ -1,12 +1,30 @@
 #pragma once
 // The energy accounts as CSV, one row per frame, written beside the frames under a temporary
 // name and renamed when the run completes.
+#include <array>
 #include <cstdio>
 #include <filesystem>
 
 #include "dynamics/state.hpp"
 
 namespace dinam {
+
+// The report's columns, each a name with its unit, and one frame's values in that order.
+inline constexpr std::array<const char*, 14> kEnergyColumns = {"time_s",
+                                                               "kinetic_J",
+                                                               "axial_J",
+                                                               "bending_J",
+                                                               "torsion_J",
+                                                               "gravitational_J",
+                                                               "contact_J",
+                                                               "damping_work_J",
+                                                               "plastic_dissipation_J",
+                                                               "friction_work_J",
+                                                               "contact_damping_work_J",
+                                                               "wind_work_J",
+                                                               "field_work_J",
+                                                               "total_J"};
+std::array<double, kEnergyColumns.size()> energy_row(const EnergyReport& report);
 
 class EnergyCsv {
  public:

@@ -3,20 +3,23 @@
 #include <chrono>
 
 #include "app/draw_list_from_model.hpp"
+#include "cache/motion_cache.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
-#include "render/framing.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
+namespace {
 
-SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, int last,
-                                bool track_energy,
-                                const std::function<void(int, const State&)>& on_frame) {
-  const auto start = std::chrono::steady_clock::now();
-  SimulatedFrames frames;
-  frames.positions.resize(static_cast<std::size_t>(last));
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool track_energy,
+                  const std::function<void(int, const State&)>& on_frame) {
   State state = initial_state(model, timestep.dt, {}, track_energy);
   for (int frame = 1; frame <= last; ++frame) {
     if (frame > 1) {
@@ -24,12 +27,37 @@ SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, in
         step(model, timestep.dt, {}, state);
       }
     }
+    on_frame(frame, state);
+  }
+}
+
+SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, int last,
+                                bool track_energy,
+                                const std::function<void(int, const State&)>& on_frame) {
+  const auto start = std::chrono::steady_clock::now();
+  SimulatedFrames frames;
+  frames.positions.resize(static_cast<std::size_t>(last));
+  run_dynamics(model, timestep, last, track_energy, [&](int frame, const State& state) {
     positions_for_render(state.x, frames.positions[static_cast<std::size_t>(frame - 1)]);
     if (on_frame) {
       on_frame(frame, state);
     }
+  });
+  frames.motion = motion_bounds(frames.positions);
+  frames.seconds = seconds_since(start);
+  return frames;
+}
+
+SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {
+  const auto start = std::chrono::steady_clock::now();
+  SimulatedFrames frames;
+  frames.first_frame = first;
+  frames.positions = cache.read_frames(first, last);
+  for (const FrameBounds& bounds : cache.manifest().frame_bounds) {
+    frames.motion.add(bounds.min);
+    frames.motion.add(bounds.max);
   }
-  frames.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  frames.seconds = seconds_since(start);
   return frames;
 }
 
@@ -47,11 +75,10 @@ std::vector<RenderCamera> frame_cameras(const SceneDescription& scene, const Mod
       break;
     }
     case CameraDesc::Mode::kAuto: {
-      const Bounds bounds = motion_bounds(frames.positions);
       const float aspect =
           static_cast<float>(scene.image_width) / static_cast<float>(scene.image_height);
       cameras.assign(frames.positions.size(),
-                     frame_bounds(bounds, desc.direction.cast<float>(), up, fov, aspect));
+                     frame_bounds(frames.motion, desc.direction.cast<float>(), up, fov, aspect));
       break;
     }
     case CameraDesc::Mode::kFollow: {
@@ -75,10 +102,11 @@ std::vector<RenderCamera> frame_cameras(const SceneDescription& scene, const Mod
 void draw_frames(Renderer& renderer, const DrawList& list, const SimulatedFrames& frames,
                  const std::vector<RenderCamera>& cameras, int first, int last,
                  const std::function<void(int, const Image&)>& on_image) {
+  DINAM_CHECK(first >= frames.first_frame && last <= frames.last_frame());
   Image image;
   for (int frame = first; frame <= last; ++frame) {
-    const auto k = static_cast<std::size_t>(frame - 1);
-    renderer.render(list, frames.positions[k], cameras[k], image);
+    renderer.render(list, frames.at(frame),
+                    cameras[static_cast<std::size_t>(frame - frames.first_frame)], image);
     on_image(frame, image);
   }
 }

@@ -4,8 +4,10 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 
+#include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "core/version.hpp"
 
 namespace {
 
@@ -15,7 +17,7 @@ int run(int argc, char** argv) {
       "dinam: physically simulated animation of flexible structures (rigid bar spring "
       "model, explicit central differences, off-screen OpenGL)"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "dinam 0.1.0");
+  app.set_version_flag("--version", std::string("dinam ") + kVersion);
 
   RenderOptions render;
   std::string output;
@@ -38,6 +40,41 @@ int run(int argc, char** argv) {
                            "Also write DIR/energy.csv: kinetic, elastic, gravitational and contact "
                            "energy, and what damping, plasticity, friction, wind and fields did, "
                            "one row per frame");
+  std::string render_cache;
+  render_command->add_option("--cache", render_cache,
+                             "Draw from this motion cache (made by 'dinam simulate') instead of "
+                             "simulating; refused when the scene's motion has changed since");
+
+  SimulateOptions simulate;
+  std::string simulate_output;
+  CLI::App* simulate_command = app.add_subcommand(
+      "simulate",
+      "Simulate a scene once into a motion cache: per object a rest mesh (OBJ) and point caches "
+      "(PC2, MDD) that 'render --cache' draws from and Blender, Houdini and 3ds Max open, plus "
+      "manifest.json");
+  simulate_command->add_option("scene", simulate.scene, "Scene file (YAML)")->required();
+  simulate_command->add_option("-o,--output", simulate_output,
+                               "Cache folder (default: the scene's 'output'/cache); an older "
+                               "cache there is replaced when the new one is complete");
+  simulate_command
+      ->add_option("--format", simulate.formats, "Point cache formats: pc2, mdd or pc2,mdd")
+      ->default_val(simulate.formats);
+  simulate_command->add_flag("-q,--quiet", simulate.quiet, "Print nothing but errors");
+  simulate_command->add_flag("--energy", simulate.energy,
+                             "Also record the energy report, one row per frame, in "
+                             "manifest.json and energy.csv");
+
+  MovieOptions movie;
+  CLI::App* movie_command = app.add_subcommand(
+      "movie",
+      "Assemble the frames in a folder (drawn by 'dinam render', at once or in chunks) into "
+      "the movie; missing or extra frames are named and nothing is made");
+  movie_command->add_option("folder", movie.folder, "Folder of frame_NNNN.png and frames.json")
+      ->required();
+  std::string movie_format;
+  movie_command->add_option("--movie", movie_format,
+                            "mp4 or gif (default: the scene's 'movie', else mp4)");
+  movie_command->add_flag("-q,--quiet", movie.quiet, "Print nothing but errors");
 
   SnapshotOptions snapshot;
   std::string snapshot_output;
@@ -81,6 +118,8 @@ int run(int argc, char** argv) {
                          "Print the model summary of a scene: nodes, bars, springs, "
                          "mass, time step");
   info_command->add_option("scene", info_scene, "Scene file (YAML)")->required();
+  bool info_json = false;
+  info_command->add_flag("--json", info_json, "Print one JSON object, for scripts");
 
   try {
     app.parse(argc, argv);
@@ -103,7 +142,22 @@ int run(int argc, char** argv) {
       if (no_video) {
         render.movie = "none";
       }
+      if (!render_cache.empty()) {
+        render.cache = render_cache;
+      }
       return run_render(render);
+    }
+    if (*simulate_command) {
+      if (!simulate_output.empty()) {
+        simulate.output = simulate_output;
+      }
+      return run_simulate(simulate);
+    }
+    if (*movie_command) {
+      if (!movie_format.empty()) {
+        movie.movie = movie_format;
+      }
+      return run_movie(movie);
     }
     if (*snapshot_command) {
       if (!snapshot_output.empty()) {
@@ -111,7 +165,13 @@ int run(int argc, char** argv) {
       }
       return run_snapshot(snapshot);
     }
-    return run_info(info_scene);
+    return run_info(info_scene, info_json);
+  } catch (const Interrupted& e) {
+    fmt::print(stderr,
+               "dinam: {}: finished files are kept (frames already written), unfinished ones "
+               "removed (no cache or movie was made)\n",
+               e.what());
+    return 128 + e.signal();
   } catch (const UserError& e) {
     fmt::print(stderr, "{}: error: {}\n", e.loc().known() ? e.loc().to_string() : "dinam",
                e.message());

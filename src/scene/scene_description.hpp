@@ -188,8 +188,20 @@ struct SettleDesc {
   FileLoc loc;
 };
 
+// One setting that decides the motion: a key path as the file spells it and the text of its
+// value. motion_settings.hpp says which keys count; two scenes with the same settings give the same
+// motion with one dinam build, so a motion cache made from one serves the other.
+struct MotionSetting {
+  std::string key;    // e.g. "objects[0].material.density"
+  std::string value;  // the YAML scalar as written, or "sha256:…" of a mesh's loaded geometry
+
+  bool operator==(const MotionSetting&) const = default;
+};
+
 struct SceneDescription {
-  std::filesystem::path source;  // the scene file
+  std::filesystem::path source;                // the scene file
+  std::string source_sha256;                   // of the scene file's bytes, as sha256sum prints it
+  std::vector<MotionSetting> motion_settings;  // what decides the motion, in file order
   int version = 1;
   std::string name;  // movie file name; default: the scene file's stem
 

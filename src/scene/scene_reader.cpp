@@ -13,8 +13,10 @@
 #include <sstream>
 #include <system_error>
 
+#include "core/sha256.hpp"
 #include "scene/mesh_generators.hpp"
 #include "scene/mesh_loader.hpp"
+#include "scene/motion_settings.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/yaml_map.hpp"
 
@@ -763,7 +765,10 @@ SceneDescription read_scene_text(const std::string& text, const std::filesystem:
   if (!root || root.IsNull()) {
     throw UserError(FileLoc{source.string()}, "the scene file is empty");
   }
-  return read_root(root, source);
+  SceneDescription scene = read_root(root, source);
+  scene.source_sha256 = sha256_hex(text);
+  scene.motion_settings = motion_settings(root, scene.objects);
+  return scene;
 }
 
 SceneDescription read_scene(const std::filesystem::path& path) {

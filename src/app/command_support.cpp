@@ -1,0 +1,80 @@
+#include "app/command_support.hpp"
+
+#include <fmt/format.h>
+
+#include <csignal>
+#include <cstring>
+#include <system_error>
+
+#include "core/error.hpp"
+
+namespace dinam {
+namespace {
+
+volatile std::sig_atomic_t stop_signal = 0;
+
+extern "C" void ask_to_stop(int signal) {
+  stop_signal = signal;
+  std::signal(signal, SIG_DFL);  // a second one ends the program
+}
+
+}  // namespace
+
+void create_folder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec) {
+    throw RuntimeError(
+        fmt::format("cannot create the output folder {}: {}", folder.string(), ec.message()));
+  }
+}
+
+MovieFormat parse_movie_format(const std::string& text) {
+  if (text == "mp4") {
+    return MovieFormat::kMp4;
+  }
+  if (text == "gif") {
+    return MovieFormat::kGif;
+  }
+  if (text == "none") {
+    return MovieFormat::kNone;
+  }
+  throw_user_error({}, "--movie takes mp4, gif or none; got '{}'", text);
+}
+
+const char* movie_format_name(MovieFormat format) {
+  switch (format) {
+    case MovieFormat::kMp4:
+      return "mp4";
+    case MovieFormat::kGif:
+      return "gif";
+    case MovieFormat::kNone:
+      return "none";
+  }
+  return "none";
+}
+
+Interrupted::Interrupted(int signal)
+    : std::runtime_error(fmt::format("stopped by {}", signal == SIGINT    ? "SIGINT"
+                                                      : signal == SIGTERM ? "SIGTERM"
+                                                                          : strsignal(signal))),
+      signal_(signal) {}
+
+StopOnSignals::StopOnSignals() {
+  stop_signal = 0;
+  std::signal(SIGINT, ask_to_stop);
+  std::signal(SIGTERM, ask_to_stop);
+}
+
+StopOnSignals::~StopOnSignals() {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
+
+void stop_if_asked() {
+  if (stop_signal != 0) {
+    throw Interrupted(stop_signal);
+  }
+}
+
+}  // namespace dinam

@@ -1,0 +1,95 @@
+// `dinam info`: the model summary, for a person or (--json) for a script such as the Slurm farm.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "dynamics/stability.hpp"
+#include "model/model.hpp"
+#include "scene/scene_description.hpp"
+
+namespace dinam {
+namespace {
+
+void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
+                Index pinned) {
+  nlohmann::ordered_json objects = nlohmann::ordered_json::array();
+  for (const ModelObject& object : model.objects) {
+    objects.push_back(
+        {{"name", object.name}, {"nodes", object.node_count}, {"bars", object.bar_count}});
+  }
+  const nlohmann::ordered_json json = {
+      {"scene", scene.source.string()},
+      {"name", scene.name},
+      {"objects", objects},
+      {"nodes", model.node_count()},
+      {"pinned_nodes", pinned},
+      {"bars", model.bar_count()},
+      {"bending_springs", model.bend_count()},
+      {"torsion_springs", model.torsion_count()},
+      {"total_mass_kg", model.total_mass()},
+      {"stability_limit_s", timestep.critical},
+      {"timestep_s", timestep.dt},
+      {"steps_per_frame", timestep.steps_per_frame},
+      {"fps", scene.fps},
+      {"frame_count", scene.frame_count()},
+      {"duration_s", scene.duration},
+      {"settle_s", model.settle.duration},
+      {"output", scene.output.string()},
+  };
+  fmt::print("{}\n", json.dump(1));
+}
+
+void print_text(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
+                Index pinned) {
+  const int frames = scene.frame_count();
+  fmt::print("scene            {} ('{}')\n", scene.source.string(), scene.name);
+  fmt::print("objects          {}\n", model.objects.size());
+  for (const ModelObject& object : model.objects) {
+    fmt::print("  {:<14} {} nodes, {} bars\n", object.name, object.node_count, object.bar_count);
+  }
+  fmt::print("nodes            {} ({} pinned)\n", model.node_count(), pinned);
+  fmt::print("bars             {}\n", model.bar_count());
+  fmt::print("springs          axial {}, bending {}, torsion {}\n", model.bar_count(),
+             model.bend_count(), model.torsion_count());
+  fmt::print("no torsion       {} bars (torsion off, or no usable reference neighbour)\n",
+             model.bars_without_torsion);
+  fmt::print("total mass       {:.6g} kg\n", model.total_mass());
+  fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
+             timestep.critical);
+  fmt::print("time step        {:.6g} s ({})\n", timestep.dt,
+             timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
+                                : "from the scene, fitted to whole steps per frame");
+  fmt::print("steps per frame  {}\n", timestep.steps_per_frame);
+  const long long steps_to_last_frame =
+      static_cast<long long>(frames - 1) * timestep.steps_per_frame;
+  fmt::print("frames           {} at {:g} fps, t = 0 … {:g} s\n", frames, scene.fps,
+             (frames - 1) / scene.fps);
+  fmt::print("steps            {} over the {:g} s duration ({} up to the last frame)\n",
+             steps_to_last_frame + timestep.steps_per_frame, scene.duration, steps_to_last_frame);
+  if (model.settle.duration > 0.0) {
+    fmt::print("settling         {:g} s before t = 0 ({} steps), under gravity alone\n",
+               model.settle.duration, std::llround(model.settle.duration / timestep.dt));
+  }
+}
+
+}  // namespace
+
+int run_info(const std::filesystem::path& scene_path, bool json) {
+  const SceneDescription scene = read_scene(scene_path);
+  const Model model = build_model(scene);
+  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  Index pinned = 0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    pinned += model.pinned(i) ? 1 : 0;
+  }
+  if (json) {
+    print_json(scene, model, timestep, pinned);
+  } else {
+    print_text(scene, model, timestep, pinned);
+  }
+  return kExitOk;
+}
+
+}  // namespace dinam

@@ -1,0 +1,177 @@
+#include "cache/manifest.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+
+namespace dinam {
+namespace {
+
+// Keys keep the order they are written in, so the file reads top-down like this struct.
+using Json = nlohmann::ordered_json;
+
+Json bounds_json(const FrameBounds& b) {
+  return Json::array({b.min.x(), b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()});
+}
+
+FrameBounds bounds_from(const Json& j) {
+  // Floats go to JSON as doubles, which print exactly, and come back to the same float.
+  FrameBounds b;
+  for (int c = 0; c < 3; ++c) {
+    b.min[c] = j.at(static_cast<std::size_t>(c)).get<float>();
+    b.max[c] = j.at(static_cast<std::size_t>(c + 3)).get<float>();
+  }
+  return b;
+}
+
+}  // namespace
+
+std::string canonical_scene_path(const std::filesystem::path& scene) {
+  std::error_code ec;
+  const std::filesystem::path path = std::filesystem::weakly_canonical(scene, ec);
+  return (ec ? std::filesystem::absolute(scene) : path).string();
+}
+
+void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
+  Json settings = Json::object();
+  for (const MotionSetting& s : m.motion_settings) {
+    settings[s.key] = s.value;
+  }
+  Json objects = Json::array();
+  for (const CacheObjectEntry& o : m.objects) {
+    Json files = {{"obj", o.obj}};
+    if (!o.pc2.empty()) {
+      files["pc2"] = o.pc2;
+    }
+    if (!o.mdd.empty()) {
+      files["mdd"] = o.mdd;
+    }
+    objects.push_back({{"name", o.name},
+                       {"first_node", o.first_node},
+                       {"node_count", o.node_count},
+                       {"bar_count", o.bar_count},
+                       {"files", files}});
+  }
+  Json bounds = Json::array();
+  for (const FrameBounds& b : m.frame_bounds) {
+    bounds.push_back(bounds_json(b));
+  }
+  Json json = {
+      {"format", CacheManifest::kFormat},
+      {"format_version", CacheManifest::kFormatVersion},
+      {"dinam_version", m.dinam_version},
+      {"created", m.created},
+      {"scene", {{"path", m.scene_path}, {"name", m.scene_name}, {"sha256", m.scene_sha256}}},
+      {"motion_settings", settings},
+      {"fps", m.fps},
+      {"frame_count", m.frame_count},
+      {"start_frame", 1},
+      {"timestep_s", m.timestep},
+      {"steps_per_frame", m.steps_per_frame},
+      {"simulate_seconds", m.simulate_seconds},
+      {"node_count", m.node_count},
+      {"objects", objects},
+      {"frame_bounds", bounds},
+  };
+  if (!m.energy.columns.empty()) {
+    Json energy = Json::object();
+    for (std::size_t c = 0; c < m.energy.columns.size(); ++c) {
+      Json column = Json::array();
+      for (const std::vector<double>& row : m.energy.rows) {
+        column.push_back(row[c]);
+      }
+      energy[m.energy.columns[c]] = std::move(column);
+    }
+    json["energy"] = std::move(energy);
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << json.dump(1) << '\n';
+  out.close();
+  if (!out) {
+    throw RuntimeError(
+        fmt::format("cannot write the manifest {}: {}", path.string(), std::strerror(errno)));
+  }
+}
+
+CacheManifest read_manifest(const std::filesystem::path& path) {
+  const FileLoc loc{path.string()};
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw UserError(loc,
+                    "there is no manifest.json here, so this folder is not a complete motion "
+                    "cache (an interrupted 'dinam simulate' leaves none); make one with "
+                    "'dinam simulate SCENE -o FOLDER'");
+  }
+  Json json;
+  try {
+    json = Json::parse(in);
+  } catch (const Json::parse_error& e) {
+    throw UserError(loc, fmt::format("the manifest is not valid JSON: {}", e.what()));
+  }
+  try {
+    if (json.at("format").get<std::string>() != CacheManifest::kFormat) {
+      throw UserError(loc, "this is not the manifest of a dinam motion cache");
+    }
+    const int version = json.at("format_version").get<int>();
+    if (version != CacheManifest::kFormatVersion) {
+      throw UserError(loc, fmt::format("cache format version {} is not the {} this dinam reads; "
+                                       "simulate again to make a new cache",
+                                       version, CacheManifest::kFormatVersion));
+    }
+    CacheManifest m;
+    m.dinam_version = json.at("dinam_version").get<std::string>();
+    m.created = json.at("created").get<std::string>();
+    const Json& scene = json.at("scene");
+    m.scene_path = scene.at("path").get<std::string>();
+    m.scene_name = scene.at("name").get<std::string>();
+    m.scene_sha256 = scene.at("sha256").get<std::string>();
+    for (const auto& [key, value] : json.at("motion_settings").items()) {
+      m.motion_settings.push_back({key, value.get<std::string>()});
+    }
+    m.fps = json.at("fps").get<double>();
+    m.frame_count = json.at("frame_count").get<int>();
+    m.timestep = json.at("timestep_s").get<double>();
+    m.steps_per_frame = json.at("steps_per_frame").get<int>();
+    m.simulate_seconds = json.at("simulate_seconds").get<double>();
+    m.node_count = json.at("node_count").get<Index>();
+    for (const Json& o : json.at("objects")) {
+      CacheObjectEntry entry;
+      entry.name = o.at("name").get<std::string>();
+      entry.first_node = o.at("first_node").get<Index>();
+      entry.node_count = o.at("node_count").get<Index>();
+      entry.bar_count = o.at("bar_count").get<Index>();
+      const Json& files = o.at("files");
+      entry.obj = files.at("obj").get<std::string>();
+      entry.pc2 = files.value("pc2", "");
+      entry.mdd = files.value("mdd", "");
+      m.objects.push_back(std::move(entry));
+    }
+    for (const Json& b : json.at("frame_bounds")) {
+      m.frame_bounds.push_back(bounds_from(b));
+    }
+    if (json.contains("energy")) {
+      for (const auto& [name, column] : json.at("energy").items()) {
+        m.energy.columns.push_back(name);
+        m.energy.rows.resize(std::max(m.energy.rows.size(), column.size()));
+        for (std::size_t k = 0; k < column.size(); ++k) {
+          m.energy.rows[k].push_back(column[k].get<double>());
+        }
+      }
+    }
+    if (m.frame_bounds.size() != static_cast<std::size_t>(m.frame_count) || m.fps <= 0.0 ||
+        m.objects.empty()) {
+      throw UserError(loc, "the manifest is inconsistent (frame bounds, fps or objects)");
+    }
+    return m;
+  } catch (const Json::exception& e) {
+    throw UserError(
+        loc, fmt::format("the manifest lacks a value or has one of the wrong type: {}", e.what()));
+  }
+}
+
+}  // namespace dinam

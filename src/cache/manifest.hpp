@@ -1,0 +1,71 @@
+#pragma once
+// manifest.json, the table of contents of a motion cache: what made it (dinam's version, the
+// scene's path, content hash and the settings that decide its motion), the frames (fps, count,
+// each frame's bounds), the objects and their files, and the energy report when asked for. It is
+// written last, so a folder with a manifest is a complete cache.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "scene/scene_description.hpp"
+
+namespace dinam {
+
+// The box around one frame's node positions (all objects), in the renderer's single precision.
+struct FrameBounds {
+  Vec3f min = Vec3f::Zero();  // m
+  Vec3f max = Vec3f::Zero();  // m
+};
+
+// One object's files, each a name inside the cache folder; pc2 or mdd is empty when that format
+// was not written.
+struct CacheObjectEntry {
+  std::string name;
+  Index first_node = 0;  // its nodes are first_node … first_node + node_count − 1 of the model
+  Index node_count = 0;
+  Index bar_count = 0;
+  std::string obj;
+  std::string pc2;
+  std::string mdd;
+};
+
+// Columns of numbers, one row per frame: the energy report of `dinam simulate --energy`.
+struct EnergyTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;  // (frame_count) × (columns)
+};
+
+struct CacheManifest {
+  static constexpr const char* kFormat = "dinam motion cache";
+  static constexpr int kFormatVersion = 1;
+
+  std::string dinam_version;
+  std::string scene_path;    // the scene file, absolute
+  std::string scene_name;    // the scene's `name`
+  std::string scene_sha256;  // of the scene file's bytes
+  std::vector<MotionSetting> motion_settings;
+  std::string created;  // UTC, ISO 8601
+
+  double fps = 0.0;
+  int frame_count = 0;    // samples in every point cache: frame k (1-based) at t = (k − 1)/fps
+  double timestep = 0.0;  // s
+  int steps_per_frame = 0;
+  double simulate_seconds = 0.0;  // wall time
+  Index node_count = 0;
+  std::vector<CacheObjectEntry> objects;
+  std::vector<FrameBounds> frame_bounds;  // (frame_count)
+  EnergyTable energy;                     // empty unless asked for
+};
+
+// The path a manifest records for a scene file: absolute, with links and dots resolved.
+std::string canonical_scene_path(const std::filesystem::path& scene);
+
+// Writes the manifest as JSON. Throws RuntimeError when it cannot.
+void write_manifest(const std::filesystem::path& path, const CacheManifest& manifest);
+
+// Reads a manifest. Throws UserError naming the file when it is missing, is not JSON, or is not a
+// dinam cache manifest of this format version.
+CacheManifest read_manifest(const std::filesystem::path& path);
+
+}  // namespace dinam

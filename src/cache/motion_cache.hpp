@@ -1,0 +1,46 @@
+#pragma once
+// Reads a motion cache that `dinam simulate` wrote (motion_cache_writer.hpp): checks that it is
+// complete and that it holds the motion of the scene at hand, then reads any range of frames
+// without simulating anything.
+#include <filesystem>
+#include <vector>
+
+#include "cache/manifest.hpp"
+#include "cache/point_cache.hpp"
+
+namespace dinam {
+
+struct Model;
+
+class MotionCache {
+ public:
+  // Reads the manifest and checks every point cache it lists (header and length). Throws UserError
+  // when the folder is not a complete cache.
+  explicit MotionCache(std::filesystem::path folder);
+
+  const CacheManifest& manifest() const { return manifest_; }
+  const std::filesystem::path& folder() const { return folder_; }
+
+  // Throws UserError when `scene` would not move as the cache does: made by another dinam
+  // version, or from settings that differ (the message names them and says whether the cache came
+  // from another scene file). Edits to the look only (camera, image, light, colours) pass.
+  void check_scene(const SceneDescription& scene) const;
+
+  // Throws UserError when the model's objects are not the cached ones, node for node.
+  void check_model(const Model& model) const;
+
+  // Every node's position in frames first … last (1-based, inclusive), as drawn.
+  std::vector<std::vector<Vec3f>> read_frames(int first, int last) const;
+
+ private:
+  struct ObjectCache {
+    std::filesystem::path path;
+    PointCacheHeader header;
+  };
+
+  std::filesystem::path folder_;
+  CacheManifest manifest_;
+  std::vector<ObjectCache> objects_;  // the cache each object is read from: PC2, else MDD
+};
+
+}  // namespace dinam

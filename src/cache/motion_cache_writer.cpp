@@ -1,0 +1,221 @@
+#include "cache/motion_cache_writer.hpp"
+
+#include <fcntl.h>  // AT_FDCWD, for renameat2
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <set>
+#include <system_error>
+
+#include "cache/obj_file.hpp"
+#include "core/error.hpp"
+#include "core/version.hpp"
+#include "model/model.hpp"
+
+namespace dinam {
+namespace {
+
+constexpr const char* kManifestName = "manifest.json";
+
+std::string host_name() {
+  std::array<char, 256> name{};
+  if (gethostname(name.data(), name.size() - 1) != 0) {
+    return "host";
+  }
+  return cache_file_stem(name.data());
+}
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  std::array<char, 32> text{};
+  std::strftime(text.data(), text.size(), "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text.data();
+}
+
+// "DIR.part-HOST-" : the prefix of this machine's temporary folders for DIR.
+std::string temporary_prefix(const std::filesystem::path& folder) {
+  return folder.filename().string() + ".part-" + host_name() + "-";
+}
+
+// A cache the writer may replace: a folder holding a manifest, or an empty folder.
+void check_replaceable(const std::filesystem::path& folder) {
+  std::error_code ec;
+  if (!std::filesystem::exists(folder, ec)) {
+    return;
+  }
+  if (!std::filesystem::is_directory(folder, ec)) {
+    throw_user_error({}, "the cache folder {} is a file; give -o a folder name", folder.string());
+  }
+  if (std::filesystem::is_regular_file(folder / kManifestName, ec) ||
+      std::filesystem::is_empty(folder, ec)) {
+    return;
+  }
+  throw_user_error({},
+                   "{} exists and is not a motion cache (it has no {}); dinam replaces only "
+                   "caches, so choose another -o folder or remove this one",
+                   folder.string(), kManifestName);
+}
+
+// Temporary folders of runs on this machine that were killed before they could clean up.
+void remove_abandoned(const std::filesystem::path& folder) {
+  const std::string prefix = temporary_prefix(folder);
+  std::error_code ec;
+  const std::filesystem::path parent =
+      folder.parent_path().empty() ? std::filesystem::path(".") : folder.parent_path();
+  for (const auto& entry : std::filesystem::directory_iterator(parent, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0) {
+      continue;
+    }
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+      std::filesystem::remove_all(entry.path(), ec);
+    }
+  }
+}
+
+// Moves the complete cache `from` to `to`. An existing cache at `to` is swapped out in one step
+// where the file system can (renameat2 RENAME_EXCHANGE), else moved aside first; then removed.
+void move_into_place(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::error_code ec;
+  if (!std::filesystem::exists(to, ec)) {
+    std::filesystem::rename(from, to, ec);
+  } else if (renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
+    std::filesystem::remove_all(from, ec);  // now the old cache
+    ec.clear();
+  } else {
+    std::filesystem::path old = from;
+    old += ".old";
+    std::filesystem::rename(to, old, ec);
+    if (!ec) {
+      std::filesystem::rename(from, to, ec);
+      std::error_code ignored;
+      std::filesystem::remove_all(old, ignored);
+    }
+  }
+  if (ec) {
+    throw RuntimeError(fmt::format("cannot move the finished cache {} to {}: {}", from.string(),
+                                   to.string(), ec.message()));
+  }
+}
+
+}  // namespace
+
+std::string cache_file_stem(const std::string& object_name) {
+  std::string stem;
+  for (const char c : object_name) {
+    const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                      c == '-' || c == '_' || c == '.';
+    stem.push_back(keep ? c : '_');
+  }
+  if (stem.empty() || stem.front() == '.') {
+    stem.insert(0, "object");
+  }
+  return stem;
+}
+
+MotionCacheWriter::MotionCacheWriter(const CacheRequest& request, const Model& model)
+    : request_(request), node_count_(model.node_count()) {
+  DINAM_CHECK(request_.pc2 || request_.mdd);
+  check_replaceable(request_.folder);
+  std::error_code ec;
+  if (!request_.folder.parent_path().empty()) {
+    std::filesystem::create_directories(request_.folder.parent_path(), ec);
+  }
+  remove_abandoned(request_.folder);
+  temporary_ = request_.folder;
+  temporary_.replace_filename(temporary_prefix(request_.folder) + std::to_string(getpid()));
+  std::filesystem::remove_all(temporary_, ec);
+  if (!std::filesystem::create_directory(temporary_, ec)) {
+    throw RuntimeError(fmt::format("cannot create the cache folder {}: {}", temporary_.string(),
+                                   ec ? ec.message() : "it exists"));
+  }
+
+  std::set<std::string> stems;
+  std::vector<float> times(static_cast<std::size_t>(request_.frame_count));
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    times[k] = static_cast<float>(static_cast<double>(k) / request_.fps);
+  }
+  for (std::size_t o = 0; o < model.objects.size(); ++o) {
+    const ModelObject& object = model.objects[o];
+    std::string stem = cache_file_stem(object.name);
+    if (!stems.insert(stem).second) {
+      stem = fmt::format("{}_{}", stem, o);
+      stems.insert(stem);
+    }
+    CacheObjectEntry entry{
+        object.name, object.first_node, object.node_count, object.bar_count, stem + ".obj", "", ""};
+    write_obj(temporary_ / entry.obj, rest_mesh(model, o));
+    ObjectFiles files{object.first_node, object.node_count, {}};
+    PointCacheHeader header;
+    header.point_count = object.node_count;
+    header.sample_count = request_.frame_count;
+    if (request_.pc2) {
+      entry.pc2 = stem + ".pc2";
+      header.format = PointCacheFormat::kPc2;
+      files.caches.emplace_back(temporary_ / entry.pc2, header);
+    }
+    if (request_.mdd) {
+      entry.mdd = stem + ".mdd";
+      header.format = PointCacheFormat::kMdd;
+      header.times = times;
+      files.caches.emplace_back(temporary_ / entry.mdd, header);
+    }
+    entries_.push_back(std::move(entry));
+    files_.push_back(std::move(files));
+  }
+  frame_bounds_.reserve(static_cast<std::size_t>(request_.frame_count));
+}
+
+MotionCacheWriter::~MotionCacheWriter() {
+  if (!committed_) {
+    files_.clear();  // closes the files before their folder goes
+    std::error_code ec;
+    std::filesystem::remove_all(temporary_, ec);
+  }
+}
+
+void MotionCacheWriter::add_frame(const std::vector<Vec3f>& positions) {
+  DINAM_CHECK(positions.size() == static_cast<std::size_t>(node_count_));
+  FrameBounds bounds{positions.front(), positions.front()};
+  for (const Vec3f& p : positions) {
+    bounds.min = bounds.min.cwiseMin(p);
+    bounds.max = bounds.max.cwiseMax(p);
+  }
+  frame_bounds_.push_back(bounds);
+  for (ObjectFiles& files : files_) {
+    for (PointCacheWriter& cache : files.caches) {
+      cache.add_sample(positions.data() + files.first_node);
+    }
+  }
+}
+
+void MotionCacheWriter::commit(CacheManifest manifest) {
+  DINAM_CHECK(frame_bounds_.size() == static_cast<std::size_t>(request_.frame_count));
+  for (ObjectFiles& files : files_) {
+    for (PointCacheWriter& cache : files.caches) {
+      cache.close();
+    }
+  }
+  manifest.dinam_version = kVersion;
+  manifest.created = utc_now();
+  manifest.fps = request_.fps;
+  manifest.frame_count = request_.frame_count;
+  manifest.node_count = node_count_;
+  manifest.objects = entries_;
+  manifest.frame_bounds = frame_bounds_;
+  write_manifest(temporary_ / kManifestName, manifest);
+  move_into_place(temporary_, request_.folder);
+  committed_ = true;
+}
+
+}  // namespace dinam

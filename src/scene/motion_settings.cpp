@@ -1,0 +1,117 @@
+#include "scene/motion_settings.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include "core/sha256.hpp"
+
+namespace dinam {
+namespace {
+
+// Keys read only for drawing. Keep this list short and sure: each entry must be read by no stage
+// before render/ (scene_reader.cpp reads them into fields that model/ and dynamics/ never see).
+constexpr std::array<std::string_view, 13> kLookOnlyKeys = {
+    "name",            // the movie's file name
+    "camera",          // the view
+    "light",           // the sun's direction
+    "image",           // size, multisampling, shadows
+    "output",          // where frames go
+    "movie",           // mp4, gif or none
+    "ground.visible",  // drawn or not (contact is `ground.contact`)
+    "ground.pattern",
+    "objects[].color",
+    "objects[].render_radius",
+    "objects[].style",
+    "objects[].joints",
+    "objects[].texture",
+};
+
+// "objects[3].color" → "objects[].color".
+std::string key_pattern(const std::string& key) {
+  std::string pattern;
+  pattern.reserve(key.size());
+  bool in_index = false;
+  for (const char c : key) {
+    if (c == '[') {
+      in_index = true;
+      pattern.push_back(c);
+    } else if (c == ']') {
+      in_index = false;
+      pattern.push_back(c);
+    } else if (!in_index) {
+      pattern.push_back(c);
+    }
+  }
+  return pattern;
+}
+
+void flatten(const YAML::Node& node, const std::string& key, std::vector<MotionSetting>& out) {
+  if (!key.empty() && is_look_only_key(key_pattern(key))) {
+    return;
+  }
+  switch (node.Type()) {
+    case YAML::NodeType::Map:
+      for (const auto& entry : node) {
+        const std::string child = entry.first.Scalar();
+        flatten(entry.second, key.empty() ? child : key + "." + child, out);
+      }
+      break;
+    case YAML::NodeType::Sequence:
+      for (std::size_t i = 0; i < node.size(); ++i) {
+        flatten(node[i], fmt::format("{}[{}]", key, i), out);
+      }
+      break;
+    case YAML::NodeType::Scalar:
+      out.push_back({key, node.Scalar()});
+      break;
+    default:  // null or undefined
+      out.push_back({key, "~"});
+      break;
+  }
+}
+
+template <typename T>
+void hash_value(Sha256& hash, const T& value) {
+  hash.update(&value, sizeof(value));
+}
+
+// What model/ builds a structure from: vertex positions in world space, faces and lines; not the
+// texture coordinates, which only drawing reads.
+std::string mesh_geometry_hash(const RawMesh& mesh) {
+  Sha256 hash;
+  hash_value(hash, static_cast<std::uint64_t>(mesh.vertices.size()));
+  for (const Vec3& v : mesh.vertices) {
+    hash.update(v.data(), 3 * sizeof(double));
+  }
+  for (const auto* loops : {&mesh.faces, &mesh.lines}) {
+    hash_value(hash, static_cast<std::uint64_t>(loops->size()));
+    for (const std::vector<Index>& loop : *loops) {
+      hash_value(hash, static_cast<std::uint64_t>(loop.size()));
+      hash.update(loop.data(), loop.size() * sizeof(Index));
+    }
+  }
+  return "sha256:" + hash.hex_digest();
+}
+
+}  // namespace
+
+bool is_look_only_key(const std::string& key_pattern) {
+  return std::find(kLookOnlyKeys.begin(), kLookOnlyKeys.end(), key_pattern) != kLookOnlyKeys.end();
+}
+
+std::vector<MotionSetting> motion_settings(const YAML::Node& root,
+                                           const std::vector<ObjectDesc>& objects) {
+  std::vector<MotionSetting> settings;
+  flatten(root, "", settings);
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    settings.push_back(
+        {fmt::format("objects[{}].mesh geometry", i), mesh_geometry_hash(objects[i].mesh)});
+  }
+  return settings;
+}
+
+}  // namespace dinam
