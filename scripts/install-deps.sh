@@ -9,6 +9,10 @@ packages=(
   libyaml-cpp-dev libcli11-dev libfmt-dev nlohmann-json3-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
+  # Real components the tests use where users meet them: Blender opens the motion cache
+  # (tests/cache/blender_open_test.sh), and a one-node Slurm cluster runs the render farm
+  # (tests/farm/slurm_farm_test.sh; the test starts and stops its own daemons).
+  blender slurm-wlm munge
 )
 
 missing=()

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -37,6 +38,7 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"duration_s", scene.duration},
       {"settle_s", model.settle.duration},
       {"output", scene.output.string()},
+      {"movie", movie_format_name(scene.movie)},
   };
   fmt::print("{}\n", json.dump(1));
 }

@@ -99,6 +99,10 @@ std::string mesh_geometry_hash(const RawMesh& mesh) {
 
 }  // namespace
 
+std::vector<std::string> look_only_keys() {
+  return {kLookOnlyKeys.begin(), kLookOnlyKeys.end()};
+}
+
 bool is_look_only_key(const std::string& key_pattern) {
   return std::find(kLookOnlyKeys.begin(), kLookOnlyKeys.end(), key_pattern) != kLookOnlyKeys.end();
 }

@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "scene/scene_description.hpp"
@@ -21,6 +22,9 @@ namespace dinam {
 // `root` is the scene file's top-level map and `objects` the objects read from it, in order.
 std::vector<MotionSetting> motion_settings(const YAML::Node& root,
                                            const std::vector<ObjectDesc>& objects);
+
+// The look-only keys, list indices written as "[]".
+std::vector<std::string> look_only_keys();
 
 // True for a key path (list indices written as "[]", e.g. "objects[].color") that only changes
 // how the motion is drawn.

@@ -1,0 +1,248 @@
+// Simulate once, render anywhere, as a user runs it: `dinam simulate`, `dinam render --cache` in
+// chunks, `dinam movie`; stale caches refused; interrupted simulations leave no cache.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "test_support.hpp"
+
+extern char** environ;
+
+namespace dinam {
+namespace {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+CommandResult run(const std::string& command) {
+  CommandResult result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) {
+    return result;
+  }
+  std::array<char, 4096> buffer{};
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) {
+    result.output += buffer.data();
+  }
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string shell_quoted(const std::filesystem::path& path) {
+  std::string text = "'";  // built in steps: "'" + … trips GCC 12's false -Wrestrict (PR 105329)
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
+std::string dinam(const std::string& arguments) {
+  return shell_quoted(DINAM_PROGRAM) + " " + arguments;
+}
+
+std::string file_text(const std::filesystem::path& path) {
+  std::stringstream text;
+  text << std::ifstream(path, std::ios::binary).rdbuf();
+  return text.str();
+}
+
+class CacheEndToEnd : public ::testing::Test {
+ protected:
+  std::filesystem::path path(const std::string& name) const { return folder_.path() / name; }
+  test::TemporaryFolder folder_{"cache-e2e"};
+};
+
+const std::filesystem::path kFlag = std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/flag.yaml";
+
+TEST_F(CacheEndToEnd, FlagInThreeChunksFromOneCacheIsTheWholeRenderByteForByte) {
+  const CommandResult whole =
+      run(dinam("render " + shell_quoted(kFlag) + " -o " + shell_quoted(path("whole")) +
+                " --size 96x54 --movie none -q"));
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  const CommandResult simulate =
+      run(dinam("simulate " + shell_quoted(kFlag) + " -o " + shell_quoted(path("cache")) + " -q"));
+  ASSERT_EQ(simulate.exit_code, 0) << simulate.output;
+  for (const char* chunk : {"81-120", "1-40", "41-80"}) {  // any order, as a farm finishes them
+    const CommandResult render = run(dinam(
+        "render " + shell_quoted(kFlag) + " --cache " + shell_quoted(path("cache")) + " --frames " +
+        chunk + " -o " + shell_quoted(path("chunks")) + " --size 96x54 --movie none -q"));
+    ASSERT_EQ(render.exit_code, 0) << chunk << ": " << render.output;
+  }
+  for (int frame = 1; frame <= 120; ++frame) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04d.png", frame);
+    const std::string expected = file_text(path("whole") / name);
+    ASSERT_FALSE(expected.empty()) << name;
+    ASSERT_EQ(file_text(path("chunks") / name), expected) << name << " differs";
+  }
+
+  const CommandResult movie = run(dinam("movie " + shell_quoted(path("chunks"))));
+  ASSERT_EQ(movie.exit_code, 0) << movie.output;
+  const CommandResult probe =
+      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+          "stream=codec_name,nb_read_frames,r_frame_rate -of csv=p=0 " +
+          shell_quoted(path("chunks") / "flag.mp4"));
+  ASSERT_EQ(probe.exit_code, 0) << probe.output;
+  EXPECT_EQ(probe.output, "h264,20/1,120\n");
+}
+
+TEST_F(CacheEndToEnd, MovieNamesMissingAndExtraFramesAndMakesNothing) {
+  ASSERT_EQ(run(dinam("render " + shell_quoted(kFlag) + " -o " + shell_quoted(path("frames")) +
+                      " --size 32x18 --frames 1-120 --movie none -q"))
+                .exit_code,
+            0);
+  std::filesystem::remove(path("frames") / "frame_0005.png");
+  for (const char* name : {"frame_0041.png", "frame_0042.png", "frame_0043.png"}) {
+    std::filesystem::remove(path("frames") / name);
+  }
+  std::filesystem::copy_file(path("frames") / "frame_0001.png", path("frames") / "frame_0121.png");
+  const CommandResult movie = run(dinam("movie " + shell_quoted(path("frames"))));
+  EXPECT_EQ(movie.exit_code, 2) << movie.output;
+  EXPECT_NE(movie.output.find("missing frames: 5, 41-43"), std::string::npos) << movie.output;
+  EXPECT_NE(movie.output.find("frame_0121.png"), std::string::npos) << movie.output;
+  EXPECT_FALSE(std::filesystem::exists(path("frames") / "flag.mp4"));
+  EXPECT_FALSE(std::filesystem::exists(path("frames") / "flag.mp4.part"));
+
+  const CommandResult no_folder = run(dinam("movie " + shell_quoted(path("absent"))));
+  EXPECT_EQ(no_folder.exit_code, 2);
+  EXPECT_NE(no_folder.output.find("frames.json"), std::string::npos) << no_folder.output;
+}
+
+// A tiny rope scene beside the test's files, which the tests edit.
+const char* const kRope = R"(version: 1
+name: rope
+duration: 0.5
+fps: 10
+objects:
+  - name: rope
+    mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]], segments: 8}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
+    pinned: {indices: [0]}
+    color: [0.1, 0.9, 0.1]
+)";
+
+TEST_F(CacheEndToEnd, AStaleCacheIsRefusedWithTheChangedKeyAndTheCommandThatMendsIt) {
+  std::ofstream(path("rope.yaml")) << kRope;
+  ASSERT_EQ(run(dinam("simulate " + shell_quoted(path("rope.yaml")) + " -o " +
+                      shell_quoted(path("cache")) + " -q"))
+                .exit_code,
+            0);
+  std::string edited = kRope;
+  edited.replace(edited.find("1.0e7"), 5, "2.0e7");
+  std::ofstream(path("rope.yaml")) << edited;
+  const CommandResult render =
+      run(dinam("render " + shell_quoted(path("rope.yaml")) + " --cache " +
+                shell_quoted(path("cache")) + " -o " + shell_quoted(path("out"))));
+  EXPECT_EQ(render.exit_code, 2) << render.output;
+  EXPECT_NE(render.output.find("objects[0].material.youngs_modulus: 1.0e7 in the cache, 2.0e7 now"),
+            std::string::npos)
+      << render.output;
+  EXPECT_NE(render.output.find("dinam simulate"), std::string::npos) << render.output;
+  EXPECT_FALSE(std::filesystem::exists(path("out")));  // nothing written
+
+  const CommandResult energy = run(dinam("render " + shell_quoted(path("rope.yaml")) + " --cache " +
+                                         shell_quoted(path("cache")) + " --energy"));
+  EXPECT_EQ(energy.exit_code, 2);
+  EXPECT_NE(energy.output.find("simulate --energy"), std::string::npos) << energy.output;
+}
+
+TEST_F(CacheEndToEnd, EnergyGoesIntoTheManifestAndBesideIt) {
+  std::ofstream(path("rope.yaml")) << kRope;
+  const CommandResult simulate =
+      run(dinam("simulate " + shell_quoted(path("rope.yaml")) + " -o " +
+                shell_quoted(path("cache")) + " --energy --format mdd -q"));
+  ASSERT_EQ(simulate.exit_code, 0) << simulate.output;
+  const std::string manifest = file_text(path("cache") / "manifest.json");
+  EXPECT_NE(manifest.find("\"total_J\""), std::string::npos);
+  EXPECT_NE(manifest.find("\"mdd\": \"rope.mdd\""), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(path("cache") / "rope.pc2"));
+  std::ifstream csv(path("cache") / "energy.csv");
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) {
+    ++lines;
+  }
+  EXPECT_EQ(lines, 1 + 5);  // the header and one row per frame
+  // An MDD-only cache draws as well.
+  const CommandResult render = run(dinam(
+      "render " + shell_quoted(path("rope.yaml")) + " --cache " + shell_quoted(path("cache")) +
+      " -o " + shell_quoted(path("out")) + " --size 32x18 --movie none -q"));
+  EXPECT_EQ(render.exit_code, 0) << render.output;
+  EXPECT_TRUE(std::filesystem::exists(path("out") / "frame_0005.png"));
+}
+
+// Starts `dinam simulate` on a scene that takes several seconds, waits until its temporary cache
+// folder exists, and sends `signal`. Returns the exit status.
+int interrupted_simulate(const std::filesystem::path& scene, const std::filesystem::path& cache,
+                         int signal) {
+  const std::vector<std::string> arguments = {DINAM_PROGRAM, "simulate",     scene.string(),
+                                              "-o",          cache.string(), "-q"};
+  std::vector<char*> argv;
+  for (const std::string& a : arguments) {
+    argv.push_back(const_cast<char*>(a.c_str()));
+  }
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  EXPECT_EQ(posix_spawn(&pid, DINAM_PROGRAM, nullptr, nullptr, argv.data(), environ), 0);
+  const std::string prefix = cache.filename().string() + ".part-";
+  bool started = false;
+  for (int i = 0; i < 400 && !started; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    for (const auto& entry : std::filesystem::directory_iterator(cache.parent_path())) {
+      started = started || entry.path().filename().string().rfind(prefix, 0) == 0;
+    }
+  }
+  EXPECT_TRUE(started) << "the simulation never started its cache";
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  kill(pid, signal);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+TEST_F(CacheEndToEnd, AnInterruptedSimulationLeavesNoCacheThatRenderAccepts) {
+  // A 300 × 300 cloth for 20 s: far longer than the test waits.
+  std::ofstream(path("big.yaml")) << R"(version: 1
+duration: 20
+fps: 10
+objects:
+  - name: cloth
+    mesh: {grid: {width: 1, height: 1, columns: 300, rows: 300}, translation: [0, 0, 1]}
+    material: {density: 800, youngs_modulus: 2.0e6, radius: 0.001}
+)";
+  // SIGTERM: dinam stops between frames and removes its temporary folder.
+  const int terminated = interrupted_simulate(path("big.yaml"), path("cache"), SIGTERM);
+  EXPECT_TRUE(WIFEXITED(terminated) && WEXITSTATUS(terminated) == 128 + SIGTERM) << terminated;
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder_.path()), {}), 1);  // big.yaml
+
+  // SIGKILL: no chance to clean up; what is left is no cache, and the next run clears it away.
+  const int killed = interrupted_simulate(path("big.yaml"), path("cache"), SIGKILL);
+  EXPECT_TRUE(WIFSIGNALED(killed));
+  EXPECT_FALSE(std::filesystem::exists(path("cache")));
+  std::string leftover;
+  for (const auto& entry : std::filesystem::directory_iterator(folder_.path())) {
+    if (entry.is_directory()) {
+      leftover = entry.path().string();
+    }
+  }
+  ASSERT_FALSE(leftover.empty());
+  for (const std::string& cache : {path("cache").string(), leftover}) {
+    const CommandResult render =
+        run(dinam("render " + shell_quoted(path("big.yaml")) + " --cache " + shell_quoted(cache) +
+                  " -o " + shell_quoted(path("out"))));
+    EXPECT_EQ(render.exit_code, 2) << render.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(path("out")));
+}
+
+}  // namespace
+}  // namespace dinam

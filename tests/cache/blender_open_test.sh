@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# A motion cache opens in Blender: simulates the paper's flag into a cache with PC2 and MDD files,
+# then runs scripts/blender-check-cache.py in Blender itself (headless), which imports each OBJ,
+# adds Mesh Cache modifiers and compares the moved vertices with the cache files.
+#
+#   tests/cache/blender_open_test.sh DINAM SOURCE_DIR
+#
+# Exits 77 (CTest: skipped) when Blender is not installed; scripts/install-deps.sh installs it.
+set -euo pipefail
+dinam=$(realpath "$1")
+source_dir=$(realpath "$2")
+if ! command -v blender >/dev/null; then
+  echo "SKIPPED: blender is not installed (scripts/install-deps.sh installs it)"
+  exit 77
+fi
+work=$(mktemp -d /tmp/dinam-blender-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+"$dinam" simulate "$source_dir/scenes/flag.yaml" -o "$work/cache" --format pc2,mdd --quiet
+blender -b --factory-startup --python-exit-code 1 \
+  --python "$source_dir/scripts/blender-check-cache.py" -- "$work/cache" >"$work/blender.log" 2>&1 ||
+  { cat "$work/blender.log"; exit 1; }
+grep '^blender-check:' "$work/blender.log"
+grep -q '^blender-check: PASS' "$work/blender.log"

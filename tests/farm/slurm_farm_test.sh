@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# The Slurm render farm for real: brings up a one-node cluster on this machine (munged, slurmctld
+# and slurmd from Debian's munge and slurm-wlm, with a generated slurm.conf in a temporary folder),
+# runs scripts/slurm-render.sh on the paper's flag in three chunks, and checks that every frame is
+# byte for byte the frame of one whole 'dinam render', and that the movie has all 120 frames. The
+# daemons are stopped and the folder removed at the end, whatever happens.
+#
+#   tests/farm/slurm_farm_test.sh DINAM SOURCE_DIR
+#
+# Exits 77 (CTest: skipped) without Slurm or munge installed, or when not run as root (slurmd
+# starts jobs as their user). scripts/install-deps.sh installs both, so CI runs it.
+set -euo pipefail
+dinam=$(realpath "$1")
+source_dir=$(realpath "$2")
+size=160x90
+
+for program in munged mungekey slurmctld slurmd sbatch scontrol ffprobe; do
+  if ! command -v "$program" >/dev/null; then
+    echo "SKIPPED: $program is not installed (scripts/install-deps.sh installs it)"
+    exit 77
+  fi
+done
+if [ "$(id -u)" -ne 0 ]; then
+  echo "SKIPPED: a one-node Slurm cluster needs root for slurmd"
+  exit 77
+fi
+
+work=$(mktemp -d /tmp/dinam-slurm-XXXXXX)
+chmod 755 "$work"
+started=$(date +%s.%N)
+stop_cluster() {
+  if [ -f "$work/slurm.conf" ]; then
+    SLURM_CONF="$work/slurm.conf" scontrol shutdown >/dev/null 2>&1 || true
+  fi
+  for pid_file in "$work/slurmctld.pid" "$work/slurmd.pid" "$work/munge/munged.pid"; do
+    if [ -f "$pid_file" ]; then
+      pid=$(cat "$pid_file")
+      for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; kill "$pid" 2>/dev/null || true; sleep 0.1; done
+      kill -9 "$pid" 2>/dev/null || true
+    fi
+  done
+}
+on_exit() {
+  status=$?
+  if [ $status -ne 0 ]; then
+    echo "--- logs ---"
+    tail -n 20 "$work"/log/*.log "$work"/farm/slurm-logs/*.log 2>/dev/null || true
+  fi
+  stop_cluster
+  rm -rf "$work"
+  exit $status
+}
+trap on_exit EXIT
+
+# Two free TCP ports on the loopback for slurmctld and slurmd.
+free_port() {
+  local port
+  while :; do
+    port=$(( 20000 + RANDOM % 20000 ))
+    if ! (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null && [ "$port" != "${1:-}" ]; then
+      echo "$port"
+      return
+    fi
+  done
+}
+controller_port=$(free_port)
+node_port=$(free_port "$controller_port")
+
+# munge: a key of our own and a daemon on a socket of our own.
+mkdir -p "$work/munge" "$work/state" "$work/spool" "$work/log"
+chmod 700 "$work/munge"
+mungekey --create --keyfile="$work/munge/munge.key"
+munged --force --socket="$work/munge/munge.sock" --key-file="$work/munge/munge.key" \
+  --pid-file="$work/munge/munged.pid" --log-file="$work/log/munged.log" \
+  --seed-file="$work/munge/munged.seed"
+
+host=$(hostname -s)
+cat >"$work/slurm.conf" <<CONF
+ClusterName=dinamtest
+SlurmctldHost=$host(127.0.0.1)
+SlurmctldPort=$controller_port
+SlurmdPort=$node_port
+SlurmUser=root
+SlurmdUser=root
+AuthType=auth/munge
+AuthInfo=socket=$work/munge/munge.sock
+CredType=cred/munge
+StateSaveLocation=$work/state
+SlurmdSpoolDir=$work/spool
+SlurmctldPidFile=$work/slurmctld.pid
+SlurmdPidFile=$work/slurmd.pid
+SlurmctldLogFile=$work/log/slurmctld.log
+SlurmdLogFile=$work/log/slurmd.log
+ProctrackType=proctrack/linuxproc
+TaskPlugin=task/none
+JobAcctGatherType=jobacct_gather/none
+AccountingStorageType=accounting_storage/none
+JobCompType=jobcomp/none
+SchedulerType=sched/builtin
+SchedulerParameters=sched_interval=1
+SelectType=select/cons_tres
+SelectTypeParameters=CR_CPU
+ReturnToService=2
+MpiDefault=none
+NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
+PartitionName=dinam Nodes=$host Default=YES MaxTime=INFINITE State=UP OverSubscribe=YES
+CONF
+export SLURM_CONF="$work/slurm.conf"
+slurmctld -f "$SLURM_CONF" -i
+slurmd -f "$SLURM_CONF"
+for _ in $(seq 100); do
+  [ "$(sinfo -h -o %T 2>/dev/null)" = idle ] && break
+  sleep 0.1
+done
+[ "$(sinfo -h -o %T)" = idle ] || { echo "FAIL: the Slurm node did not come up"; exit 1; }
+up=$(date +%s.%N)
+echo "cluster up in $(awk "BEGIN { printf \"%.1f\", $up - $started }") s"
+
+# The reference: one whole render, no cache.
+"$dinam" render "$source_dir/scenes/flag.yaml" -o "$work/whole" --size "$size" --movie none -q
+
+# The farm: simulate, three chunks of 40 frames from the cache, the movie.
+"$source_dir/scripts/slurm-render.sh" "$source_dir/scenes/flag.yaml" --dinam "$dinam" \
+  --chunk 40 --size "$size" --partition dinam --output "$work/farm" --wait
+done_at=$(date +%s.%N)
+echo "farm finished in $(awk "BEGIN { printf \"%.1f\", $done_at - $up }") s"
+
+logs=$(ls "$work"/farm/slurm-logs/render-*.log | wc -l)
+[ "$logs" -eq 3 ] || { echo "FAIL: expected 3 render tasks, found $logs logs"; exit 1; }
+[ -f "$work/farm/cache/manifest.json" ] || { echo "FAIL: no cache"; exit 1; }
+compared=0
+for frame in "$work"/whole/frame_*.png; do
+  name=$(basename "$frame")
+  cmp -s "$frame" "$work/farm/$name" || { echo "FAIL: $name differs from the whole render's"; exit 1; }
+  compared=$((compared + 1))
+done
+[ "$compared" -eq 120 ] || { echo "FAIL: compared $compared frames, not 120"; exit 1; }
+count=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames \
+  -of csv=p=0 "$work/farm/flag.mp4")
+[ "$count" = 120 ] || { echo "FAIL: the movie has $count frames, not 120"; exit 1; }
+echo "PASS: 120 frames from 3 Slurm tasks are byte-identical to one whole render; the movie has 120 frames"
