@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "app/command_support.hpp"
 #include "app/draw_list_from_model.hpp"
 #include "cache/motion_cache.hpp"
 #include "dynamics/integrator.hpp"
@@ -10,13 +11,6 @@
 #include "scene/scene_description.hpp"
 
 namespace dinam {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool track_energy,
                   const std::function<void(int, const State&)>& on_frame) {
@@ -24,6 +18,7 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
   for (int frame = 1; frame <= last; ++frame) {
     if (frame > 1) {
       for (int s = 0; s < timestep.steps_per_frame; ++s) {
+        stop_if_asked();  // within a step of SIGINT or SIGTERM, however long a frame takes
         step(model, timestep.dt, {}, state);
       }
     }
@@ -34,7 +29,7 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
 SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, int last,
                                 bool track_energy,
                                 const std::function<void(int, const State&)>& on_frame) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   SimulatedFrames frames;
   frames.positions.resize(static_cast<std::size_t>(last));
   run_dynamics(model, timestep, last, track_energy, [&](int frame, const State& state) {
@@ -49,7 +44,7 @@ SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, in
 }
 
 SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   SimulatedFrames frames;
   frames.first_frame = first;
   frames.positions = cache.read_frames(first, last);

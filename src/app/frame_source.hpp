@@ -34,6 +34,7 @@ struct SimulatedFrames {
 };
 
 // Runs the dynamics to frame `last`, calling `on_frame(frame, state)` at each frame's time.
+// Throws Interrupted (command_support.hpp) at the next step after SIGINT or SIGTERM.
 void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool track_energy,
                   const std::function<void(int, const State&)>& on_frame);
 
