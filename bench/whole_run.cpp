@@ -172,18 +172,18 @@ int main(int argc, char** argv) {
       large_cache.read_frames(1 + k, 1 + k);
       k = (k + 13) % 120;
     });
-    fmt::print("motion cache (PC2), per frame: write {:.3f} ms for the paper flag ({} nodes), "
-               "{:.2f} ms for the large flag ({} nodes); read one frame of the large flag "
-               "{:.2f} ms\n",
-               1e3 * write_flag / 120.0, flag.node_count(), 1e3 * write_large / 120.0,
-               large.node_count(), 1e3 * read_large);
+    fmt::print(
+        "motion cache (PC2), per frame: write {:.3f} ms for the paper flag ({} nodes), "
+        "{:.2f} ms for the large flag ({} nodes); read one frame of the large flag "
+        "{:.2f} ms\n",
+        1e3 * write_flag / 120.0, flag.node_count(), 1e3 * write_large / 120.0, large.node_count(),
+        1e3 * read_large);
   }
   write_cache(flag, frames.positions);
   const auto chunk_seconds = [&](int first, int last) {
-    const std::string chunk_command =
-        fmt::format("'{}' render '{}' --cache '{}' --frames {}-{} -o '{}' --movie none -q",
-                    program, (source / "scenes/flag.yaml").string(), cache.string(), first, last,
-                    out.string());
+    const std::string chunk_command = fmt::format(
+        "'{}' render '{}' --cache '{}' --frames {}-{} -o '{}' --movie none -q", program,
+        (source / "scenes/flag.yaml").string(), cache.string(), first, last, out.string());
     return median_seconds(5, [&] {
       if (std::system(chunk_command.c_str()) != 0) {
         fmt::print(stderr, "failed: {}\n", chunk_command);
@@ -199,11 +199,12 @@ int main(int argc, char** argv) {
   for (const int frames_in_chunk : {20, 60}) {
     const double chunk = chunk_seconds(41, 40 + frames_in_chunk);
     const double drawing = frames_in_chunk * (draw + encode);
-    fmt::print("{}-frame chunk from the cache (render --cache, 720p, no movie), end to end: "
-               "{:.2f} s = {:.2f} × the {:.2f} s that drawing and PNG encoding alone take ({} × "
-               "(draw + PNG)), {:.2f} × with the start-up\n",
-               frames_in_chunk, chunk, chunk / drawing, drawing, frames_in_chunk,
-               chunk / (drawing + start_up));
+    fmt::print(
+        "{}-frame chunk from the cache (render --cache, 720p, no movie), end to end: "
+        "{:.2f} s = {:.2f} × the {:.2f} s that drawing and PNG encoding alone take ({} × "
+        "(draw + PNG)), {:.2f} × with the start-up\n",
+        frames_in_chunk, chunk, chunk / drawing, drawing, frames_in_chunk,
+        chunk / (drawing + start_up));
   }
   std::filesystem::remove_all(out);
   std::filesystem::remove_all(cache);

@@ -22,9 +22,9 @@ Json bounds_json(const FrameBounds& b) {
 FrameBounds bounds_from(const Json& j) {
   // Floats go to JSON as doubles, which print exactly, and come back to the same float.
   FrameBounds b;
-  for (int c = 0; c < 3; ++c) {
-    b.min[c] = j.at(static_cast<std::size_t>(c)).get<float>();
-    b.max[c] = j.at(static_cast<std::size_t>(c + 3)).get<float>();
+  for (std::size_t c = 0; c < 3; ++c) {
+    b.min[static_cast<Eigen::Index>(c)] = j.at(c).get<float>();
+    b.max[static_cast<Eigen::Index>(c)] = j.at(c + 3).get<float>();
   }
   return b;
 }

@@ -56,8 +56,12 @@ void flatten(const YAML::Node& node, const std::string& key, std::vector<MotionS
   switch (node.Type()) {
     case YAML::NodeType::Map:
       for (const auto& entry : node) {
-        const std::string child = entry.first.Scalar();
-        flatten(entry.second, key.empty() ? child : key + "." + child, out);
+        std::string child = key;
+        if (!child.empty()) {
+          child += '.';
+        }
+        child += entry.first.Scalar();
+        flatten(entry.second, child, out);
       }
       break;
     case YAML::NodeType::Sequence:

@@ -42,11 +42,7 @@ objects:
     color: [0.1, 0.9, 0.1]
 )";
 
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
+using test::replaced;
 
 std::vector<std::vector<Vec3f>> motion_of(const SceneDescription& scene) {
   const Model model = build_model(scene);
