@@ -27,8 +27,8 @@ int run(int argc, char** argv) {
   render_command->add_option("-o,--output", output,
                              "Output folder (default: the scene's 'output', else out/<name>)");
   render_command->add_option("--frames", render.frames,
-                             "Frames to write, A-B (1-based, inclusive); the motion before A is "
-                             "still simulated");
+                             "Frames to write, A-B (1-based, inclusive); each is the frame of the "
+                             "whole movie (the whole motion is simulated, or read with --cache)");
   render_command->add_option("--size", render.size, "Image size WxH, e.g. 640x360");
   bool no_video = false;
   render_command->add_option("--movie", render.movie,
