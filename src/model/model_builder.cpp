@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/derived_checks.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
 #include "model/spring_builders.hpp"
@@ -357,6 +358,7 @@ Model build_model(const SceneDescription& scene) {
   add_ground(scene, model);
   colour_all_springs(model);
   release_spare_capacity(model);
+  check_derived_quantities(model, scene);
   return model;
 }
 

@@ -34,6 +34,16 @@ void require_positive(double value, const FileLoc& loc, const std::string& what,
   }
 }
 
+// A material value within the range docs/scene-format.md gives: beyond it no real material lies,
+// and the masses, stiffnesses and the stable step derived from it leave double precision.
+void require_in_range(double value, double low, double high, const FileLoc& loc,
+                      const std::string& what, const char* unit) {
+  if (!(value >= low && value <= high)) {
+    throw_user_error(loc, "'{}' must be between {:g} and {:g} {}, got {:g}", what, low, high, unit,
+                     value);
+  }
+}
+
 CameraDesc read_camera(const YAML::Node& node, const std::string& file) {
   CameraDesc camera;
   camera.loc = loc_of(node, file);
@@ -250,13 +260,18 @@ MaterialDesc read_material(YamlMap map) {
   material.loc = map.loc();
   material.density = map.required_number("density");
   require_positive(material.density, map.loc("density"), map.path("density"), "kg/m³");
+  require_in_range(material.density, 1e-6, 1e6, map.loc("density"), map.path("density"), "kg/m³");
   material.youngs_modulus = map.required_number("youngs_modulus");
   require_positive(material.youngs_modulus, map.loc("youngs_modulus"), map.path("youngs_modulus"),
                    "Pa");
+  require_in_range(material.youngs_modulus, 1e-3, 1e13, map.loc("youngs_modulus"),
+                   map.path("youngs_modulus"), "Pa");
   // G defaults to that of an isotropic solid with Poisson's ratio 0.3: G = E / (2 (1 + ν)).
   material.shear_modulus = map.number("shear_modulus", material.youngs_modulus / 2.6);
   require_positive(material.shear_modulus, map.loc("shear_modulus"), map.path("shear_modulus"),
                    "Pa");
+  require_in_range(material.shear_modulus, 1e-3, 1e13, map.loc("shear_modulus"),
+                   map.path("shear_modulus"), "Pa");
 
   const bool has_radius = map.has("radius");
   const bool has_area = map.has("area");
@@ -269,6 +284,7 @@ MaterialDesc read_material(YamlMap map) {
   if (has_radius) {
     const double r = map.required_number("radius");
     require_positive(r, map.loc("radius"), map.path("radius"), "m");
+    require_in_range(r, 1e-7, 100.0, map.loc("radius"), map.path("radius"), "m");
     material.wire_radius = r;
     material.area = kPi * r * r;
     material.area_moment = kPi * std::pow(r, 4) / 4.0;
@@ -276,12 +292,17 @@ MaterialDesc read_material(YamlMap map) {
   } else {
     material.area = map.required_number("area");
     require_positive(material.area, map.loc("area"), map.path("area"), "m²");
+    require_in_range(material.area, 1e-14, 1e4, map.loc("area"), map.path("area"), "m²");
     // Without I and J, those of the circle of the same area: I = A²/(4π), J = 2I.
     material.area_moment = map.number("area_moment", material.area * material.area / (4.0 * kPi));
     require_positive(material.area_moment, map.loc("area_moment"), map.path("area_moment"), "m⁴");
+    require_in_range(material.area_moment, 1e-30, 1e8, map.loc("area_moment"),
+                     map.path("area_moment"), "m⁴");
     material.polar_moment = map.number("polar_moment", 2.0 * material.area_moment);
     require_positive(material.polar_moment, map.loc("polar_moment"), map.path("polar_moment"),
                      "m⁴");
+    require_in_range(material.polar_moment, 1e-30, 1e8, map.loc("polar_moment"),
+                     map.path("polar_moment"), "m⁴");
   }
 
   // Yield: from a yield stress σy and the section, then any kind given directly overrides it.
@@ -381,6 +402,38 @@ PolylineSpec read_polyline(YamlMap map) {
   return polyline;
 }
 
+// Far beyond any structure dinam can draw or step (a thousand kilometres; 50 million vertices,
+// some 10 GB of model), and far below where double precision or 32-bit ids give out.
+constexpr double kMaxCoordinate = 1e6;  // m
+constexpr std::size_t kMaxMeshVertices = 50'000'000;
+
+// Every vertex finite and within kMaxCoordinate of the origin, in world space (after the
+// placement), and not too many of them: a NaN in a file or a mesh in the wrong units is found
+// here, at the mesh's line, not as a "diverged" step later.
+void check_mesh_values(const RawMesh& mesh, const FileLoc& where, const std::string& what) {
+  if (mesh.vertices.size() > kMaxMeshVertices) {
+    throw_user_error(where,
+                     "{} has {} vertices, more than the {} dinam takes (its model would "
+                     "need more memory than a machine has); simplify it",
+                     what, mesh.vertices.size(), kMaxMeshVertices);
+  }
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& v = mesh.vertices[i];
+    if (!v.allFinite()) {
+      throw_user_error(where,
+                       "vertex {} of {} is ({}, {}, {}) after placement, not a finite "
+                       "point; mend the mesh (or its 'scale')",
+                       i, what, v.x(), v.y(), v.z());
+    }
+    if (v.cwiseAbs().maxCoeff() > kMaxCoordinate) {
+      throw_user_error(where,
+                       "vertex {} of {} is at ({:g}, {:g}, {:g}) m, beyond {:g} m from the "
+                       "origin; is the mesh in other units? Give 'scale'",
+                       i, what, v.x(), v.y(), v.z(), kMaxCoordinate);
+    }
+  }
+}
+
 // Exactly one of `file`, `grid` or `polyline`, then the placement. Returns the mesh in world space.
 RawMesh read_mesh(YamlMap map, const std::filesystem::path& scene_folder) {
   const int sources = int{map.has("file")} + int{map.has("grid")} + int{map.has("polyline")};
@@ -402,6 +455,9 @@ RawMesh read_mesh(YamlMap map, const std::filesystem::path& scene_folder) {
   }
   apply_transform(read_transform(map), mesh);
   map.finish();
+  check_mesh_values(mesh, map.has("file") ? map.loc("file") : map.loc(),
+                    map.has("file") ? fmt::format("mesh file '{}'", map.string("file", ""))
+                                    : std::string("the generated mesh"));
   return mesh;
 }
 
@@ -765,6 +821,7 @@ SceneDescription read_scene_text(const std::string& text, const std::filesystem:
   if (!root || root.IsNull()) {
     throw UserError(FileLoc{source.string()}, "the scene file is empty");
   }
+  check_no_duplicate_keys(root, source.string());
   SceneDescription scene = read_root(root, source);
   scene.source_sha256 = sha256_hex(text);
   scene.motion_settings = motion_settings(root, scene.objects);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace dinam {
 namespace {
@@ -91,6 +92,43 @@ Vec3 as_vec3(const YAML::Node& node, const std::string& file, const std::string&
   }
   return {as_double(node[0], file, what + "[0]"), as_double(node[1], file, what + "[1]"),
           as_double(node[2], file, what + "[2]")};
+}
+
+void check_no_duplicate_keys(const YAML::Node& root, const std::string& file) {
+  // Aliases can make a small file a huge tree (the "billion laughs"); a scene has far fewer
+  // nodes than this, so a document beyond it is refused rather than walked.
+  constexpr std::size_t kMaxNodes = 10'000'000;
+  std::size_t visited = 0;
+  std::vector<YAML::Node> pending = {root};
+  while (!pending.empty()) {
+    const YAML::Node node = pending.back();
+    pending.pop_back();
+    if (++visited > kMaxNodes) {
+      throw_user_error(loc_of(root, file),
+                       "the scene expands to more than {} YAML nodes (through "
+                       "aliases?); that is no scene dinam can read",
+                       kMaxNodes);
+    }
+    if (node.IsMap()) {
+      std::map<std::string, YAML::Node> keys;
+      for (const auto& entry : node) {
+        if (entry.first.IsScalar()) {
+          const auto [earlier, first_time] = keys.emplace(entry.first.Scalar(), entry.first);
+          if (!first_time) {
+            throw_user_error(loc_of(entry.first, file),
+                             "the key '{}' appears twice in one map (first at {}); YAML allows a "
+                             "key once: keep one of them",
+                             entry.first.Scalar(), loc_of(earlier->second, file).to_string());
+          }
+        }
+        pending.push_back(entry.second);
+      }
+    } else if (node.IsSequence()) {
+      for (const auto& item : node) {
+        pending.push_back(item);
+      }
+    }
+  }
 }
 
 YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)

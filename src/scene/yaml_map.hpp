@@ -23,6 +23,10 @@ bool as_bool(const YAML::Node& node, const std::string& file, const std::string&
 std::string as_string(const YAML::Node& node, const std::string& file, const std::string& what);
 Vec3 as_vec3(const YAML::Node& node, const std::string& file, const std::string& what);
 
+// Throws UserError at the second occurrence of a key within one map, anywhere in the document,
+// naming the first: YAML forbids it, yet the parser keeps both and a reader would silently use one.
+void check_no_duplicate_keys(const YAML::Node& root, const std::string& file);
+
 class YamlMap {
  public:
   // Throws if `node` is not a map.

@@ -147,3 +147,28 @@ objects:
 
 }  // namespace
 }  // namespace dinam
+
+namespace dinam {
+namespace {
+
+// Built from typed values, a material may skip the scene reader's ranges; the model still refuses
+// to hand a step masses or stiffnesses it cannot compute with, naming the object.
+TEST(ModelBuilder, DerivedQuantitiesBeyondDoublePrecisionAreRefused) {
+  SceneDescription scene = test::scene_from_yaml(
+      "version: 1\nduration: 1\nobjects:\n  - name: rope\n    mesh: {file: rope.obj}\n    "
+      "material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}\n");
+  EXPECT_NO_THROW(build_model(scene));
+  scene.objects[0].material.density = 1e308;  // ρ A L: 1e308 × 3e-4 × L is finite, ½ of it too
+  scene.objects[0].material.area = 1e10;      // … but not with this area
+  test::expect_user_error([&] { build_model(scene); }, 6,
+                          {"object 'rope'", "which no step can use"});
+  scene.objects[0].material.density = 1000.0;
+  scene.objects[0].material.area = 3e-4;
+  scene.objects[0].material.youngs_modulus = 1e308;
+  scene.objects[0].material.area_moment = 1e300;
+  test::expect_user_error([&] { build_model(scene); }, 6,
+                          {"spring stiffness of the model is inf", "beyond double precision"});
+}
+
+}  // namespace
+}  // namespace dinam

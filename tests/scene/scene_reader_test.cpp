@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 
 #include "test_support.hpp"
@@ -306,6 +307,74 @@ TEST(SceneReader, StructuralMistakesAreErrors) {
                              "    mesh: {grid: {width: 1, height: 1}, file: cube.obj, "));
       },
       22, {"exactly one source"});
+}
+
+}  // namespace
+}  // namespace dinam
+
+namespace dinam {
+namespace {
+
+// Bad input that once got through: duplicate keys, non-finite or absurd mesh vertices, material
+// values no real material has. Each stops at its line with what to do.
+TEST(SceneReader, DuplicateKeysAreErrorsAtTheSecondNamingTheFirst) {
+  const std::string object =
+      "objects:\n  - mesh: {file: rope.obj}\n    material: {density: 1000, youngs_modulus: 1e6, "
+      "radius: 0.01}\n";
+  test::expect_user_error(
+      [&] { test::scene_from_yaml("version: 1\nduration: 1\nduration: 2\n" + object); }, 3,
+      {"the key 'duration' appears twice", "first at", "inline.yaml:2:1"});
+  test::expect_user_error(
+      [&] {
+        test::scene_from_yaml(
+            "version: 1\nduration: 1\nobjects:\n  - mesh: {file: rope.obj}\n    material: "
+            "{density: 1000, youngs_modulus: 1e6, radius: 0.01, density: .nan}\n");
+      },
+      5, {"the key 'density' appears twice", "keep one"});
+}
+
+TEST(SceneReader, NonFiniteOrFarMeshVerticesAreRefusedNamingTheFileAndVertex) {
+  const test::TemporaryFolder folder("badmesh");
+  std::ofstream(folder.path() / "nan.obj") << "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(folder.path() / "far.obj") << "v 0 0 0\nv 1e30 0 0\nv 0 1 0\nf 1 2 3\n";
+  const auto scene = [&](const char* mesh) {
+    return fmt::format(
+        "version: 1\nduration: 1\nobjects:\n  - mesh: {{file: {}}}\n    material: {{density: "
+        "1000, youngs_modulus: 1e6, radius: 0.01}}\n",
+        mesh);
+  };
+  test::expect_user_error([&] { read_scene_text(scene("nan.obj"), folder.path() / "s.yaml"); }, 4,
+                          {"vertex 1 of mesh file 'nan.obj'", "not a finite point"});
+  test::expect_user_error([&] { read_scene_text(scene("far.obj"), folder.path() / "s.yaml"); }, 4,
+                          {"vertex 1 of mesh file 'far.obj'", "beyond 1e+06 m", "'scale'"});
+  test::expect_user_error(
+      [&] {
+        test::scene_from_yaml(
+            "version: 1\nduration: 1\nobjects:\n  - mesh: {file: rope.obj, scale: 1e300}\n    "
+            "material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}\n");
+      },
+      4, {"beyond 1e+06 m"});
+}
+
+TEST(SceneReader, MaterialValuesNoMaterialHasAreRefusedAtTheirKey) {
+  const auto scene = [](const char* material) {
+    return fmt::format(
+        "version: 1\nduration: 1\nobjects:\n  - mesh: {{file: rope.obj}}\n    material: {{{}}}\n",
+        material);
+  };
+  // 1e-300 m squared underflows to a zero area; 1e300 kg/m³ overflows the energies.
+  test::expect_user_error(
+      [&] { test::scene_from_yaml(scene("density: 1000, youngs_modulus: 1e6, radius: 1e-300")); },
+      5, {"'objects[0].material.radius' must be between 1e-07 and 100 m"});
+  test::expect_user_error(
+      [&] { test::scene_from_yaml(scene("density: 1e300, youngs_modulus: 1e6, radius: 0.01")); }, 5,
+      {"'objects[0].material.density' must be between"});
+  test::expect_user_error(
+      [&] { test::scene_from_yaml(scene("density: 1000, youngs_modulus: 1e20, radius: 0.01")); }, 5,
+      {"youngs_modulus' must be between"});
+  test::expect_user_error(
+      [&] { test::scene_from_yaml(scene("density: 1000, youngs_modulus: 1e6, area: 1e-40")); }, 5,
+      {"area' must be between"});
 }
 
 }  // namespace

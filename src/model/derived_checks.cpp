@@ -1,0 +1,82 @@
+#include "model/derived_checks.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "model/frequency_bound.hpp"
+#include "model/model.hpp"
+
+namespace dinam {
+namespace {
+
+bool usable(double value, bool must_be_positive) {
+  return std::isfinite(value) && (must_be_positive ? value > 0.0 : value >= 0.0);
+}
+
+// The first of `values[first … end)` that is not usable, or -1.
+Index first_unusable(const std::vector<double>& values, Index first, Index end,
+                     bool must_be_positive) {
+  for (Index i = first; i < end; ++i) {
+    if (!usable(values[i], must_be_positive)) {
+      return i;
+    }
+  }
+  return -1;
+}
+
+[[noreturn]] void refuse(const ObjectDesc& desc, const FileLoc& where, const std::string& what,
+                         double value) {
+  throw_user_error(where,
+                   "object '{}': {} is {:g}, which no step can use; the material's values combine "
+                   "beyond double precision (check density, youngs_modulus and the section "
+                   "against the mesh's size)",
+                   desc.name, what, value);
+}
+
+}  // namespace
+
+void check_derived_quantities(const Model& model, const SceneDescription& scene) {
+  for (std::size_t o = 0; o < model.objects.size(); ++o) {
+    const ModelObject& object = model.objects[o];
+    const ObjectDesc& desc = scene.objects[o];
+    const FileLoc& material = desc.material.loc;
+    const Index node_end = object.first_node + object.node_count;
+    const Index bar_end = object.first_bar + object.bar_count;
+    if (const Index i = first_unusable(model.node_mass, object.first_node, node_end, true);
+        i >= 0) {
+      refuse(desc, material, "the mass of node " + std::to_string(i - object.first_node),
+             model.node_mass[i]);
+    }
+    if (const Index b = first_unusable(model.bar_rest_length, object.first_bar, bar_end, true);
+        b >= 0) {
+      refuse(desc, desc.mesh_loc, "the length of bar " + std::to_string(b - object.first_bar),
+             model.bar_rest_length[b]);
+    }
+    if (const Index b = first_unusable(model.bar_axial_stiffness, object.first_bar, bar_end, true);
+        b >= 0) {
+      refuse(desc, material,
+             "the axial stiffness E·A/L₀ of bar " + std::to_string(b - object.first_bar),
+             model.bar_axial_stiffness[b]);
+    }
+  }
+  // Bending and torsion stiffnesses, and the ground's, belong to springs that span one object.
+  for (const auto* values : {&model.bend_stiffness, &model.torsion_stiffness,
+                             &model.ground.node_stiffness, &model.ground.node_damping}) {
+    if (const Index k = first_unusable(*values, 0, static_cast<Index>(values->size()), false);
+        k >= 0) {
+      throw_user_error(scene.objects.front().material.loc,
+                       "a spring stiffness of the model is {:g}; the materials' values combine "
+                       "beyond double precision (check density, youngs_modulus and the section)",
+                       (*values)[k]);
+    }
+  }
+  const double omega_squared = max_frequency_squared_bound(model, true);
+  if (!std::isfinite(omega_squared)) {
+    throw_user_error(scene.objects.front().material.loc,
+                     "the model's highest frequency is not finite, so no time step is stable; the "
+                     "materials' values combine beyond double precision");
+  }
+}
+
+}  // namespace dinam
