@@ -11,10 +11,10 @@
 namespace dinam {
 namespace {
 
-volatile std::sig_atomic_t stop_signal = 0;
+volatile std::sig_atomic_t stop_signal_received = 0;
 
 extern "C" void ask_to_stop(int signal) {
-  stop_signal = signal;
+  stop_signal_received = signal;
   std::signal(signal, SIG_DFL);  // a second one ends the program
 }
 
@@ -54,14 +54,17 @@ const char* movie_format_name(MovieFormat format) {
   return "none";
 }
 
-Interrupted::Interrupted(int signal)
-    : std::runtime_error(fmt::format("stopped by {}", signal == SIGINT    ? "SIGINT"
-                                                      : signal == SIGTERM ? "SIGTERM"
-                                                                          : strsignal(signal))),
+Interrupted::Interrupted(int signal, const std::string& outcome)
+    : std::runtime_error(fmt::format(
+          "stopped by {}: {}",
+          signal == SIGINT    ? "SIGINT"
+          : signal == SIGTERM ? "SIGTERM"
+                              : strsignal(signal),
+          outcome.empty() ? "finished files are kept, unfinished ones removed" : outcome)),
       signal_(signal) {}
 
 StopOnSignals::StopOnSignals() {
-  stop_signal = 0;
+  stop_signal_received = 0;
   std::signal(SIGINT, ask_to_stop);
   std::signal(SIGTERM, ask_to_stop);
 }
@@ -71,9 +74,13 @@ StopOnSignals::~StopOnSignals() {
   std::signal(SIGTERM, SIG_DFL);
 }
 
+int stop_signal() {
+  return stop_signal_received;
+}
+
 void stop_if_asked() {
-  if (stop_signal != 0) {
-    throw Interrupted(stop_signal);
+  if (stop_signal_received != 0) {
+    throw Interrupted(stop_signal_received);
   }
 }
 

@@ -27,7 +27,8 @@ const char* movie_format_name(MovieFormat format);
 // remove what it had not finished (a temporary cache folder, a partial movie, ffmpeg itself).
 class Interrupted : public std::runtime_error {
  public:
-  explicit Interrupted(int signal);
+  // `outcome` says what was kept and what was not made; a generic sentence without it.
+  explicit Interrupted(int signal, const std::string& outcome = "");
   int signal() const { return signal_; }
 
  private:
@@ -43,6 +44,9 @@ class StopOnSignals {
   StopOnSignals(const StopOnSignals&) = delete;
   StopOnSignals& operator=(const StopOnSignals&) = delete;
 };
+
+// The signal that asked to stop, or 0.
+int stop_signal();
 
 // Throws Interrupted when a signal has asked to stop.
 void stop_if_asked();

@@ -96,14 +96,20 @@ int run_render(const RenderOptions& options) {
     frames = cached_frames(*cache, range.first, range.last);
   } else {
     Progress simulation_progress(scene.frame_count(), !options.quiet, "simulate");
-    frames = simulate_frames(
-        model, *timestep, scene.frame_count(), options.energy_csv, [&](int frame, const State& s) {
-          stop_if_asked();
-          if (energy_csv) {
-            energy_csv->write(s.energy_workspace.last);
-          }
-          simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
-        });
+    try {
+      frames =
+          simulate_frames(model, *timestep, scene.frame_count(), options.energy_csv,
+                          [&](int frame, const State& s) {
+                            stop_if_asked();
+                            if (energy_csv) {
+                              energy_csv->write(s.energy_workspace.last);
+                            }
+                            simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
+                          });
+    } catch (const Interrupted& e) {
+      simulation_progress.finish();
+      throw Interrupted(e.signal(), "it was still simulating, so no frame was drawn");
+    }
   }
   if (energy_csv) {
     energy_csv->close();
@@ -135,13 +141,25 @@ int run_render(const RenderOptions& options) {
   const auto draw_start = Clock::now();
   {
     FrameWriter writer(folder, frame_number_digits(scene.frame_count()), movie.get());
-    draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
-                [&](int frame, const Image& image) {
-                  stop_if_asked();
-                  writer.write(frame, image);
-                  progress.update(frame - range.first + 1, fmt::format("draw and write {:.1f} s",
-                                                                       seconds_since(draw_start)));
-                });
+    try {
+      draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
+                  [&](int frame, const Image& image) {
+                    stop_if_asked();
+                    writer.write(frame, image);
+                    progress.update(
+                        frame - range.first + 1,
+                        fmt::format("draw and write {:.1f} s", seconds_since(draw_start)));
+                  });
+    } catch (const Interrupted& e) {
+      // The frames drawn so far are written whole; ffmpeg is stopped and its partial movie
+      // removed when `movie` goes.
+      writer.finish();
+      progress.finish();
+      throw Interrupted(e.signal(),
+                        fmt::format("{} of the {} frames were written to {} and are kept; no "
+                                    "movie was made",
+                                    writer.frames_written(), range.count(), folder.string()));
+    }
     writer.finish();
   }
   progress.finish();

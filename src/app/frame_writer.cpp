@@ -41,6 +41,11 @@ void FrameWriter::finish() {
   rethrow_error();
 }
 
+int FrameWriter::frames_written() {
+  const std::lock_guard lock(mutex_);
+  return written_;
+}
+
 void FrameWriter::rethrow_error() {
   if (error_) {
     std::rethrow_exception(error_);
@@ -73,6 +78,7 @@ void FrameWriter::run() {
     }
     lock.lock();
     writing_ = false;
+    written_ += error ? 0 : 1;
     spare_.push_back(std::move(image));
     if (error && !error_) {
       error_ = error;

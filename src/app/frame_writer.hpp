@@ -30,6 +30,9 @@ class FrameWriter {
   // Waits until every frame handed over is written; rethrows the writing thread's error.
   void finish();
 
+  // Frames written so far, whole.
+  int frames_written();
+
  private:
   // A few frames may wait: enough to smooth out uneven drawing and encoding times, few enough
   // that a 4K frame queue stays under 200 MB.
@@ -47,6 +50,7 @@ class FrameWriter {
   std::vector<Image> spare_;  // written frames' buffers, reused so that a run allocates a few
   bool writing_ = false;      // the thread holds a frame it has taken off the queue
   bool closing_ = false;
+  int written_ = 0;
   std::exception_ptr error_;
   std::thread thread_;
 };

@@ -167,10 +167,7 @@ int run(int argc, char** argv) {
     }
     return run_info(info_scene, info_json);
   } catch (const Interrupted& e) {
-    fmt::print(stderr,
-               "dinam: {}: finished files are kept (frames already written), unfinished ones "
-               "removed (no cache or movie was made)\n",
-               e.what());
+    fmt::print(stderr, "dinam: {}\n", e.what());
     return 128 + e.signal();
   } catch (const UserError& e) {
     fmt::print(stderr, "{}: error: {}\n", e.loc().known() ? e.loc().to_string() : "dinam",

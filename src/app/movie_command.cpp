@@ -58,7 +58,9 @@ int run_movie(const MovieOptions& options) {
   }
   Progress progress(info.frame_count, !options.quiet, "encode");
   for (int frame = 1; frame <= info.frame_count; ++frame) {
-    stop_if_asked();
+    if (const int signal = stop_signal(); signal != 0) {
+      throw Interrupted(signal, "no movie was made; the frames are as they were");
+    }
     const std::filesystem::path path = options.folder / frame_file_name(frame, info.frame_count);
     const Image image = read_png(path);
     if (image.width != info.width || image.height != info.height) {

@@ -66,19 +66,25 @@ int run_simulate(const SimulateOptions& options) {
   }
   std::vector<Vec3f> positions;
   Progress progress(request.frame_count, !options.quiet, "simulate");
-  run_dynamics(model, timestep, request.frame_count, options.energy,
-               [&](int frame, const State& state) {
-                 stop_if_asked();
-                 positions_for_render(state.x, positions);
-                 writer.add_frame(positions);
-                 if (energy_csv) {
-                   const EnergyReport& report = state.energy_workspace.last;
-                   energy_csv->write(report);
-                   const auto row = energy_row(report);
-                   manifest.energy.rows.emplace_back(row.begin(), row.end());
-                 }
-                 progress.update(frame, fmt::format("t = {:.2f} s", state.time));
-               });
+  try {
+    run_dynamics(model, timestep, request.frame_count, options.energy,
+                 [&](int frame, const State& state) {
+                   stop_if_asked();
+                   positions_for_render(state.x, positions);
+                   writer.add_frame(positions);
+                   if (energy_csv) {
+                     const EnergyReport& report = state.energy_workspace.last;
+                     energy_csv->write(report);
+                     const auto row = energy_row(report);
+                     manifest.energy.rows.emplace_back(row.begin(), row.end());
+                   }
+                   progress.update(frame, fmt::format("t = {:.2f} s", state.time));
+                 });
+  } catch (const Interrupted& e) {
+    progress.finish();
+    throw Interrupted(
+        e.signal(), fmt::format("no cache was written ({} is as it was)", request.folder.string()));
+  }
   progress.finish();
   if (energy_csv) {
     energy_csv->close();

@@ -1,20 +1,14 @@
 // Simulate once, render anywhere, as a user runs it: `dinam simulate`, `dinam render --cache` in
-// chunks, `dinam movie`; stale caches refused; interrupted simulations leave no cache.
+// chunks, `dinam movie`; stale caches refused (interruptions: interruption_test.cpp).
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 #include "test_support.hpp"
-
-extern char** environ;
 
 namespace dinam {
 namespace {
@@ -164,70 +158,6 @@ TEST_F(CacheEndToEnd, EnergyGoesIntoTheManifestAndBesideIt) {
       " -o " + shell_quoted(path("out")) + " --size 32x18 --movie none -q"));
   EXPECT_EQ(render.exit_code, 0) << render.output;
   EXPECT_TRUE(std::filesystem::exists(path("out") / "frame_0005.png"));
-}
-
-// Starts `dinam simulate` on a scene that takes several seconds, waits until its temporary cache
-// folder exists, and sends `signal`. Returns the exit status.
-int interrupted_simulate(const std::filesystem::path& scene, const std::filesystem::path& cache,
-                         int signal) {
-  const std::vector<std::string> arguments = {DINAM_PROGRAM, "simulate",     scene.string(),
-                                              "-o",          cache.string(), "-q"};
-  std::vector<char*> argv;
-  for (const std::string& a : arguments) {
-    argv.push_back(const_cast<char*>(a.c_str()));
-  }
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  EXPECT_EQ(posix_spawn(&pid, DINAM_PROGRAM, nullptr, nullptr, argv.data(), environ), 0);
-  const std::string prefix = cache.filename().string() + ".part-";
-  bool started = false;
-  for (int i = 0; i < 400 && !started; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(25));
-    for (const auto& entry : std::filesystem::directory_iterator(cache.parent_path())) {
-      started = started || entry.path().filename().string().rfind(prefix, 0) == 0;
-    }
-  }
-  EXPECT_TRUE(started) << "the simulation never started its cache";
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  kill(pid, signal);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return status;
-}
-
-TEST_F(CacheEndToEnd, AnInterruptedSimulationLeavesNoCacheThatRenderAccepts) {
-  // A 100 × 100 cloth for 100 s: far longer than the test waits.
-  std::ofstream(path("big.yaml")) << R"(version: 1
-duration: 100
-fps: 10
-objects:
-  - name: cloth
-    mesh: {grid: {width: 1, height: 1, columns: 100, rows: 100}, translation: [0, 0, 1]}
-    material: {density: 800, youngs_modulus: 2.0e6, radius: 0.001}
-)";
-  // SIGTERM: dinam stops between frames and removes its temporary folder.
-  const int terminated = interrupted_simulate(path("big.yaml"), path("cache"), SIGTERM);
-  EXPECT_TRUE(WIFEXITED(terminated) && WEXITSTATUS(terminated) == 128 + SIGTERM) << terminated;
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder_.path()), {}), 1);  // big.yaml
-
-  // SIGKILL: no chance to clean up; what is left is no cache, and the next run clears it away.
-  const int killed = interrupted_simulate(path("big.yaml"), path("cache"), SIGKILL);
-  EXPECT_TRUE(WIFSIGNALED(killed));
-  EXPECT_FALSE(std::filesystem::exists(path("cache")));
-  std::string leftover;
-  for (const auto& entry : std::filesystem::directory_iterator(folder_.path())) {
-    if (entry.is_directory()) {
-      leftover = entry.path().string();
-    }
-  }
-  ASSERT_FALSE(leftover.empty());
-  for (const std::string& cache : {path("cache").string(), leftover}) {
-    const CommandResult render =
-        run(dinam("render " + shell_quoted(path("big.yaml")) + " --cache " + shell_quoted(cache) +
-                  " -o " + shell_quoted(path("out"))));
-    EXPECT_EQ(render.exit_code, 2) << render.output;
-  }
-  EXPECT_FALSE(std::filesystem::exists(path("out")));
 }
 
 }  // namespace

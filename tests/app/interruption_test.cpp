@@ -1,0 +1,179 @@
+// SIGINT and SIGTERM stop a run within a second and leave only whole files: frames written stay,
+// a movie or a cache half made goes, ffmpeg is stopped and reaped; SIGKILL leaves nothing that
+// looks complete.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <fcntl.h>
+
+#include <chrono>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <thread>
+
+#include "io/png_file.hpp"
+#include "test_support.hpp"
+
+extern char** environ;
+
+namespace dinam {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string shell_quoted(const std::filesystem::path& path) {
+  std::string text = "'";
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
+bool any_entry(const std::filesystem::path& folder,
+               const std::function<bool(const std::string&)>& matches) {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    if (matches(entry.path().filename().string())) {
+      return true;
+    }
+  }
+  return false;
+}
+
+struct Stopped {
+  int status = 0;        // as waitpid gives it
+  double seconds = 0.0;  // from the signal to the exit
+  std::string messages;  // what dinam printed
+};
+
+// Runs dinam with `arguments`, waits (up to 20 s) until `started(folder)` holds, sends `signal`
+// and waits for the exit.
+Stopped stop_while_running(const std::vector<std::string>& arguments, int signal,
+                           const std::filesystem::path& folder,
+                           const std::function<bool(const std::filesystem::path&)>& started) {
+  std::vector<std::string> all = {DINAM_PROGRAM};
+  all.insert(all.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (const std::string& a : all) {
+    argv.push_back(const_cast<char*>(a.c_str()));
+  }
+  argv.push_back(nullptr);
+  const std::filesystem::path log = folder.parent_path() / (folder.filename().string() + ".log");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  EXPECT_EQ(posix_spawn(&pid, DINAM_PROGRAM, &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  bool running = false;
+  for (int i = 0; i < 800 && !running; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    running = started(folder);
+  }
+  EXPECT_TRUE(running) << "the run never got going";
+  const auto start = Clock::now();
+  kill(pid, signal);
+  Stopped stopped;
+  waitpid(pid, &stopped.status, 0);
+  stopped.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  std::stringstream text;
+  text << std::ifstream(log).rdbuf();
+  stopped.messages = text.str();
+  return stopped;
+}
+
+class Interruption : public ::testing::Test {
+ protected:
+  std::filesystem::path path(const std::string& name) const { return folder_.path() / name; }
+  test::TemporaryFolder folder_{"interrupt"};
+};
+
+TEST_F(Interruption, ARenderStopsWithinASecondKeepingWholeFramesAndNoMovie) {
+  const std::filesystem::path flag = std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/flag.yaml";
+  for (const int signal : {SIGINT, SIGTERM}) {
+    const std::filesystem::path out = path(signal == SIGINT ? "int" : "term");
+    // Stopped once it has written a few frames, while ffmpeg is encoding the movie.
+    const Stopped stopped =
+        stop_while_running({"render", flag.string(), "-o", out.string(), "--size", "640x360"},
+                           signal, out, [](const std::filesystem::path& folder) {
+                             return std::filesystem::exists(folder / "frame_0003.png");
+                           });
+    ASSERT_TRUE(WIFEXITED(stopped.status)) << stopped.status;
+    EXPECT_EQ(WEXITSTATUS(stopped.status), 128 + signal) << stopped.messages;
+    EXPECT_LT(stopped.seconds, 1.0);
+    EXPECT_NE(stopped.messages.find("frames were written to"), std::string::npos)
+        << stopped.messages;
+    EXPECT_NE(stopped.messages.find("no movie was made"), std::string::npos) << stopped.messages;
+    EXPECT_FALSE(std::filesystem::exists(out / "flag.mp4"));
+    EXPECT_FALSE(any_entry(out,
+                           [](const std::string& name) {
+                             return name.find(".part") != std::string::npos ||
+                                    name.find(".ffmpeg-log") != std::string::npos ||
+                                    name.find(".tmp") != std::string::npos;
+                           }))
+        << "a temporary file was left in " << out;
+    // Every frame left decodes whole, and no ffmpeg is left writing there (it was reaped).
+    int kept = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out)) {
+      EXPECT_NO_THROW(read_png(entry.path())) << entry.path();
+      ++kept;
+    }
+    EXPECT_GE(kept, 3);
+    const test::CommandResult ffmpeg = test::run_command("pgrep -a -x ffmpeg | grep -F " +
+                                                         shell_quoted(out.string()) + " || true");
+    EXPECT_EQ(ffmpeg.output, "") << "ffmpeg still runs: " << ffmpeg.output;
+  }
+}
+
+TEST_F(Interruption, ASimulationLeavesNoCacheThatRenderAccepts) {
+  // A 100 × 100 cloth for 100 s: far longer than the test waits.
+  std::ofstream(path("big.yaml")) << R"(version: 1
+duration: 100
+fps: 10
+objects:
+  - name: cloth
+    mesh: {grid: {width: 1, height: 1, columns: 100, rows: 100}, translation: [0, 0, 1]}
+    material: {density: 800, youngs_modulus: 2.0e6, radius: 0.001}
+)";
+  const std::vector<std::string> simulate = {"simulate", path("big.yaml").string(), "-o",
+                                             path("cache").string()};
+  const auto writing = [](const std::filesystem::path& cache) {  // its temporary folder exists
+    return any_entry(cache.parent_path(),
+                     [](const std::string& name) { return name.rfind("cache.part-", 0) == 0; });
+  };
+  // SIGTERM: dinam stops within a step and removes its temporary folder.
+  const Stopped terminated = stop_while_running(simulate, SIGTERM, path("cache"), writing);
+  EXPECT_TRUE(WIFEXITED(terminated.status) && WEXITSTATUS(terminated.status) == 128 + SIGTERM)
+      << terminated.status << terminated.messages;
+  EXPECT_LT(terminated.seconds, 1.0);
+  EXPECT_NE(terminated.messages.find("no cache was written"), std::string::npos)
+      << terminated.messages;
+  EXPECT_FALSE(any_entry(folder_.path(), [](const std::string& name) {
+    return name.rfind("cache", 0) == 0 && name != "cache.log";
+  }));
+
+  // SIGKILL: no chance to clean up; what is left is no cache, and the next run clears it away.
+  const Stopped killed = stop_while_running(simulate, SIGKILL, path("cache"), writing);
+  EXPECT_TRUE(WIFSIGNALED(killed.status));
+  EXPECT_FALSE(std::filesystem::exists(path("cache")));
+  std::string leftover;
+  for (const auto& entry : std::filesystem::directory_iterator(folder_.path())) {
+    if (entry.is_directory()) {
+      leftover = entry.path().string();
+    }
+  }
+  ASSERT_FALSE(leftover.empty());
+  for (const std::string& cache : {path("cache").string(), leftover}) {
+    const test::CommandResult render = test::run_command(
+        shell_quoted(DINAM_PROGRAM) + " render " + shell_quoted(path("big.yaml")) + " --cache " +
+        shell_quoted(cache) + " -o " + shell_quoted(path("out")));
+    EXPECT_EQ(render.exit_code, 2) << render.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(path("out")));
+}
+
+}  // namespace
+}  // namespace dinam
