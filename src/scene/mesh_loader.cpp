@@ -3,7 +3,20 @@
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
 #include <assimp/Importer.hpp>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string_view>
 #include <system_error>
 
 namespace dinam {
@@ -45,6 +58,211 @@ void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& paren
   }
 }
 
+// The mesh a file's scene holds; a diffuse texture named by the first material that has one, as
+// a PNG file in `folder` (none when `folder` is empty).
+RawMesh mesh_from_scene(const aiScene& scene, const std::filesystem::path& folder) {
+  RawMesh mesh;
+  std::error_code ec;
+  for (unsigned m = 0; m < scene.mNumMaterials && mesh.texture.empty() && !folder.empty(); ++m) {
+    aiString name;
+    if (scene.mMaterials[m]->GetTexture(aiTextureType_DIFFUSE, 0, &name) == AI_SUCCESS &&
+        name.length > 0 && name.C_Str()[0] != '*') {  // '*n' names a texture embedded in the file
+      const std::filesystem::path texture = folder / name.C_Str();
+      if (std::filesystem::is_regular_file(texture, ec) && texture.extension() == ".png") {
+        mesh.texture = texture;
+      }
+    }
+  }
+  if (scene.mRootNode != nullptr) {
+    add_node(scene, *scene.mRootNode, aiMatrix4x4(), mesh);
+  }
+  return mesh;
+}
+
+// The child process sends the mesh to the parent as flat arrays: a count, then the elements.
+template <typename T>
+void put_array(std::string& out, const T* data, std::size_t count) {
+  out.append(reinterpret_cast<const char*>(&count), sizeof(count));
+  out.append(reinterpret_cast<const char*>(data), count * sizeof(T));
+}
+
+template <typename T>
+bool get_array(std::string_view& in, std::vector<T>& out) {
+  std::size_t count = 0;
+  if (in.size() < sizeof(count)) {
+    return false;
+  }
+  std::memcpy(&count, in.data(), sizeof(count));
+  in.remove_prefix(sizeof(count));
+  if (count > in.size() / sizeof(T)) {
+    return false;
+  }
+  out.resize(count);
+  std::memcpy(static_cast<void*>(out.data()), in.data(), count * sizeof(T));  // plain numbers
+  in.remove_prefix(count * sizeof(T));
+  return true;
+}
+
+std::string serialize(const RawMesh& mesh) {
+  std::string out;
+  put_array(out, mesh.vertices.data(), mesh.vertices.size());
+  put_array(out, mesh.uvs.data(), mesh.uvs.size());
+  for (const auto* loops : {&mesh.faces, &mesh.lines}) {
+    std::vector<Index> flat;  // each loop's length, then its ids
+    for (const std::vector<Index>& loop : *loops) {
+      flat.push_back(static_cast<Index>(loop.size()));
+      flat.insert(flat.end(), loop.begin(), loop.end());
+    }
+    put_array(out, flat.data(), flat.size());
+  }
+  const std::string texture = mesh.texture.string();
+  put_array(out, texture.data(), texture.size());
+  return out;
+}
+
+bool deserialize(std::string_view in, RawMesh& mesh) {
+  std::vector<Index> flat[2];
+  std::vector<char> texture;
+  if (!get_array(in, mesh.vertices) || !get_array(in, mesh.uvs) || !get_array(in, flat[0]) ||
+      !get_array(in, flat[1]) || !get_array(in, texture) || !in.empty()) {
+    return false;
+  }
+  auto* loops = &mesh.faces;
+  for (const std::vector<Index>& ids : flat) {
+    for (std::size_t k = 0; k < ids.size();) {
+      const auto length = static_cast<std::size_t>(ids[k]);
+      if (length > ids.size() - k - 1) {
+        return false;
+      }
+      loops->emplace_back(ids.begin() + static_cast<std::ptrdiff_t>(k + 1),
+                          ids.begin() + static_cast<std::ptrdiff_t>(k + 1 + length));
+      k += 1 + length;
+    }
+    loops = &mesh.lines;
+  }
+  mesh.texture = std::string(texture.begin(), texture.end());
+  return true;
+}
+
+bool write_all(int fd, const std::string& bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) {
+      continue;
+    }
+    if (n <= 0) {
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// Seconds the importer may take for a file, plus 2 s per megabyte: $DINAM_MESH_IMPORT_TIMEOUT, else
+// 60.
+double import_time_limit() {
+  const char* text = std::getenv("DINAM_MESH_IMPORT_TIMEOUT");
+  const double seconds = text != nullptr ? std::strtod(text, nullptr) : 0.0;
+  return seconds > 0.0 ? seconds : 60.0;
+}
+
+// Imports `path` in a child process. The child sends 'M' and the mesh, or 'E' and assimp's error.
+RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where) {
+  int ends[2] = {-1, -1};
+  if (pipe2(ends, O_CLOEXEC) != 0) {
+    throw RuntimeError(
+        fmt::format("cannot make a pipe to import {}: {}", path.string(), std::strerror(errno)));
+  }
+  std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(ends[0]);
+    close(ends[1]);
+    throw RuntimeError(
+        fmt::format("cannot fork to import {}: {}", path.string(), std::strerror(errno)));
+  }
+  if (pid == 0) {
+    close(ends[0]);
+    Assimp::Importer importer;
+    // No post-processing at all: triangulating would add diagonals that are not edges of the
+    // model, and model/ welds coincident vertices itself. Node transforms are applied here.
+    const aiScene* scene = importer.ReadFile(path.string(), 0);
+    const bool sent =
+        scene == nullptr
+            ? write_all(ends[1], 'E' + std::string(importer.GetErrorString()))
+            : write_all(ends[1], 'M' + serialize(mesh_from_scene(*scene, path.parent_path())));
+    _exit(sent ? 0 : 1);
+  }
+  close(ends[1]);
+  // A malformed file can also make assimp loop for ever (fuzzing found PLY files that do); the
+  // child gets a time that no sound file of this size needs, then it is stopped.
+  std::error_code ec;
+  const double megabytes = static_cast<double>(std::filesystem::file_size(path, ec)) / 1e6;
+  const double limit = import_time_limit() + (ec ? 0.0 : 2.0 * megabytes);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit);
+  std::string reply;
+  std::array<char, 65536> buffer{};
+  bool timed_out = false;
+  while (true) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    pollfd readable{ends[0], POLLIN, 0};
+    const int ready = left.count() > 0 ? poll(&readable, 1, static_cast<int>(left.count())) : 0;
+    if (ready < 0 && errno == EINTR) {
+      continue;
+    }
+    if (ready == 0) {
+      timed_out = true;
+      kill(pid, SIGKILL);
+      break;
+    }
+    const ssize_t n = read(ends[0], buffer.data(), buffer.size());
+    if (n < 0 && errno == EINTR) {
+      continue;
+    }
+    if (n <= 0) {
+      break;
+    }
+    reply.append(buffer.data(), static_cast<std::size_t>(n));
+  }
+  close(ends[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timed_out) {
+    throw_user_error(where,
+                     "the mesh importer (assimp) did not finish reading '{}' in {:.0f} s, which "
+                     "a sound file of its size never needs (a malformed file can make it loop); "
+                     "only this file is refused: mend it or convert it to OBJ",
+                     path.string(), limit);
+  }
+  if (WIFSIGNALED(status)) {
+    throw_user_error(where,
+                     "the mesh importer (assimp) crashed reading '{}' ({}); dinam imports meshes "
+                     "apart, so only this file is refused: convert it to OBJ or PLY, or mend it",
+                     path.string(), strsignal(WTERMSIG(status)));
+  }
+  RawMesh mesh;
+  if (!reply.empty() && reply.front() == 'E') {
+    throw_user_error(where, "cannot read mesh file '{}': {}", path.string(), reply.substr(1));
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || reply.empty() || reply.front() != 'M' ||
+      !deserialize(std::string_view(reply).substr(1), mesh)) {
+    throw RuntimeError(fmt::format("importing {} in a child process failed", path.string()));
+  }
+  return mesh;
+}
+
+void require_edges(const RawMesh& mesh, const std::string& what, const FileLoc& where) {
+  if (!mesh.has_edges()) {
+    throw_user_error(where,
+                     "{} has no edges (no faces or line elements); a structure needs at least one "
+                     "bar",
+                     what);
+  }
+}
+
 }  // namespace
 
 RawMesh load_mesh_file(const std::filesystem::path& path, const FileLoc& where) {
@@ -55,35 +273,23 @@ RawMesh load_mesh_file(const std::filesystem::path& path, const FileLoc& where) 
                      "file",
                      path.string());
   }
+  RawMesh mesh = import_in_child(path, where);
+  const std::string what = fmt::format("mesh file '{}'", path.string());
+  check_mesh_values(mesh, where, what);  // assimp passes a file's bad vertex ids on
+  require_edges(mesh, what, where);
+  return mesh;
+}
+
+RawMesh load_mesh_bytes(const void* data, std::size_t size, const std::string& extension,
+                        const FileLoc& where) {
   Assimp::Importer importer;
-  // No post-processing at all: triangulating would add diagonals that are not edges of the
-  // model, and model/ welds coincident vertices itself. Node transforms are applied below.
-  const aiScene* scene = importer.ReadFile(path.string(), 0);
+  const aiScene* scene = importer.ReadFileFromMemory(data, size, 0, extension.c_str());
   if (scene == nullptr) {
-    throw_user_error(where, "cannot read mesh file '{}': {}", path.string(),
-                     importer.GetErrorString());
+    throw_user_error(where, "cannot read the {} mesh: {}", extension, importer.GetErrorString());
   }
-  RawMesh mesh;
-  // A diffuse texture named by the first material that has one, as a PNG file beside the mesh.
-  for (unsigned m = 0; m < scene->mNumMaterials && mesh.texture.empty(); ++m) {
-    aiString name;
-    if (scene->mMaterials[m]->GetTexture(aiTextureType_DIFFUSE, 0, &name) == AI_SUCCESS &&
-        name.length > 0 && name.C_Str()[0] != '*') {  // '*n' names a texture embedded in the file
-      const std::filesystem::path texture = path.parent_path() / name.C_Str();
-      if (std::filesystem::is_regular_file(texture, ec) && texture.extension() == ".png") {
-        mesh.texture = texture;
-      }
-    }
-  }
-  if (scene->mRootNode != nullptr) {
-    add_node(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
-  }
-  if (!mesh.has_edges()) {
-    throw_user_error(where,
-                     "mesh file '{}' has no edges (no faces or line elements); a structure needs "
-                     "at least one bar",
-                     path.string());
-  }
+  RawMesh mesh = mesh_from_scene(*scene, {});
+  check_mesh_values(mesh, where, "the mesh");
+  require_edges(mesh, "the mesh", where);
   return mesh;
 }
 

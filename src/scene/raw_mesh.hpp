@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/types.hpp"
 
 namespace dinam {
@@ -31,5 +32,11 @@ struct Transform {
 };
 
 void apply_transform(const Transform& transform, RawMesh& mesh);
+
+// Throws UserError at `where` unless every face and line refers to vertices the mesh has, every
+// vertex is finite and within 10⁶ m of the origin, and there are at most 50 million: a NaN in a
+// file or a mesh in the wrong units is found at the mesh's line, not as a "diverged" step later.
+// `what` names the mesh in the message.
+void check_mesh_values(const RawMesh& mesh, const FileLoc& where, const std::string& what);
 
 }  // namespace dinam

@@ -402,38 +402,6 @@ PolylineSpec read_polyline(YamlMap map) {
   return polyline;
 }
 
-// Far beyond any structure dinam can draw or step (a thousand kilometres; 50 million vertices,
-// some 10 GB of model), and far below where double precision or 32-bit ids give out.
-constexpr double kMaxCoordinate = 1e6;  // m
-constexpr std::size_t kMaxMeshVertices = 50'000'000;
-
-// Every vertex finite and within kMaxCoordinate of the origin, in world space (after the
-// placement), and not too many of them: a NaN in a file or a mesh in the wrong units is found
-// here, at the mesh's line, not as a "diverged" step later.
-void check_mesh_values(const RawMesh& mesh, const FileLoc& where, const std::string& what) {
-  if (mesh.vertices.size() > kMaxMeshVertices) {
-    throw_user_error(where,
-                     "{} has {} vertices, more than the {} dinam takes (its model would "
-                     "need more memory than a machine has); simplify it",
-                     what, mesh.vertices.size(), kMaxMeshVertices);
-  }
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    const Vec3& v = mesh.vertices[i];
-    if (!v.allFinite()) {
-      throw_user_error(where,
-                       "vertex {} of {} is ({}, {}, {}) after placement, not a finite "
-                       "point; mend the mesh (or its 'scale')",
-                       i, what, v.x(), v.y(), v.z());
-    }
-    if (v.cwiseAbs().maxCoeff() > kMaxCoordinate) {
-      throw_user_error(where,
-                       "vertex {} of {} is at ({:g}, {:g}, {:g}) m, beyond {:g} m from the "
-                       "origin; is the mesh in other units? Give 'scale'",
-                       i, what, v.x(), v.y(), v.z(), kMaxCoordinate);
-    }
-  }
-}
-
 // Exactly one of `file`, `grid` or `polyline`, then the placement. Returns the mesh in world space.
 RawMesh read_mesh(YamlMap map, const std::filesystem::path& scene_folder) {
   const int sources = int{map.has("file")} + int{map.has("grid")} + int{map.has("polyline")};

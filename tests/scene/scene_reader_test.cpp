@@ -335,6 +335,10 @@ TEST(SceneReader, DuplicateKeysAreErrorsAtTheSecondNamingTheFirst) {
 
 TEST(SceneReader, NonFiniteOrFarMeshVerticesAreRefusedNamingTheFileAndVertex) {
   const test::TemporaryFolder folder("badmesh");
+  std::ofstream(folder.path() / "badid.ply")
+      << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
   std::ofstream(folder.path() / "nan.obj") << "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n";
   std::ofstream(folder.path() / "far.obj") << "v 0 0 0\nv 1e30 0 0\nv 0 1 0\nf 1 2 3\n";
   const auto scene = [&](const char* mesh) {
@@ -344,9 +348,13 @@ TEST(SceneReader, NonFiniteOrFarMeshVerticesAreRefusedNamingTheFileAndVertex) {
         mesh);
   };
   test::expect_user_error([&] { read_scene_text(scene("nan.obj"), folder.path() / "s.yaml"); }, 4,
-                          {"vertex 1 of mesh file 'nan.obj'", "not a finite point"});
-  test::expect_user_error([&] { read_scene_text(scene("far.obj"), folder.path() / "s.yaml"); }, 4,
-                          {"vertex 1 of mesh file 'far.obj'", "beyond 1e+06 m", "'scale'"});
+                          {"vertex 1 of mesh file '", "nan.obj' is (", "not a finite point"});
+  test::expect_user_error(
+      [&] { read_scene_text(scene("far.obj"), folder.path() / "s.yaml"); }, 4,
+      {"vertex 1 of mesh file '", "far.obj' is at (1e+30, 0, 0) m", "beyond 1e+06 m", "'scale'"});
+  // Found by fuzzing: assimp passes a face's vertex ids on unchecked.
+  test::expect_user_error([&] { read_scene_text(scene("badid.ply"), folder.path() / "s.yaml"); }, 4,
+                          {"a face of mesh file", "refers to vertex 7, but it has 3 vertices"});
   test::expect_user_error(
       [&] {
         test::scene_from_yaml(
