@@ -8,6 +8,8 @@
 #
 #   scripts/fuzz.sh [RUNS] [scene|mesh]
 #
+# FUZZ_SECONDS=3600 stops each target after that long instead (whichever comes first).
+#
 # Needs clang and its runtime: sudo apt-get install clang libclang-rt-14-dev libomp-14-dev
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,7 +33,7 @@ mkdir -p "$corpus/scene" "$corpus/mesh" build-fuzz/artifacts/scene build-fuzz/ar
 cp scenes/*.yaml tests/fuzz/regressions/scene/* "$corpus/scene/" 2>/dev/null || true
 cp assets/* tests/data/* tests/fuzz/regressions/mesh/* "$corpus/mesh/" 2>/dev/null || true
 
-common=(-runs="$runs" -max_len=65536 -timeout=20 -rss_limit_mb=4096 -print_final_stats=1)
+common=(-runs="$runs" -max_total_time="${FUZZ_SECONDS:-0}" -max_len=65536 -timeout=20 -rss_limit_mb=4096 -print_final_stats=1)
 if [ -z "$only" ] || [ "$only" = scene ]; then
   echo "fuzz.sh: scene reader, $runs runs"
   build-fuzz/tests/fuzz/fuzz_scene_reader "${common[@]}" \

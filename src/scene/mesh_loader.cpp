@@ -98,7 +98,9 @@ bool get_array(std::string_view& in, std::vector<T>& out) {
     return false;
   }
   out.resize(count);
-  std::memcpy(static_cast<void*>(out.data()), in.data(), count * sizeof(T));  // plain numbers
+  if (count > 0) {  // an empty vector's data() may be null, which memcpy must not be given
+    std::memcpy(static_cast<void*>(out.data()), in.data(), count * sizeof(T));  // plain numbers
+  }
   in.remove_prefix(count * sizeof(T));
   return true;
 }

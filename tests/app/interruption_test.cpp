@@ -48,7 +48,8 @@ struct Stopped {
   std::string messages;  // what dinam printed
 };
 
-// Runs dinam with `arguments`, waits (up to 20 s) until `started(folder)` holds, sends `signal`
+// Runs dinam with `arguments`, waits (up to 120 s: the sanitizer build simulates several times
+// slower) until `started(folder)` holds, sends `signal`
 // and waits for the exit.
 Stopped stop_while_running(const std::vector<std::string>& arguments, int signal,
                            const std::filesystem::path& folder,
@@ -69,7 +70,7 @@ Stopped stop_while_running(const std::vector<std::string>& arguments, int signal
   EXPECT_EQ(posix_spawn(&pid, DINAM_PROGRAM, &actions, nullptr, argv.data(), environ), 0);
   posix_spawn_file_actions_destroy(&actions);
   bool running = false;
-  for (int i = 0; i < 800 && !running; ++i) {
+  for (int i = 0; i < 4800 && !running; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(25));
     running = started(folder);
   }
