@@ -16,6 +16,7 @@
 #include "app/frame_range.hpp"
 #include "app/frame_source.hpp"
 #include "app/frame_writer.hpp"
+#include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/error.hpp"
@@ -80,6 +81,13 @@ int run_render(const RenderOptions& options) {
   const std::optional<TimeStep> timestep =
       cache ? std::nullopt
             : std::optional(choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc));
+  // Every frame of the motion is held (or, from a cache, those drawn) until it is drawn.
+  const int frames_held = cache ? range.last - range.first + 1 : scene.frame_count();
+  refuse_if_over_budget(
+      options.scene,
+      estimate_memory(scene, model,
+                      {frames_held, options.energy_csv, scene.image_width, scene.image_height}),
+      available_memory(), options.force);
   const std::filesystem::path folder = options.output.value_or(scene.output);
   create_folder(folder);
   const auto start = Clock::now();

@@ -6,6 +6,7 @@
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
+#include "app/memory_estimate.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
@@ -13,8 +14,28 @@
 namespace dinam {
 namespace {
 
+// What `render` and `simulate` of this scene will hold at their peaks.
+struct MemoryFigures {
+  MemoryEstimate render;
+  MemoryEstimate simulate;
+  MemoryBudget available;
+};
+
+MemoryFigures memory_figures(const SceneDescription& scene, const Model& model) {
+  return {estimate_memory(scene, model,
+                          {scene.frame_count(), false, scene.image_width, scene.image_height}),
+          estimate_memory(scene, model, {2, false, 0, 0}), available_memory()};
+}
+
+long long steps_in_all(const SceneDescription& scene, const Model& model,
+                       const TimeStep& timestep) {
+  return static_cast<long long>(scene.frame_count()) * timestep.steps_per_frame +
+         std::llround(model.settle.duration / timestep.dt);
+}
+
 void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
                 Index pinned) {
+  const MemoryFigures memory = memory_figures(scene, model);
   nlohmann::ordered_json objects = nlohmann::ordered_json::array();
   for (const ModelObject& object : model.objects) {
     objects.push_back(
@@ -37,6 +58,10 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"frame_count", scene.frame_count()},
       {"duration_s", scene.duration},
       {"settle_s", model.settle.duration},
+      {"steps", steps_in_all(scene, model, timestep)},
+      {"memory_render_bytes", memory.render.peak()},
+      {"memory_simulate_bytes", memory.simulate.peak()},
+      {"memory_available_bytes", memory.available.bytes},
       {"output", scene.output.string()},
       {"movie", movie_format_name(scene.movie)},
   };
@@ -73,6 +98,15 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
   if (model.settle.duration > 0.0) {
     fmt::print("settling         {:g} s before t = 0 ({} steps), under gravity alone\n",
                model.settle.duration, std::llround(model.settle.duration / timestep.dt));
+  }
+  fmt::print("steps in all     {}\n", steps_in_all(scene, model, timestep));
+  const MemoryFigures memory = memory_figures(scene, model);
+  fmt::print("memory, render   about {} at {}×{}\n", memory.render.summary(), scene.image_width,
+             scene.image_height);
+  fmt::print("memory, simulate about {}\n", memory.simulate.summary());
+  if (!memory.available.source.empty()) {
+    fmt::print("available        {} ({})\n", byte_size(memory.available.bytes),
+               memory.available.source);
   }
 }
 

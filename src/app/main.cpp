@@ -44,6 +44,9 @@ int run(int argc, char** argv) {
   render_command->add_option("--cache", render_cache,
                              "Draw from this motion cache (made by 'dinam simulate') instead of "
                              "simulating; refused when the scene's motion has changed since");
+  render_command->add_flag("--force", render.force,
+                           "Run even when the memory the run needs (see 'dinam info') passes "
+                           "what the machine has available");
 
   SimulateOptions simulate;
   std::string simulate_output;
@@ -63,6 +66,9 @@ int run(int argc, char** argv) {
   simulate_command->add_flag("--energy", simulate.energy,
                              "Also record the energy report, one row per frame, in "
                              "manifest.json and energy.csv");
+  simulate_command->add_flag("--force", simulate.force,
+                             "Run even when the memory the run needs (see 'dinam info') passes "
+                             "what the machine has available");
 
   MovieOptions movie;
   CLI::App* movie_command = app.add_subcommand(

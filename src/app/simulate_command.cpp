@@ -9,6 +9,7 @@
 #include "app/draw_list_from_model.hpp"
 #include "app/energy_csv.hpp"
 #include "app/frame_source.hpp"
+#include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
@@ -54,6 +55,9 @@ int run_simulate(const SimulateOptions& options) {
   request.folder = options.output.value_or(scene.output / "cache");
   request.fps = scene.fps;
   request.frame_count = scene.frame_count();
+  // One frame's positions at a time: each goes to the files as soon as it is simulated.
+  refuse_if_over_budget(options.scene, estimate_memory(scene, model, {2, options.energy, 0, 0}),
+                        available_memory(), options.force);
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
 

@@ -1,0 +1,285 @@
+#include "app/memory_estimate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <optional>
+
+#include "core/error.hpp"
+#include "model/model.hpp"
+#include "scene/scene_description.hpp"
+
+namespace dinam {
+namespace {
+
+// The figures that are not counted from the model were measured as peak resident memory
+// (/usr/bin/time -f %M, Debian 12, Mesa 22.3 llvmpipe); docs/performance.md has the runs.
+//  - `dinam info` on a 121-node scene: 63 MB, the program, its libraries and their start-up.
+constexpr std::uint64_t kProgramBytes = 64'000'000;
+//  - OSMesa's context, llvmpipe's threads and compiled shaders, beside the per-pixel buffers:
+//    a 121-node scene drawn at 640×360, 1920×1080 and 3840×2160 took 61, 155 and 473 MB over
+//    `info`, i.e. 49 MB + 51 bytes a pixel with 4 samples, of which the shadow map is 17 MB.
+constexpr std::uint64_t kRendererBytes = 32'000'000;
+//  - Per pixel and sample: an RGBA8 colour and a 24-bit depth (stored in 4 bytes) of the
+//    multisampled framebuffer; per pixel besides: OSMesa's RGBA buffer and its depth, llvmpipe's
+//    resolve target, the picture read back and the frame writer's copy for PNG.
+constexpr std::uint64_t kBytesPerPixelSample = 8;
+constexpr std::uint64_t kBytesPerPixel = 20;
+constexpr std::uint64_t kBytesPerShadowTexel = 4;  // GL_DEPTH_COMPONENT24
+
+// A std::vector of small vectors (mesh faces and lines) costs its header and a heap block each.
+constexpr std::uint64_t kLoopBytes = sizeof(std::vector<Index>) + 16;
+
+template <typename T>
+std::uint64_t bytes_of(const std::vector<T>& array) {
+  return static_cast<std::uint64_t>(array.capacity()) * sizeof(T);
+}
+
+std::uint64_t scene_bytes(const SceneDescription& scene) {
+  std::uint64_t bytes = 0;
+  for (const ObjectDesc& object : scene.objects) {
+    const RawMesh& mesh = object.mesh;
+    bytes += bytes_of(mesh.vertices) + bytes_of(mesh.uvs);
+    for (const auto* loops : {&mesh.faces, &mesh.lines}) {
+      for (const std::vector<Index>& loop : *loops) {
+        bytes += kLoopBytes + bytes_of(loop);
+      }
+    }
+  }
+  return bytes;
+}
+
+std::uint64_t colouring_bytes(const SpringColouring& colouring) {
+  return bytes_of(colouring.blocks) + bytes_of(colouring.offsets);
+}
+
+// Every array of model.hpp, as allocated.
+std::uint64_t model_bytes(const Model& model) {
+  std::uint64_t bytes = bytes_of(model.node_initial_x) + bytes_of(model.node_initial_v) +
+                        bytes_of(model.node_mass) + bytes_of(model.node_inv_mass) +
+                        bytes_of(model.node_object) + bytes_of(model.node_uv);
+  bytes += bytes_of(model.bar_nodes) + bytes_of(model.bar_rest_length) +
+           bytes_of(model.bar_axial_stiffness) + bytes_of(model.bar_yield_force) +
+           bytes_of(model.bar_damping) + bytes_of(model.bar_radius) + bytes_of(model.bar_on_face);
+  bytes += bytes_of(model.bend_nodes) + bytes_of(model.bend_rest_angle) +
+           bytes_of(model.bend_stiffness) + bytes_of(model.bend_yield_moment);
+  bytes += bytes_of(model.torsion_nodes) + bytes_of(model.torsion_rest_angle) +
+           bytes_of(model.torsion_stiffness) + bytes_of(model.torsion_yield_moment);
+  bytes += bytes_of(model.face_offsets) + bytes_of(model.face_nodes);
+  bytes += colouring_bytes(model.bar_colours) + colouring_bytes(model.bend_colours) +
+           colouring_bytes(model.torsion_colours);
+  for (const FieldForce& field : model.fields) {
+    bytes += bytes_of(field.nodes);
+  }
+  for (const PinMotion& motion : model.pin_motions) {
+    bytes += bytes_of(motion.nodes);
+  }
+  bytes += bytes_of(model.wind.faces) + bytes_of(model.wind.bars);
+  bytes += bytes_of(model.ground.node_stiffness) + bytes_of(model.ground.node_damping);
+  return bytes;
+}
+
+// state.hpp's arrays for this model.
+std::uint64_t state_bytes(const Model& model, bool energy) {
+  const auto nodes = static_cast<std::uint64_t>(model.node_count());
+  const auto springs = static_cast<std::uint64_t>(model.bar_count()) +
+                       static_cast<std::uint64_t>(model.bend_count()) +
+                       static_cast<std::uint64_t>(model.torsion_count());
+  std::uint64_t bytes = nodes * 3 * sizeof(Vec3);  // x, v_half, force
+  bytes += springs * 2 * sizeof(double);           // plastic sets and each one's last flow
+  if (model.ground.enabled) {
+    bytes += nodes * (sizeof(Vec3) + 2 * sizeof(std::uint8_t));  // anchors, touching, sliding
+  }
+  if (energy) {
+    bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_previous
+  }
+  return bytes;
+}
+
+// draw_list.hpp's arrays and the renderer's per-frame copies of them (in dinam and in Mesa's
+// buffer objects).
+std::uint64_t draw_list_bytes(const Model& model) {
+  const auto nodes = static_cast<std::uint64_t>(model.node_count());
+  const auto bars = static_cast<std::uint64_t>(model.bar_count());
+  const auto face_nodes = static_cast<std::uint64_t>(model.face_nodes.size());
+  const std::uint64_t per_bar = 2 * sizeof(Index) + sizeof(float) + sizeof(Vec3f) +
+                                2 * 10 * sizeof(float);  // 10 floats an instance, twice
+  const std::uint64_t per_node = sizeof(float) + sizeof(Vec3f) + sizeof(Eigen::Vector2f) +
+                                 2 * (6 + 5) * sizeof(float);  // vertices and attributes, twice
+  // A face of k nodes is k − 2 triangles of three ids, held by the list and by Mesa.
+  return bars * per_bar + nodes * per_node + face_nodes * 2 * 3 * sizeof(Index);
+}
+
+std::optional<std::uint64_t> read_number_file(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  std::string text;
+  if (!(file >> text) || text.empty() || !std::isdigit(static_cast<unsigned char>(text[0]))) {
+    return std::nullopt;  // missing, or "max"
+  }
+  return std::strtoull(text.c_str(), nullptr, 10);
+}
+
+std::optional<std::uint64_t> mem_available() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::uint64_t kilobytes = 0;
+  std::string unit;
+  while (meminfo >> key >> kilobytes >> unit) {
+    if (key == "MemAvailable:") {
+      return kilobytes * 1024;
+    }
+  }
+  return std::nullopt;
+}
+
+// The cgroup (v2) this process runs in: "0::/path" in /proc/self/cgroup.
+std::optional<std::filesystem::path> cgroup_folder() {
+  std::ifstream cgroup("/proc/self/cgroup");
+  std::string line;
+  while (std::getline(cgroup, line)) {
+    if (line.rfind("0::", 0) == 0) {
+      return std::filesystem::path("/sys/fs/cgroup") / line.substr(3).erase(0, 1);
+    }
+  }
+  return std::nullopt;
+}
+
+std::uint64_t parse_memory_limit(const std::string& text) {
+  std::size_t used = 0;
+  double value = -1.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string suffix = text.substr(used);
+  if (!suffix.empty() && (suffix.back() == 'B' || suffix.back() == 'b')) {
+    suffix.pop_back();
+  }
+  double scale = 0.0;
+  if (suffix.empty()) {
+    scale = 1.0;
+  } else if (suffix.size() == 1) {
+    const std::string units = "KMGT";
+    const std::size_t power = units.find(static_cast<char>(std::toupper(suffix[0])));
+    scale = power == std::string::npos ? 0.0 : std::pow(1024.0, static_cast<double>(power + 1));
+  }
+  if (used == 0 || scale == 0.0 || !std::isfinite(value) || value < 0.0 || value * scale > 1e19) {
+    throw_user_error({},
+                     "DINAM_MEMORY_LIMIT is '{}'; give bytes or a number with K, M, G or T, e.g. "
+                     "DINAM_MEMORY_LIMIT=8G, or 0 for no limit of its own",
+                     text);
+  }
+  return static_cast<std::uint64_t>(value * scale);
+}
+
+}  // namespace
+
+std::uint64_t MemoryEstimate::peak() const {
+  return program + scene + model + frames + std::max(dynamics, drawing);
+}
+
+std::string MemoryEstimate::summary() const {
+  std::string text = fmt::format("{}: program {}, meshes {}, model {}, dynamics {}, frames {}",
+                                 byte_size(peak()), byte_size(program), byte_size(scene),
+                                 byte_size(model), byte_size(dynamics), byte_size(frames));
+  if (drawing > 0) {
+    text += fmt::format(", drawing {}", byte_size(drawing));
+  }
+  return text;
+}
+
+MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model,
+                               const MemoryUse& use) {
+  MemoryEstimate estimate;
+  estimate.program = kProgramBytes;
+  estimate.scene = scene_bytes(scene);
+  estimate.model = model_bytes(model);
+  estimate.dynamics = state_bytes(model, use.energy);
+  if (model.settle.duration > 0.0) {
+    // settle.cpp relaxes a copy of the model (no driving forces) with a state of its own.
+    estimate.dynamics += estimate.model + state_bytes(model, false);
+  }
+  estimate.frames =
+      static_cast<std::uint64_t>(std::max(use.frames_held, 0)) *
+      (static_cast<std::uint64_t>(model.node_count()) * sizeof(Vec3f) + sizeof(std::vector<Vec3f>));
+  if (use.image_width > 0 && use.image_height > 0) {
+    const auto pixels =
+        static_cast<std::uint64_t>(use.image_width) * static_cast<std::uint64_t>(use.image_height);
+    const auto samples = static_cast<std::uint64_t>(std::max(scene.quality.samples, 1));
+    const auto shadow =
+        scene.quality.shadows ? static_cast<std::uint64_t>(scene.quality.shadow_resolution) : 0;
+    estimate.drawing = kRendererBytes + pixels * (samples * kBytesPerPixelSample + kBytesPerPixel) +
+                       shadow * shadow * kBytesPerShadowTexel + draw_list_bytes(model);
+  }
+  return estimate;
+}
+
+MemoryBudget available_memory() {
+  std::optional<MemoryBudget> budget;
+  const auto consider = [&](std::uint64_t bytes, std::string source) {
+    if (!budget || bytes < budget->bytes) {
+      budget = MemoryBudget{bytes, std::move(source)};
+    }
+  };
+  if (const std::optional<std::uint64_t> available = mem_available()) {
+    consider(*available, "MemAvailable in /proc/meminfo");
+  }
+  if (const std::optional<std::filesystem::path> folder = cgroup_folder()) {
+    const std::optional<std::uint64_t> limit = read_number_file(*folder / "memory.max");
+    const std::optional<std::uint64_t> current = read_number_file(*folder / "memory.current");
+    if (limit && current) {
+      consider(*limit > *current ? *limit - *current : 0,
+               fmt::format("the limit of cgroup {} less what it uses", folder->string()));
+    }
+  }
+  if (const char* text = std::getenv("DINAM_MEMORY_LIMIT"); text != nullptr && *text != '\0') {
+    if (const std::uint64_t limit = parse_memory_limit(text); limit > 0) {
+      consider(limit, "DINAM_MEMORY_LIMIT");
+    }
+  }
+  return budget.value_or(MemoryBudget{});
+}
+
+void refuse_if_over_budget(const std::filesystem::path& scene_path, const MemoryEstimate& estimate,
+                           const MemoryBudget& budget, bool force) {
+  if (force || budget.source.empty() || estimate.peak() <= budget.bytes) {
+    return;
+  }
+  // The advice that shrinks the largest part.
+  const std::uint64_t mesh_parts = estimate.scene + estimate.model + estimate.dynamics;
+  std::string advice = "use a coarser mesh";
+  if (estimate.frames >= mesh_parts && estimate.frames >= estimate.drawing) {
+    advice =
+        "draw it in parts from a motion cache (dinam simulate, then render --cache DIR --frames "
+        "A-B: only those frames are held)";
+  } else if (estimate.drawing >= mesh_parts) {
+    advice = "draw smaller pictures (--size, or fewer quality samples)";
+  }
+  throw_user_error({},
+                   "{}: this run needs about {}, more than the {} available ({}); {}, or pass "
+                   "--force to run it anyway",
+                   scene_path.string(), estimate.summary(), byte_size(budget.bytes), budget.source,
+                   advice);
+}
+
+std::string byte_size(std::uint64_t bytes) {
+  const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
+  auto value = static_cast<double>(bytes);
+  int unit = 0;
+  while (value >= 999.5 && unit < 6) {
+    value /= 1000.0;
+    ++unit;
+  }
+  if (unit == 0) {
+    return fmt::format("{} bytes", bytes);
+  }
+  return fmt::format("{:.3g} {}", value, units[unit]);
+}
+
+}  // namespace dinam

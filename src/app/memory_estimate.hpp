@@ -1,0 +1,59 @@
+#pragma once
+// How much memory a run will hold at its peak, by part, worked out from the built model before the
+// run starts, and how much the machine can give; so that a scene too big for the machine is
+// refused with the figures and what to do, instead of being killed by the system halfway.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace dinam {
+
+struct Model;
+struct SceneDescription;
+
+// What the run does with the motion, which decides what it holds.
+struct MemoryUse {
+  int frames_held = 0;  // frames of positions kept at once (render: every frame simulated)
+  bool energy = false;  // the energy report's per-kind force arrays
+  int image_width = 0;  // pixels; 0 when nothing is drawn (dinam simulate)
+  int image_height = 0;
+};
+
+// Bytes, by part. The peak is when the frames are all held and either the dynamics is running
+// (with the settling phase's copy of the model before it) or the frames are being drawn.
+struct MemoryEstimate {
+  std::uint64_t program = 0;   // the program and its libraries, loaded
+  std::uint64_t scene = 0;     // the scene's meshes as read
+  std::uint64_t model = 0;     // the model's arrays (model.hpp)
+  std::uint64_t dynamics = 0;  // the state and, when settling, its copies of model and state
+  std::uint64_t frames = 0;    // the positions of every frame held
+  std::uint64_t drawing = 0;   // OSMesa's buffers at the image size, the draw list, one PNG
+
+  std::uint64_t peak() const;
+  std::string summary() const;  // "1.2 GB: model 0.3 GB, frames 0.8 GB, …"
+};
+
+MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model,
+                               const MemoryUse& use);
+
+// The memory this process may still take, and where the figure came from.
+struct MemoryBudget {
+  std::uint64_t bytes = 0;
+  std::string source;  // e.g. "MemAvailable in /proc/meminfo"
+};
+
+// The smallest of: the system's MemAvailable, the cgroup's memory.max less its memory.current
+// (a container's or a Slurm job's limit), and $DINAM_MEMORY_LIMIT (bytes, or with a K, M, G or T
+// suffix; 0 means no limit). Throws UserError when $DINAM_MEMORY_LIMIT cannot be read. Returns a
+// budget of no bytes and an empty source when none can be found.
+MemoryBudget available_memory();
+
+// Throws UserError naming the scene, the estimate by part, the budget and what to do, when the
+// estimate passes the budget and `force` is off.
+void refuse_if_over_budget(const std::filesystem::path& scene_path, const MemoryEstimate& estimate,
+                           const MemoryBudget& budget, bool force);
+
+// "1.23 GB", "456 MB", "789 kB": decimal units, three significant figures.
+std::string byte_size(std::uint64_t bytes);
+
+}  // namespace dinam
