@@ -2,14 +2,17 @@
 // Helpers shared by the tests: where the data lives, inline scenes, and checks on user errors.
 #include <gtest/gtest.h>
 
+#include <spawn.h>
 #include <stdlib.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "scene/scene_description.hpp"
@@ -85,6 +88,55 @@ inline CommandResult run_command(const std::string& command) {
   }
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+// Runs dinam with `arguments`, each passed as it is (no shell: names with spaces, quotes or a
+// leading dash arrive unchanged), with `environment` entries ("NAME=value") added, and collects
+// what it prints on both streams.
+inline CommandResult run_dinam(const std::vector<std::string>& arguments,
+                               const std::vector<std::string>& environment = {}) {
+  std::vector<std::string> all = {DINAM_PROGRAM};
+  all.insert(all.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) {
+    argv.push_back(a.data());
+  }
+  argv.push_back(nullptr);
+  std::vector<std::string> env_text(environment);
+  for (char** e = environ; *e != nullptr; ++e) {
+    env_text.emplace_back(*e);
+  }
+  std::vector<char*> envp;
+  for (std::string& e : env_text) {
+    envp.push_back(e.data());
+  }
+  envp.push_back(nullptr);
+  int pipe_ends[2] = {-1, -1};
+  CommandResult result;
+  if (pipe(pipe_ends) != 0) {
+    return result;
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, pipe_ends[0]);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, DINAM_PROGRAM, &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  close(pipe_ends[1]);
+  std::array<char, 4096> buffer{};
+  ssize_t got = 0;
+  while ((got = read(pipe_ends[0], buffer.data(), buffer.size())) > 0) {
+    result.output.append(buffer.data(), static_cast<std::size_t>(got));
+  }
+  close(pipe_ends[0]);
+  if (spawned == 0) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
   return result;
 }
 

@@ -22,7 +22,21 @@ extern "C" void ask_to_stop(int signal) {
 
 void create_folder(const std::filesystem::path& folder) {
   std::error_code ec;
+  // A file where the folder (or one above it) should be is the user's to move, not a failure.
+  for (std::filesystem::path above = folder; !above.empty() && above != above.root_path();
+       above = above.parent_path()) {
+    if (std::filesystem::exists(above, ec) && !std::filesystem::is_directory(above, ec)) {
+      throw_user_error({}, "the output folder {} cannot be made: {} is a file; give -o a folder",
+                       folder.string(), above.string());
+    }
+  }
   std::filesystem::create_directories(folder, ec);
+  if (ec == std::errc::permission_denied || ec == std::errc::read_only_file_system ||
+      ec == std::errc::operation_not_permitted) {
+    throw_user_error({},
+                     "the output folder {} cannot be made: {}; give -o a folder you can write to",
+                     folder.string(), ec.message());
+  }
   if (ec) {
     throw RuntimeError(
         fmt::format("cannot create the output folder {}: {}", folder.string(), ec.message()));

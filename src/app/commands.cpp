@@ -88,6 +88,7 @@ int run_render(const RenderOptions& options) {
       estimate_memory(scene, model,
                       {frames_held, options.energy_csv, scene.image_width, scene.image_height}),
       available_memory(), options.force);
+  std::vector<Image> textures = read_textures(scene);
   const std::filesystem::path folder = options.output.value_or(scene.output);
   create_folder(folder);
   const auto start = Clock::now();
@@ -125,7 +126,7 @@ int run_render(const RenderOptions& options) {
 
   // 2. Draw the frames; a thread of their own writes them (PNG) and feeds them to ffmpeg, which
   //    encodes the movie meanwhile.
-  const DrawList draw_list = make_draw_list(scene, model, frames.motion);
+  const DrawList draw_list = make_draw_list(scene, model, frames.motion, std::move(textures));
   const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
   int exit_code = kExitOk;
@@ -158,6 +159,7 @@ int run_render(const RenderOptions& options) {
                         frame - range.first + 1,
                         fmt::format("draw and write {:.1f} s", seconds_since(draw_start)));
                   });
+      writer.finish();
     } catch (const Interrupted& e) {
       // The frames drawn so far are written whole; ffmpeg is stopped and its partial movie
       // removed when `movie` goes.
@@ -167,8 +169,15 @@ int run_render(const RenderOptions& options) {
                         fmt::format("{} of the {} frames were written to {} and are kept; no "
                                     "movie was made",
                                     writer.frames_written(), range.count(), folder.string()));
+    } catch (const RuntimeError& e) {
+      // A frame that could not be written (a full disk): say what is left, as for a stop.
+      progress.finish();
+      throw RuntimeError(
+          fmt::format("{}; {} of the {} frames were written to {} and are kept, "
+                      "no movie was made. Free some space there or render to "
+                      "another folder (-o)",
+                      e.what(), writer.frames_written(), range.count(), folder.string()));
     }
-    writer.finish();
   }
   progress.finish();
   write_frame_folder_info(folder, {scene.name, scene.fps, scene.frame_count(), scene.image_width,
@@ -196,12 +205,13 @@ int run_snapshot(const SnapshotOptions& options) {
                                                  : std::vector<int>{1, (count + 1) / 2, count};
   const Model model = build_model(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  std::vector<Image> textures = read_textures(scene);
   const std::filesystem::path output =
       options.output.value_or(std::filesystem::path("out/snapshot") / scene.name);
 
   // The whole motion frames the camera, so a frame looks as it does in the movie.
   const SimulatedFrames frames = simulate_frames(model, timestep, count, false);
-  const DrawList draw_list = make_draw_list(scene, model, frames.motion);
+  const DrawList draw_list = make_draw_list(scene, model, frames.motion, std::move(textures));
   const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
 

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
+#include <utility>
 
+#include "core/error.hpp"
 #include "io/png_file.hpp"
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
@@ -39,7 +42,30 @@ Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames) {
   return bounds;
 }
 
+std::vector<Image> read_textures(const SceneDescription& scene) {
+  std::vector<Image> textures(scene.objects.size());
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const ObjectDesc& desc = scene.objects[o];
+    if (desc.style == DrawStyle::kWire || desc.texture.empty()) {
+      continue;
+    }
+    try {
+      textures[o] = read_png(desc.texture);
+    } catch (const std::exception& e) {
+      throw_user_error(desc.texture_loc,
+                       "texture file '{}' cannot be read as a PNG ({}); save it again as a PNG",
+                       desc.texture.string(), e.what());
+    }
+  }
+  return textures;
+}
+
 DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion) {
+  return make_draw_list(scene, model, motion, read_textures(scene));
+}
+
+DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion,
+                        std::vector<Image> textures) {
   DrawList list;
   const double extent = std::max(static_cast<double>(2.0f * motion.radius()), 1e-3);
   const double min_radius = 0.002 * extent;
@@ -85,7 +111,7 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
     }
     SurfaceBatch batch;
     if (!desc.texture.empty()) {
-      list.textures.push_back(read_png(desc.texture));
+      list.textures.push_back(std::move(textures[o]));
       batch.texture = static_cast<int>(list.textures.size()) - 1;
     }
     batch_of_object[o] = static_cast<int>(list.surfaces.size());

@@ -19,6 +19,15 @@ struct SceneDescription;
 // positions: the ground and the shadow map are framed on it.
 DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion);
 
+// The same, with the textures already read by read_textures.
+DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion,
+                        std::vector<Image> textures);
+
+// Every texture the scene draws, decoded, one per object (empty for an object without one).
+// The render reads them before it simulates, so a damaged PNG is a scene error at its key (a
+// UserError), found in a second rather than after the simulation.
+std::vector<Image> read_textures(const SceneDescription& scene);
+
 // The renderer's settings from the scene: image size, multisampling, shadow map.
 RenderSettings render_settings(const SceneDescription& scene);
 

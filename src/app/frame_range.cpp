@@ -24,7 +24,11 @@ FrameRange parse_frame_range(const std::string& text, int frame_count) {
   if (!ok) {
     throw_user_error({}, "--frames takes A-B or A (1-based frame numbers), got '{}'", text);
   }
-  if (range.first < 1 || range.last > frame_count || range.first > range.last) {
+  if (range.first > range.last) {
+    throw_user_error({}, "--frames {}: the first frame comes after the last; write {}-{}", text,
+                     range.last, range.first);
+  }
+  if (range.first < 1 || range.last > frame_count) {
     throw_user_error({}, "--frames {} is outside the scene's frames 1-{}", text, frame_count);
   }
   return range;

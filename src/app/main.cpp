@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <filesystem>
+#include <string>
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
@@ -10,6 +12,22 @@
 #include "core/version.hpp"
 
 namespace {
+
+// A file whose name starts with a dash reads as an option; when the command line did not parse,
+// say so for each argument that is such a file, and how to name it.
+void explain_dash_led_files(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    std::error_code ec;
+    if (argument.size() > 1 && argument[0] == '-' && argument != "--" &&
+        std::filesystem::exists(argument, ec)) {
+      fmt::print(stderr,
+                 "dinam: '{0}' is a file, but a name that starts with '-' reads as an option; "
+                 "write it as ./{0}\n",
+                 argument);
+    }
+  }
+}
 
 int run(int argc, char** argv) {
   using namespace dinam;
@@ -137,6 +155,7 @@ int run(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
+    explain_dash_led_files(argc, argv);
     return kExitBadInput;
   }
 

@@ -61,46 +61,57 @@ int run_simulate(const SimulateOptions& options) {
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
 
-  MotionCacheWriter writer(request, model);
-  std::optional<EnergyCsv> energy_csv;
-  CacheManifest manifest;
-  if (options.energy) {
-    energy_csv.emplace(writer.file_path("energy.csv"));
-    manifest.energy.columns.assign(kEnergyColumns.begin(), kEnergyColumns.end());
-  }
-  std::vector<Vec3f> positions;
-  Progress progress(request.frame_count, !options.quiet, "simulate");
+  // A cache that cannot be written whole (a full disk) leaves nothing: the writer removes its
+  // temporary folder, and an older cache stays as it was.
   try {
-    run_dynamics(model, timestep, request.frame_count, options.energy,
-                 [&](int frame, const State& state) {
-                   stop_if_asked();
-                   positions_for_render(state.x, positions);
-                   writer.add_frame(positions);
-                   if (energy_csv) {
-                     const EnergyReport& report = state.energy_workspace.last;
-                     energy_csv->write(report);
-                     const auto row = energy_row(report);
-                     manifest.energy.rows.emplace_back(row.begin(), row.end());
-                   }
-                   progress.update(frame, fmt::format("t = {:.2f} s", state.time));
-                 });
-  } catch (const Interrupted& e) {
+    MotionCacheWriter writer(request, model);
+    std::optional<EnergyCsv> energy_csv;
+    CacheManifest manifest;
+    if (options.energy) {
+      energy_csv.emplace(writer.file_path("energy.csv"));
+      manifest.energy.columns.assign(kEnergyColumns.begin(), kEnergyColumns.end());
+    }
+    std::vector<Vec3f> positions;
+    Progress progress(request.frame_count, !options.quiet, "simulate");
+    try {
+      run_dynamics(model, timestep, request.frame_count, options.energy,
+                   [&](int frame, const State& state) {
+                     stop_if_asked();
+                     positions_for_render(state.x, positions);
+                     writer.add_frame(positions);
+                     if (energy_csv) {
+                       const EnergyReport& report = state.energy_workspace.last;
+                       energy_csv->write(report);
+                       const auto row = energy_row(report);
+                       manifest.energy.rows.emplace_back(row.begin(), row.end());
+                     }
+                     progress.update(frame, fmt::format("t = {:.2f} s", state.time));
+                   });
+    } catch (const Interrupted& e) {
+      progress.finish();
+      throw Interrupted(e.signal(), fmt::format("no cache was written ({} is as it was)",
+                                                request.folder.string()));
+    }
     progress.finish();
-    throw Interrupted(
-        e.signal(), fmt::format("no cache was written ({} is as it was)", request.folder.string()));
+    if (energy_csv) {
+      energy_csv->close();
+    }
+    manifest.scene_path = canonical_scene_path(scene.source);
+    manifest.scene_name = scene.name;
+    manifest.scene_sha256 = scene.source_sha256;
+    manifest.motion_settings = scene.motion_settings;
+    manifest.timestep = timestep.dt;
+    manifest.steps_per_frame = timestep.steps_per_frame;
+    manifest.simulate_seconds = seconds_since(start);
+    writer.commit(std::move(manifest));
+  } catch (const Interrupted&) {
+    throw;
+  } catch (const RuntimeError& e) {
+    throw RuntimeError(
+        fmt::format("{}; no cache was written ({} is as it was). Free some space "
+                    "there or write the cache elsewhere (-o)",
+                    e.what(), request.folder.string()));
   }
-  progress.finish();
-  if (energy_csv) {
-    energy_csv->close();
-  }
-  manifest.scene_path = canonical_scene_path(scene.source);
-  manifest.scene_name = scene.name;
-  manifest.scene_sha256 = scene.source_sha256;
-  manifest.motion_settings = scene.motion_settings;
-  manifest.timestep = timestep.dt;
-  manifest.steps_per_frame = timestep.steps_per_frame;
-  manifest.simulate_seconds = seconds_since(start);
-  writer.commit(std::move(manifest));
   if (!options.quiet) {
     fmt::print("dinam: motion cache of {} frames in {} ({} objects, {}; {:.2f} s)\n",
                request.frame_count, request.folder.string(), model.objects.size(),

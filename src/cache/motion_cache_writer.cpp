@@ -139,7 +139,15 @@ MotionCacheWriter::MotionCacheWriter(const CacheRequest& request, const Model& m
     throw RuntimeError(fmt::format("cannot create the cache folder {}: {}", temporary_.string(),
                                    ec ? ec.message() : "it exists"));
   }
+  try {
+    open_files(model);
+  } catch (...) {
+    discard();  // the destructor does not run for a constructor that throws
+    throw;
+  }
+}
 
+void MotionCacheWriter::open_files(const Model& model) {
   std::set<std::string> stems;
   std::vector<float> times(static_cast<std::size_t>(request_.frame_count));
   for (std::size_t k = 0; k < times.size(); ++k) {
@@ -176,11 +184,15 @@ MotionCacheWriter::MotionCacheWriter(const CacheRequest& request, const Model& m
   frame_bounds_.reserve(static_cast<std::size_t>(request_.frame_count));
 }
 
+void MotionCacheWriter::discard() {
+  files_.clear();  // closes the files before their folder goes
+  std::error_code ec;
+  std::filesystem::remove_all(temporary_, ec);
+}
+
 MotionCacheWriter::~MotionCacheWriter() {
   if (!committed_) {
-    files_.clear();  // closes the files before their folder goes
-    std::error_code ec;
-    std::filesystem::remove_all(temporary_, ec);
+    discard();
   }
 }
 

@@ -45,6 +45,11 @@ class MotionCacheWriter {
   void commit(CacheManifest manifest);
 
  private:
+  // Writes each object's rest mesh and opens its point caches in the temporary folder.
+  void open_files(const Model& model);
+  // Removes the temporary folder and everything in it.
+  void discard();
+
   struct ObjectFiles {
     Index first_node = 0;
     Index node_count = 0;

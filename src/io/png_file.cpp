@@ -74,8 +74,17 @@ void write_png(const std::filesystem::path& path, const Image& image, const PngO
       throw RuntimeError(
           fmt::format("cannot write {}: {}", temporary.string(), std::strerror(errno)));
     }
+    errno = 0;
     ok = write_rows(file.get(), image, options, error);
     ok = (std::fflush(file.get()) == 0) && ok;
+    // libpng only says "Write Error"; the system's reason (a full disk, a quota) is in errno.
+    if (!ok && std::ferror(file.get()) != 0 && errno != 0) {
+      error = std::strerror(errno);
+    }
+    if (std::fclose(file.release()) != 0 && ok) {  // a late write error shows at close
+      ok = false;
+      error = std::strerror(errno);
+    }
   }
   std::error_code ec;
   if (ok) {

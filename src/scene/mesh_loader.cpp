@@ -269,6 +269,9 @@ void require_edges(const RawMesh& mesh, const std::string& what, const FileLoc& 
 
 RawMesh load_mesh_file(const std::filesystem::path& path, const FileLoc& where) {
   std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw_user_error(where, "mesh file '{}' is a folder; name a mesh file in it", path.string());
+  }
   if (!std::filesystem::is_regular_file(path, ec)) {
     throw_user_error(where,
                      "mesh file '{}' not found; mesh paths are relative to the folder of the scene "

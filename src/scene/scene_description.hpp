@@ -113,6 +113,7 @@ struct ObjectDesc {
   DrawStyle style = DrawStyle::kWire;   // default: surface when the mesh has faces
   bool joints = true;                   // spheres at the nodes of wires, so bars meet smoothly
   std::filesystem::path texture;        // a PNG laid on the surface by the mesh uv; optional
+  FileLoc texture_loc;                  // the 'texture' key, or the mesh's for its own texture
 };
 
 struct CameraDesc {

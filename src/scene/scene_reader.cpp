@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -569,10 +570,12 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   object.joints = map.boolean("joints", object.joints);
   if (!map.has("texture") && !object.mesh.texture.empty()) {
     object.texture = object.mesh.texture;  // the mesh file's own material
+    object.texture_loc = object.mesh_loc;
   }
   if (map.has("texture")) {
     const std::filesystem::path texture = map.string("texture", "");
     object.texture = texture.is_absolute() ? texture : scene_folder / texture;
+    object.texture_loc = map.loc("texture");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(object.texture, ec)) {
       throw_user_error(map.loc("texture"),
@@ -797,9 +800,17 @@ SceneDescription read_scene_text(const std::string& text, const std::filesystem:
 }
 
 SceneDescription read_scene(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw UserError(FileLoc{path.string()}, "this is a folder, not a scene file (YAML)");
+  }
+  if (!std::filesystem::exists(path, ec)) {
+    throw UserError(FileLoc{path.string()}, "there is no such scene file");
+  }
   std::ifstream in(path);
   if (!in) {
-    throw UserError(FileLoc{path.string()}, "cannot open the scene file");
+    throw UserError(FileLoc{path.string()},
+                    fmt::format("cannot open the scene file: {}", std::strerror(errno)));
   }
   std::stringstream text;
   text << in.rdbuf();
