@@ -2,8 +2,8 @@
 // kernel), and the refusal of a run that would not fit.
 #include "app/memory_estimate.hpp"
 
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
