@@ -79,6 +79,57 @@ TEST(TorsionSpring, ForceIsMinusTheEnergyGradient) {
   }
 }
 
+// A reference bar swinging into line with its bar: through the band where its weight fades
+// (sine 0.2 down to 0.1), below it and exactly in line. The force stays finite, is the energy's
+// gradient everywhere, and vanishes where a reference is lost.
+TEST(TorsionSpring, NearCollinearReferencesKeepForceEqualToMinusTheGradient) {
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> twist(-3.0, 3.0);
+  const double k = 2.0;
+  const Vec3 xi(0.1, -0.2, 0.05);
+  const Vec3 xj(1.1, 0.1, -0.1);
+  const Vec3 axis = (xj - xi).normalized();
+  const Vec3 across = axis.cross(Vec3(0.3, 0.2, 1.0)).normalized();
+  for (const double degrees : {0.0, 1e-6, 2.0, 5.0, 5.8, 7.0, 9.0, 10.5, 11.4, 11.6, 20.0}) {
+    for (int trial = 0; trial < 4; ++trial) {
+      const double theta = degrees * std::numbers::pi / 180.0;
+      // a behind i, at angle theta from the bar's line; b a well-placed reference at j.
+      const Vec3 xa = xi - 0.7 * (std::cos(theta) * axis + std::sin(theta) * across);
+      const Vec3 xb = xj + 0.6 * axis.cross(across) + 0.2 * axis;
+      const double rest = twist(rng);
+      const double plastic_set = trial % 2 == 0 ? 0.3 : 0.0;
+      const std::vector<Vec3> x = {xa, xi, xj, xb};
+      const TorsionSpringResult r = torsion_spring(xa, xi, xj, xb, rest, k, plastic_set);
+      for (const Vec3& f : {r.force_a, r.force_i, r.force_j, r.force_b}) {
+        ASSERT_TRUE(f.allFinite()) << degrees << "°";
+      }
+      if (std::sin(theta) <= 0.1) {
+        EXPECT_EQ(r.energy, 0.0) << degrees << "°: a lost reference twists nothing";
+        EXPECT_EQ(r.force_a.norm(), 0.0) << degrees << "°";
+      }
+      expect_force_is_minus_gradient(
+          x, {r.force_a, r.force_i, r.force_j, r.force_b}, [&](const auto& y) {
+            return torsion_spring(y[0], y[1], y[2], y[3], rest, k, plastic_set).energy;
+          });
+    }
+  }
+}
+
+// Where both references are at least kMinReferenceSine out of line, the spring is the paper's:
+// ½ k (φ − φ0)², unweighted.
+TEST(TorsionSpring, WellPlacedReferencesGiveTheFullSpring) {
+  const Vec3 xa(0, 1, 0);
+  const Vec3 xi(0, 0, 0);
+  const Vec3 xj(1, 0, 0);
+  const double twist = 0.4;
+  const Vec3 xb(1.0 + 0.3, std::cos(twist), std::sin(twist));  // sine with the bar: 0.96
+  const double k = 3.0;
+  const TorsionSpringResult r = torsion_spring(xa, xi, xj, xb, 0.0, k);
+  const double phi = dihedral_angle(xa, xi, xj, xb);
+  EXPECT_NEAR(std::abs(phi), twist, 1e-12);
+  EXPECT_NEAR(r.energy, 0.5 * k * phi * phi, 1e-6 * r.energy);  // fast_atan2's error
+}
+
 TEST(AxialSpring, ForceWithPlasticSetIsMinusTheEnergyGradient) {
   std::mt19937 rng(13);
   for (int trial = 0; trial < 20; ++trial) {
