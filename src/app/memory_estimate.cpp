@@ -68,6 +68,8 @@ std::uint64_t model_bytes(const Model& model) {
            bytes_of(model.bar_damping) + bytes_of(model.bar_radius) + bytes_of(model.bar_on_face);
   bytes += bytes_of(model.bend_nodes) + bytes_of(model.bend_rest_angle) +
            bytes_of(model.bend_stiffness) + bytes_of(model.bend_yield_moment);
+  bytes += bytes_of(model.clamp_nodes) + bytes_of(model.clamp_ghost_offset) +
+           bytes_of(model.clamp_stiffness) + bytes_of(model.clamp_yield_moment);
   bytes += bytes_of(model.torsion_nodes) + bytes_of(model.torsion_rest_angle) +
            bytes_of(model.torsion_stiffness) + bytes_of(model.torsion_yield_moment);
   bytes += bytes_of(model.face_offsets) + bytes_of(model.face_nodes);

@@ -2,6 +2,7 @@
 
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/bending_spring.hpp"
+#include "dynamics/clamp_spring.hpp"
 #include "dynamics/ground_contact.hpp"
 #include "dynamics/torsion_spring.hpp"
 #include "model/model.hpp"
@@ -32,7 +33,7 @@ EnergyReport energy_report(const Model& model, const State& state,
   report.time = state.time;
   report.kinetic = kinetic_energy(model, v_whole);
   report.axial = axial_spring_energy(model, state);
-  report.bending = bending_spring_energy(model, state);
+  report.bending = bending_spring_energy(model, state) + clamp_spring_energy(model, state);
   report.torsion = torsion_spring_energy(model, state);
   report.gravitational = gravitational_energy(model, state.x);
   report.contact = ground_contact_energy(model, state);

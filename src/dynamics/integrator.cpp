@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/bending_spring.hpp"
+#include "dynamics/clamp_spring.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/field_forces.hpp"
 #include "dynamics/global_damping.hpp"
@@ -92,6 +93,7 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   }
   if (switches.bending) {
     add_bending_spring_forces(total);
+    add_clamp_forces(total);
   }
   if (switches.torsion) {
     add_torsion_spring_forces(total);
@@ -121,6 +123,7 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   state.bar_plastic_set.assign(model.bar_count(), 0.0);
   state.bend_plastic_set.assign(model.bend_count(), 0.0);
   state.torsion_plastic_set.assign(model.torsion_count(), 0.0);
+  state.clamp_plastic_set.assign(model.clamp_count(), 0.0);
   // Scratch for the kinds that can yield, and contact history where there is a ground: an elastic
   // structure in the air carries neither (memory is part of speed for large models).
   Index yielding = 0;

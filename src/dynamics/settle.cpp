@@ -56,6 +56,7 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
   state.bar_plastic_set = std::move(settling.bar_plastic_set);
   state.bend_plastic_set = std::move(settling.bend_plastic_set);
   state.torsion_plastic_set = std::move(settling.torsion_plastic_set);
+  state.clamp_plastic_set = std::move(settling.clamp_plastic_set);
   state.contact_anchor = std::move(settling.contact_anchor);
   state.contact_touching = std::move(settling.contact_touching);
   state.contact_sliding = std::move(settling.contact_sliding);

@@ -71,6 +71,7 @@ struct State {
   std::vector<double> bar_plastic_set;      // (n_bars) m
   std::vector<double> bend_plastic_set;     // (n_bends) rad
   std::vector<double> torsion_plastic_set;  // (n_torsions) rad
+  std::vector<double> clamp_plastic_set;    // (n_clamps) rad
   std::vector<double>
       plastic_flow;  // (most springs of a kind that yields) J, scratch: each one's last flow
 

@@ -61,6 +61,12 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
     const double norms[3] = {1.0 / l1, 1.0 / l1 + 1.0 / l2, 1.0 / l2};
     sums.add(model, model.bend_stiffness[s], nodes, norms, 3);
   }
+  // Clamps: a bending spring whose other two points are held, |∂θ/∂x_a| = 1/L.
+  for (Index s = 0; s < model.clamp_count(); ++s) {
+    const Index a = model.clamp_nodes[2 * s + 1];
+    const double norm = 1.0 / model.clamp_ghost_offset[s].norm();
+    sums.add(model, model.clamp_stiffness[s], &a, &norm, 1);
+  }
   // Torsion: |∂φ/∂x_a| = 1/(|b1| sin θ1), |∂φ/∂x_b| = 1/(|b3| sin θ2), and the axis nodes'
   // blocks are combinations of those: |g_i| ≤ (1 + |b1|/|b2|) |g_a| + |b3|/|b2| |g_b|.
   for (Index s = 0; s < model.torsion_count(); ++s) {

@@ -97,6 +97,16 @@ struct Model {
   std::vector<double> torsion_yield_moment;  // (n_torsions) N·m; infinite when elastic
   Index bars_without_torsion = 0;            // bars with no usable reference neighbours
 
+  // Clamps: at a clamped pinned node c, each bar c–a to a free node a keeps its rest direction, as
+  // a beam built in there: a bending spring on the angle at c between c–a and the fixed ghost
+  // point g = c + (c₀ − a₀) (the bar continued straight through the support), rest angle π,
+  // k = 2 E I / L_ca. With the tributary half-length of beam a clamped end has, this is the
+  // ghost-node condition of the beam equation (w₋₁ = w₁), which converges at second order.
+  std::vector<Index> clamp_nodes;          // (n_clamps × 2) c, a
+  std::vector<Vec3> clamp_ghost_offset;    // (n_clamps) m, g − c
+  std::vector<double> clamp_stiffness;     // (n_clamps) N·m/rad
+  std::vector<double> clamp_yield_moment;  // (n_clamps) N·m; infinite when elastic
+
   // Mesh faces as loops of node ids (for drawing surfaces and for wind later):
   // face k has nodes face_nodes[face_offsets[k] .. face_offsets[k + 1]).
   std::vector<Index> face_offsets;  // (n_faces + 1)
@@ -120,6 +130,7 @@ struct Model {
   Index bar_count() const { return static_cast<Index>(bar_rest_length.size()); }
   Index bend_count() const { return static_cast<Index>(bend_rest_angle.size()); }
   Index torsion_count() const { return static_cast<Index>(torsion_rest_angle.size()); }
+  Index clamp_count() const { return static_cast<Index>(clamp_stiffness.size()); }
   Index face_count() const { return static_cast<Index>(face_offsets.size()) - 1; }
   bool pinned(Index node) const { return node_inv_mass[node] == 0.0; }
   double total_mass() const;

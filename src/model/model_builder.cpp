@@ -345,7 +345,11 @@ Model build_model(const SceneDescription& scene) {
     add_object_conditions(object, model);
     const ModelObject& info = model.objects[object.object_id];
     const NodeAdjacency adjacency = node_adjacency(model, info);
+    const Index first_bend = model.bend_count();
     add_bending_springs(object.desc->material, object.desc->bending_pairs, info, adjacency, model);
+    if (object.desc->pins_clamped) {
+      add_clamps(object.desc->material, info, adjacency, model, first_bend);
+    }
     if (object.desc->torsion) {
       add_torsion_springs(object.desc->material, info, adjacency, model);
     } else {

@@ -13,6 +13,12 @@ NodeAdjacency node_adjacency(const Model& model, const ModelObject& object);
 void add_bending_springs(const MaterialDesc& material, BendingPairs pairs,
                          const ModelObject& object, const NodeAdjacency& adjacency, Model& model);
 
+// At each pinned node of a clamped object (ObjectDesc::pins_clamped), the bending springs centred
+// there give way to one clamp per bar to a free node (model.hpp), which holds that bar's rest
+// direction; bending springs must already be built.
+void add_clamps(const MaterialDesc& material, const ModelObject& object,
+                const NodeAdjacency& adjacency, Model& model, Index first_bend);
+
 // One torsion spring k = G J / L0 per bar that has a usable reference neighbour at each end: the
 // bar most nearly perpendicular to it, at least kMinReferenceSine away from collinear.
 inline constexpr double kMinReferenceSine = 0.2;  // about 11.5°

@@ -102,6 +102,7 @@ struct ObjectDesc {
   FileLoc mesh_loc;
   MaterialDesc material;
   PinDesc pins;
+  bool pins_clamped = false;  // the pinned nodes hold the direction of their bars as well
   PinMotionDesc pin_motion;              // none by default: pinned nodes stay where they are
   Vec3 initial_velocity = Vec3::Zero();  // m/s
   std::vector<VelocityGroupDesc> velocity_groups;

@@ -1,0 +1,42 @@
+#include "dynamics/clamp_spring.hpp"
+
+#include <numbers>
+
+#include "dynamics/bending_spring.hpp"
+#include "model/model.hpp"
+
+namespace dinam {
+namespace {
+
+BendingSpringResult clamp_spring(const Model& model, const State& state, Index s) {
+  const Index c = model.clamp_nodes[2 * s];
+  const Index a = model.clamp_nodes[2 * s + 1];
+  const Vec3 ghost = state.x[c] + model.clamp_ghost_offset[s];
+  return bending_spring(state.x[a], state.x[c], ghost, std::numbers::pi, model.clamp_stiffness[s],
+                        state.clamp_plastic_set[s], model.clamp_yield_moment[s]);
+}
+
+}  // namespace
+
+void add_clamp_forces(ForceContext& context) {
+  const Model& model = context.model;
+  State& state = context.state;
+  for (Index s = 0; s < model.clamp_count(); ++s) {
+    const BendingSpringResult r = clamp_spring(model, state, s);
+    context.add(model.clamp_nodes[2 * s + 1], r.force_a);
+    if (context.update_history) {
+      state.clamp_plastic_set[s] = r.plastic_set;
+      state.energy.plastic_dissipation += r.dissipated;
+    }
+  }
+}
+
+double clamp_spring_energy(const Model& model, const State& state) {
+  double energy = 0.0;
+  for (Index s = 0; s < model.clamp_count(); ++s) {
+    energy += clamp_spring(model, state, s).energy;
+  }
+  return energy;
+}
+
+}  // namespace dinam

@@ -1,0 +1,15 @@
+#pragma once
+// Clamps (model.hpp): at a clamped pinned node c, a bending spring between the bar c–a and the
+// fixed ghost point g = x_c + (c₀ − a₀), rest angle π, so that the bar keeps its rest direction
+// there. The support takes the shares of c and g; a feels the rest.
+#include "dynamics/force_context.hpp"
+
+namespace dinam {
+
+struct Model;
+
+// A few springs at the supports: one serial loop, in clamp order.
+void add_clamp_forces(ForceContext& context);
+double clamp_spring_energy(const Model& model, const State& state);
+
+}  // namespace dinam

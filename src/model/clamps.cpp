@@ -1,0 +1,51 @@
+#include <cmath>
+
+#include "model/spring_builders.hpp"
+
+namespace dinam {
+
+void add_clamps(const MaterialDesc& material, const ModelObject& object,
+                const NodeAdjacency& adjacency, Model& model, Index first_bend) {
+  const auto clamped = [&](Index node) {
+    return node >= object.first_node && node < object.first_node + object.node_count &&
+           model.pinned(node);
+  };
+  // A clamp holds each bar at the node by itself, so springs between bars there would count the
+  // same stiffness twice.
+  Index kept = first_bend;
+  for (Index s = first_bend; s < model.bend_count(); ++s) {
+    if (clamped(model.bend_nodes[3 * s + 1])) {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      model.bend_nodes[3 * kept + k] = model.bend_nodes[3 * s + k];
+    }
+    model.bend_rest_angle[kept] = model.bend_rest_angle[s];
+    model.bend_stiffness[kept] = model.bend_stiffness[s];
+    model.bend_yield_moment[kept] = model.bend_yield_moment[s];
+    ++kept;
+  }
+  model.bend_nodes.resize(3 * static_cast<std::size_t>(kept));
+  model.bend_rest_angle.resize(kept);
+  model.bend_stiffness.resize(kept);
+  model.bend_yield_moment.resize(kept);
+
+  const double ei = material.youngs_modulus * material.area_moment;
+  for (Index local = 0; local < object.node_count; ++local) {
+    const Index c = object.first_node + local;
+    if (!model.pinned(c)) {
+      continue;
+    }
+    for (const auto& [a, bar] : adjacency[local]) {
+      if (model.pinned(a)) {
+        continue;
+      }
+      model.clamp_nodes.insert(model.clamp_nodes.end(), {c, a});
+      model.clamp_ghost_offset.push_back(model.node_initial_x[c] - model.node_initial_x[a]);
+      model.clamp_stiffness.push_back(2.0 * ei / model.bar_rest_length[bar]);
+      model.clamp_yield_moment.push_back(material.yield_bending_moment);
+    }
+  }
+}
+
+}  // namespace dinam

@@ -1,0 +1,32 @@
+#pragma once
+// The scene readers that more than one file of the scene stage uses: scene_reader.cpp reads the
+// scene's top level and its forces, object_reader.cpp its objects. Each reader takes a YamlMap,
+// reads every key it knows and finishes the map (docs/scene-format.md documents every key).
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+#include "scene/scene_description.hpp"
+#include "scene/yaml_map.hpp"
+
+namespace dinam {
+
+// Throws a UserError at `loc` naming `what` unless value > 0.
+void require_positive(double value, const FileLoc& loc, const std::string& what, const char* unit);
+
+// A material value within the range docs/scene-format.md gives: beyond it no real material lies,
+// and the masses, stiffnesses and the stable step derived from it leave double precision.
+void require_in_range(double value, double low, double high, const FileLoc& loc,
+                      const std::string& what, const char* unit);
+
+// A time profile: constant, step, ramp or sine.
+TimeProfile read_profile(YamlMap map);
+
+// A set of an object's vertices: `all`, `indices`, `box` (one or a list). Where `clamped` is
+// given, the map may also hold `clamped: true/false` (pinned sets), which it receives.
+NodeSelection read_nodes(YamlMap map, std::size_t vertex_count, bool* clamped = nullptr);
+
+// One entry of `objects`, its mesh loaded.
+ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder);
+
+}  // namespace dinam
