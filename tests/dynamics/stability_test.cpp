@@ -5,45 +5,17 @@
 #include <Eigen/Eigenvalues>
 
 #include "dynamics/integrator.hpp"
+#include "dynamics/modal_support.hpp"
 #include "model/model.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
 namespace {
 
-// The free degrees of freedom of a model: 3 per free node, in node order.
-struct FreeDofs {
-  std::vector<int> dof_of_node;  // (n_nodes) first dof of each free node, −1 when pinned
-  int count = 0;
-};
-
-FreeDofs free_dofs(const Model& model) {
-  FreeDofs dofs;
-  dofs.dof_of_node.assign(model.node_count(), -1);
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (!model.pinned(i)) {
-      dofs.dof_of_node[i] = dofs.count;
-      dofs.count += 3;
-    }
-  }
-  return dofs;
-}
-
-// λ_max of M^{-½} K M^{-½}: ω_max² of the stiffness matrix over the free dofs.
-double max_frequency_squared(const Model& model, const FreeDofs& dofs, const Eigen::MatrixXd& k) {
-  Eigen::VectorXd inv_sqrt_mass(dofs.count);
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (dofs.dof_of_node[i] >= 0) {
-      inv_sqrt_mass.segment<3>(dofs.dof_of_node[i])
-          .setConstant(1.0 / std::sqrt(model.node_mass[i]));
-    }
-  }
-  Eigen::MatrixXd d = inv_sqrt_mass.asDiagonal() * k * inv_sqrt_mass.asDiagonal();
-  d = 0.5 * (d + d.transpose());  // a finite-difference K is symmetric only to rounding
-  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(d, Eigen::EigenvaluesOnly)
-      .eigenvalues()
-      .maxCoeff();
-}
+using test::finite_difference_stiffness;
+using test::free_dofs;
+using test::FreeDofs;
+using test::max_frequency_squared;
 
 // ω_max² of the model at rest, from a dense eigen-solve of M^{-½} K M^{-½} over the free
 // degrees of freedom, with K assembled here from k n nᵀ per bar (not from dynamics/).
@@ -106,30 +78,8 @@ TEST(Stability, BoundIsAboveTheTrueHighestFrequencyAndWithinAFactorTwo) {
 // ω_max² of the full model at rest from a dense eigen-solve, with the stiffness matrix taken by
 // central differences of the real forces (every spring kind), not from the bound's formulas.
 double finite_difference_max_frequency_squared(const Model& model) {
-  ForceSwitches elastic;
-  elastic.gravity = elastic.fields = elastic.wind = elastic.ground = false;
-  elastic.axial_dampers = elastic.global_damping = false;
-  State state = initial_state(model, 1e-6, elastic);
   const FreeDofs dofs = free_dofs(model);
-  Eigen::MatrixXd k_matrix = Eigen::MatrixXd::Zero(dofs.count, dofs.count);
-  const double h = 1e-7;
-  for (Index j = 0; j < model.node_count(); ++j) {
-    for (int c = 0; c < 3 && dofs.dof_of_node[j] >= 0; ++c) {
-      state.x = model.node_initial_x;
-      state.x[j][c] += h;
-      compute_forces(model, elastic, state);
-      const std::vector<Vec3> plus = state.force;
-      state.x[j][c] -= 2 * h;
-      compute_forces(model, elastic, state);
-      for (Index i = 0; i < model.node_count(); ++i) {
-        if (dofs.dof_of_node[i] >= 0) {
-          k_matrix.block<3, 1>(dofs.dof_of_node[i], dofs.dof_of_node[j] + c) =
-              -(plus[i] - state.force[i]) / (2 * h);
-        }
-      }
-    }
-  }
-  return max_frequency_squared(model, dofs, k_matrix);
+  return max_frequency_squared(model, dofs, finite_difference_stiffness(model, dofs));
 }
 
 TEST(Stability, BoundCoversBendingAndTorsion) {
