@@ -28,6 +28,8 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=cl
   >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene_reader fuzz_mesh >/dev/null
 
+# The sanitizers' suppressions are the asan preset's: only leaks inside third-party libraries.
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 corpus=build-fuzz/corpus
 mkdir -p "$corpus/scene" "$corpus/mesh" build-fuzz/artifacts/scene build-fuzz/artifacts/mesh
 cp scenes/*.yaml tests/fuzz/regressions/scene/* "$corpus/scene/" 2>/dev/null || true
