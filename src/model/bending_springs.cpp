@@ -16,12 +16,11 @@ NodeAdjacency node_adjacency(const Model& model, const ModelObject& object) {
   return adjacency;
 }
 
-void add_bending_springs(const MaterialDesc& material, BendingPairs pairs,
+void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
                          const ModelObject& object, const NodeAdjacency& adjacency, Model& model) {
   if (pairs == BendingPairs::kNone) {
     return;
   }
-  const double ei = material.youngs_modulus * material.area_moment;
   for (Index local = 0; local < object.node_count; ++local) {
     const Index c = object.first_node + local;
     const auto& bars = adjacency[local];
@@ -61,13 +60,20 @@ void add_bending_springs(const MaterialDesc& material, BendingPairs pairs,
       const Index b = bars[q].first;
       const double l1 = model.bar_rest_length[bars[p].second];
       const double l2 = model.bar_rest_length[bars[q].second];
+      const MaterialDesc& m1 = *materials[bars[p].second - object.first_bar];
+      const MaterialDesc& m2 = *materials[bars[q].second - object.first_bar];
       model.bend_nodes.insert(model.bend_nodes.end(), {a, c, b});
       model.bend_rest_angle.push_back(
           bend_angle(model.node_initial_x[a], xc, model.node_initial_x[b]));
       // A beam's bending energy ∫ EI κ²/2 over the length (L1 + L2)/2 that the node stands for,
-      // with κ ≈ Δθ / ((L1 + L2)/2), is ½ k Δθ² with k = 2 EI / (L1 + L2).
-      model.bend_stiffness.push_back(2.0 * ei / (l1 + l2));
-      model.bend_yield_moment.push_back(material.yield_bending_moment);
+      // with κ ≈ Δθ / ((L1 + L2)/2), is ½ k Δθ² with k = 2 EI / (L1 + L2); with two materials
+      // the two half-bars turn through the same Δθ as rotational springs in series.
+      // (The one-material form is kept as it was written, so that its rounding is unchanged.)
+      const double ei1 = m1.youngs_modulus * m1.area_moment;
+      const double ei2 = m2.youngs_modulus * m2.area_moment;
+      model.bend_stiffness.push_back(&m1 == &m2 ? 2.0 * ei1 / (l1 + l2)
+                                                : 2.0 / (l1 / ei1 + l2 / ei2));
+      model.bend_yield_moment.push_back(std::min(m1.yield_bending_moment, m2.yield_bending_moment));
     }
   }
 }

@@ -4,7 +4,7 @@
 
 namespace dinam {
 
-void add_clamps(const MaterialDesc& material, const ModelObject& object,
+void add_clamps(const BarMaterials& materials, const ModelObject& object,
                 const NodeAdjacency& adjacency, Model& model, Index first_bend) {
   const auto clamped = [&](Index node) {
     return node >= object.first_node && node < object.first_node + object.node_count &&
@@ -30,7 +30,6 @@ void add_clamps(const MaterialDesc& material, const ModelObject& object,
   model.bend_stiffness.resize(kept);
   model.bend_yield_moment.resize(kept);
 
-  const double ei = material.youngs_modulus * material.area_moment;
   for (Index local = 0; local < object.node_count; ++local) {
     const Index c = object.first_node + local;
     if (!model.pinned(c)) {
@@ -42,7 +41,9 @@ void add_clamps(const MaterialDesc& material, const ModelObject& object,
       }
       model.clamp_nodes.insert(model.clamp_nodes.end(), {c, a});
       model.clamp_ghost_offset.push_back(model.node_initial_x[c] - model.node_initial_x[a]);
-      model.clamp_stiffness.push_back(2.0 * ei / model.bar_rest_length[bar]);
+      const MaterialDesc& material = *materials[bar - object.first_bar];
+      model.clamp_stiffness.push_back(2.0 * material.youngs_modulus * material.area_moment /
+                                      model.bar_rest_length[bar]);
       model.clamp_yield_moment.push_back(material.yield_bending_moment);
     }
   }

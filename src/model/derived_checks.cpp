@@ -61,8 +61,9 @@ void check_derived_quantities(const Model& model, const SceneDescription& scene)
     }
   }
   // Bending and torsion stiffnesses, and the ground's, belong to springs that span one object.
-  for (const auto* values : {&model.bend_stiffness, &model.torsion_stiffness,
-                             &model.clamp_stiffness, &model.ground.node_stiffness, &model.ground.node_damping}) {
+  for (const auto* values :
+       {&model.bend_stiffness, &model.torsion_stiffness, &model.clamp_stiffness,
+        &model.ground.node_stiffness, &model.ground.node_damping}) {
     if (const Index k = first_unusable(*values, 0, static_cast<Index>(values->size()), false);
         k >= 0) {
       throw_user_error(scene.objects.front().material.loc,

@@ -54,6 +54,7 @@ struct ObjectNodes {
   const ObjectDesc* desc = nullptr;
   Index object_id = 0;
   std::vector<Index> node_of_vertex;  // (n_vertices)
+  BarMaterials bar_materials;         // (n_bars) the object's material or a part's
 };
 
 // The nodes a selection names, in increasing order. A listed vertex on no edge is an error.
@@ -130,39 +131,49 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) 
     model.node_uv.push_back(welded_uv[w]);
   }
   info.node_count = next - info.first_node;
+  info.bar_count = static_cast<Index>(edges.size());
+  model.objects.push_back(std::move(info));
+  ObjectNodes nodes{&object, object_id, {}, {}};
+  nodes.node_of_vertex.reserve(weld.node_of_vertex.size());
+  for (const Index w : weld.node_of_vertex) {
+    nodes.node_of_vertex.push_back(node_of_welded[w]);
+  }
 
+  // Each bar's material: the last part holding both its ends, else the object's.
+  const Index first_node = model.objects.back().first_node;
+  std::vector<int> part_of_node(model.objects.back().node_count, -1);
+  for (std::size_t p = 0; p < object.parts.size(); ++p) {
+    for (const Index node : select_nodes(object.parts[p].nodes, nodes, model)) {
+      part_of_node[node - first_node] = static_cast<int>(p);
+    }
+  }
   // Each bar's mass ρ A L0 goes half to each end.
-  const MaterialDesc& material = object.material;
-  const double bar_radius = std::sqrt(material.area / std::numbers::pi);
   for (const auto& [a, b] : edges) {
     const Index n0 = node_of_welded[a];
     const Index n1 = node_of_welded[b];
+    const int part0 = part_of_node[n0 - first_node];
+    const int part1 = part_of_node[n1 - first_node];
+    const MaterialDesc& material =
+        part0 >= 0 && part0 == part1 ? object.parts[part0].material : object.material;
+    nodes.bar_materials.push_back(&material);
     const double rest_length = (model.node_initial_x[n1] - model.node_initial_x[n0]).norm();
     model.bar_nodes.push_back(n0);
     model.bar_nodes.push_back(n1);
     model.bar_rest_length.push_back(rest_length);
     model.bar_axial_stiffness.push_back(material.youngs_modulus * material.area / rest_length);
     model.bar_yield_force.push_back(material.yield_axial_force);
-    model.bar_radius.push_back(bar_radius);
+    model.bar_radius.push_back(std::sqrt(material.area / std::numbers::pi));
     model.bar_damping.push_back(0.0);  // set below, once the node masses are known
     const double half_mass = 0.5 * material.density * material.area * rest_length;
     model.node_mass[n0] += half_mass;
     model.node_mass[n1] += half_mass;
   }
-  info.bar_count = static_cast<Index>(edges.size());
 
   for (const auto& face : object.mesh.faces) {
     for (const Index vertex : face) {
       model.face_nodes.push_back(node_of_welded[weld.node_of_vertex[vertex]]);
     }
     model.face_offsets.push_back(static_cast<Index>(model.face_nodes.size()));
-  }
-  model.objects.push_back(std::move(info));
-
-  ObjectNodes nodes{&object, object_id, {}};
-  nodes.node_of_vertex.reserve(weld.node_of_vertex.size());
-  for (const Index w : weld.node_of_vertex) {
-    nodes.node_of_vertex.push_back(node_of_welded[w]);
   }
   return nodes;
 }
@@ -346,12 +357,12 @@ Model build_model(const SceneDescription& scene) {
     const ModelObject& info = model.objects[object.object_id];
     const NodeAdjacency adjacency = node_adjacency(model, info);
     const Index first_bend = model.bend_count();
-    add_bending_springs(object.desc->material, object.desc->bending_pairs, info, adjacency, model);
+    add_bending_springs(object.bar_materials, object.desc->bending_pairs, info, adjacency, model);
     if (object.desc->pins_clamped) {
-      add_clamps(object.desc->material, info, adjacency, model, first_bend);
+      add_clamps(object.bar_materials, info, adjacency, model, first_bend);
     }
     if (object.desc->torsion) {
-      add_torsion_springs(object.desc->material, info, adjacency, model);
+      add_torsion_springs(object.bar_materials, info, adjacency, model);
     } else {
       model.bars_without_torsion += info.bar_count;
     }

@@ -5,24 +5,29 @@
 
 namespace dinam {
 
+// The material of each bar of an object (ObjectDesc::parts), by the bar's index in the object.
+using BarMaterials = std::vector<const MaterialDesc*>;  // (object's n_bars)
+
 // The bars at each node of an object, as (other node, bar id).
 using NodeAdjacency = std::vector<std::vector<std::pair<Index, Index>>>;  // (object's n_nodes)
 NodeAdjacency node_adjacency(const Model& model, const ModelObject& object);
 
-// Bending springs k = 2 E I / (L1 + L2) between the chosen pairs of bars at each node.
-void add_bending_springs(const MaterialDesc& material, BendingPairs pairs,
+// Bending springs between the chosen pairs of bars at each node: the two half-bars' bending
+// stiffnesses in series, k = 2 / (L1 / E1I1 + L2 / E2I2), which is 2 E I / (L1 + L2) for one
+// material; yield at the weaker bar's moment.
+void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
                          const ModelObject& object, const NodeAdjacency& adjacency, Model& model);
 
 // At each pinned node of a clamped object (ObjectDesc::pins_clamped), the bending springs centred
 // there give way to one clamp per bar to a free node (model.hpp), which holds that bar's rest
 // direction; bending springs must already be built.
-void add_clamps(const MaterialDesc& material, const ModelObject& object,
+void add_clamps(const BarMaterials& materials, const ModelObject& object,
                 const NodeAdjacency& adjacency, Model& model, Index first_bend);
 
 // One torsion spring k = G J / L0 per bar that has a usable reference neighbour at each end: the
 // bar most nearly perpendicular to it, at least kMinReferenceSine away from collinear.
 inline constexpr double kMinReferenceSine = 0.2;  // about 11.5°
-void add_torsion_springs(const MaterialDesc& material, const ModelObject& object,
+void add_torsion_springs(const BarMaterials& materials, const ModelObject& object,
                          const NodeAdjacency& adjacency, Model& model);
 
 }  // namespace dinam

@@ -11,10 +11,11 @@ double sine_between(const Vec3& u, const Vec3& v) {
 
 }  // namespace
 
-void add_torsion_springs(const MaterialDesc& material, const ModelObject& object,
+void add_torsion_springs(const BarMaterials& materials, const ModelObject& object,
                          const NodeAdjacency& adjacency, Model& model) {
-  const double gj = material.shear_modulus * material.polar_moment;
   for (Index bar = object.first_bar; bar < object.first_bar + object.bar_count; ++bar) {
+    const MaterialDesc& material = *materials[bar - object.first_bar];
+    const double gj = material.shear_modulus * material.polar_moment;
     const Index i = model.bar_nodes[2 * bar];
     const Index j = model.bar_nodes[2 * bar + 1];
     const Vec3 axis = model.node_initial_x[j] - model.node_initial_x[i];

@@ -306,6 +306,23 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
       object.velocity_groups.push_back(std::move(desc));
     }
   }
+  if (const YAML::Node parts = map.get("parts"); parts) {
+    if (!parts.IsSequence()) {
+      throw_user_error(map.loc("parts"), "'{}' must be a list of {{nodes: ..., material: ...}}",
+                       map.path("parts"));
+    }
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      YamlMap part(parts[i], map.file(), fmt::format("{}[{}]", map.path("parts"), i));
+      MaterialPartDesc desc;
+      desc.loc = part.loc();
+      desc.nodes = read_nodes(YamlMap(part.required("nodes"), map.file(), part.path("nodes")),
+                              object.mesh.vertices.size());
+      desc.material =
+          read_material(YamlMap(part.required("material"), map.file(), part.path("material")));
+      part.finish();
+      object.parts.push_back(std::move(desc));
+    }
+  }
   const std::string pairs = map.string("bending_pairs", "collinear");
   if (pairs == "collinear") {
     object.bending_pairs = BendingPairs::kMostCollinear;

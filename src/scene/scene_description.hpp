@@ -92,6 +92,14 @@ struct PinMotionDesc {
   bool moving() const { return !displacement.isZero(); }
 };
 
+// A part of an object made of another material: every bar whose two ends are both in `nodes`
+// (later parts win over earlier ones; other bars keep the object's material).
+struct MaterialPartDesc {
+  NodeSelection nodes;
+  MaterialDesc material;
+  FileLoc loc;
+};
+
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
 enum class DrawStyle { kSurface, kWire, kBoth };
 
@@ -101,9 +109,10 @@ struct ObjectDesc {
   RawMesh mesh;  // in world space
   FileLoc mesh_loc;
   MaterialDesc material;
+  std::vector<MaterialPartDesc> parts;  // bars of other materials, by node selection
   PinDesc pins;
   bool pins_clamped = false;  // the pinned nodes hold the direction of their bars as well
-  PinMotionDesc pin_motion;              // none by default: pinned nodes stay where they are
+  PinMotionDesc pin_motion;   // none by default: pinned nodes stay where they are
   Vec3 initial_velocity = Vec3::Zero();  // m/s
   std::vector<VelocityGroupDesc> velocity_groups;
   BendingPairs bending_pairs = BendingPairs::kMostCollinear;
