@@ -91,18 +91,32 @@ inline CommandResult run_command(const std::string& command) {
   return result;
 }
 
+// The argument vector of dinam with `arguments`: the strings and the null-terminated pointers
+// into them, for posix_spawn. It stays where it was made, so the pointers stay valid.
+class DinamArgv {
+ public:
+  explicit DinamArgv(const std::vector<std::string>& arguments) : strings_{DINAM_PROGRAM} {
+    strings_.insert(strings_.end(), arguments.begin(), arguments.end());
+    for (std::string& s : strings_) {
+      pointers_.push_back(s.data());
+    }
+    pointers_.push_back(nullptr);
+  }
+  DinamArgv(const DinamArgv&) = delete;
+  DinamArgv& operator=(const DinamArgv&) = delete;
+  char* const* data() const { return pointers_.data(); }
+
+ private:
+  std::vector<std::string> strings_;
+  std::vector<char*> pointers_;
+};
+
 // Runs dinam with `arguments`, each passed as it is (no shell: names with spaces, quotes or a
 // leading dash arrive unchanged), with `environment` entries ("NAME=value") added, and collects
 // what it prints on both streams.
 inline CommandResult run_dinam(const std::vector<std::string>& arguments,
                                const std::vector<std::string>& environment = {}) {
-  std::vector<std::string> all = {DINAM_PROGRAM};
-  all.insert(all.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (std::string& a : all) {
-    argv.push_back(a.data());
-  }
-  argv.push_back(nullptr);
+  const DinamArgv argv(arguments);
   std::vector<std::string> env_text(environment);
   for (char** e = environ; *e != nullptr; ++e) {
     env_text.emplace_back(*e);

@@ -54,13 +54,7 @@ struct Stopped {
 Stopped stop_while_running(const std::vector<std::string>& arguments, int signal,
                            const std::filesystem::path& folder,
                            const std::function<bool(const std::filesystem::path&)>& started) {
-  std::vector<std::string> all = {DINAM_PROGRAM};
-  all.insert(all.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (const std::string& a : all) {
-    argv.push_back(const_cast<char*>(a.c_str()));
-  }
-  argv.push_back(nullptr);
+  const test::DinamArgv argv(arguments);
   const std::filesystem::path log = folder.parent_path() / (folder.filename().string() + ".log");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);

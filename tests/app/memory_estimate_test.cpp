@@ -50,13 +50,7 @@ struct PeakRun {
 
 // Runs dinam with `arguments` (output to /dev/null) and reads its peak resident memory.
 PeakRun run_measured(const std::vector<std::string>& arguments) {
-  std::vector<std::string> all = {DINAM_PROGRAM};
-  all.insert(all.end(), arguments.begin(), arguments.end());
-  std::vector<char*> argv;
-  for (const std::string& a : all) {
-    argv.push_back(const_cast<char*>(a.c_str()));
-  }
-  argv.push_back(nullptr);
+  const test::DinamArgv argv(arguments);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);

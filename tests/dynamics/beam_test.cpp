@@ -111,6 +111,23 @@ TEST(Cantilever, FirstFrequencyConvergesToEulerBernoulli) {
               errors[2]);
 }
 
+// The beam above as a polyline of `segments` bars along +x, built in at its first vertex by one
+// clamped pinned node; `parts` (YAML, indented as a key of the object) may add materials.
+std::string clamped_beam_yaml(int segments, const std::string& parts = "") {
+  return fmt::format(R"(version: 1
+duration: 1
+gravity: [0, 0, 0]
+ground: {{contact: false}}
+objects:
+  - name: beam
+    mesh: {{polyline: {{points: [[0, 0, 0], [{}, 0, 0]], segments: {}}}}}
+    material: {{density: {}, youngs_modulus: {}, area: {}, area_moment: {}, polar_moment: {}}}
+{}    pinned: {{indices: [0], clamped: true}}
+    torsion: false
+)",
+                     kLength, segments, kDensity, kE, kArea, kInertia, 2 * kInertia, parts);
+}
+
 // A cantilever built in at one clamped pinned node (docs/scene-format.md, 'clamped'): its natural
 // frequencies from a dense eigen-solve of the model's own stiffness converge to Euler–Bernoulli's
 // at second order, (β₁L, β₂L) = (1.8751, 4.6941). The lumped model with the ghost-node clamp is the
@@ -123,19 +140,7 @@ TEST(Cantilever, ClampedEndConvergesAtSecondOrder) {
   const int refinements[3] = {20, 40, 80};
   for (int r = 0; r < 3; ++r) {
     const int segments = refinements[r];
-    const Model model = build_model(test::scene_from_yaml(fmt::format(
-        R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-ground: {{contact: false}}
-objects:
-  - name: beam
-    mesh: {{polyline: {{points: [[0, 0, 0], [{}, 0, 0]], segments: {}}}}}
-    material: {{density: {}, youngs_modulus: {}, area: {}, area_moment: {}, polar_moment: {}}}
-    pinned: {{indices: [0], clamped: true}}
-    torsion: false
-)",
-        kLength, segments, kDensity, kE, kArea, kInertia, 2 * kInertia)));
+    const Model model = build_model(test::scene_from_yaml(clamped_beam_yaml(segments)));
     ASSERT_EQ(model.clamp_count(), 1);
     const Eigen::VectorXd omega = test::natural_frequencies(model);
     // The automatic step's bound covers the clamp's stiffness too.
@@ -168,23 +173,12 @@ TEST(MaterialParts, TwoMaterialCantileverFollowsTheSteppedBeam) {
   const int segments = 40;
   const double e2 = kE / 5.0;
   const double half = kLength / 2.0;
-  const Model model = build_model(test::scene_from_yaml(fmt::format(
-      R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-ground: {{contact: false}}
-objects:
-  - name: beam
-    mesh: {{polyline: {{points: [[0, 0, 0], [{}, 0, 0]], segments: {}}}}}
-    material: {{density: {}, youngs_modulus: {}, area: {}, area_moment: {}, polar_moment: {}}}
-    parts:
-      - nodes: {{box: {{min: [{}, -1, -1], max: [2, 1, 1]}}}}
-        material: {{density: {}, youngs_modulus: {}, area: {}, area_moment: {}, polar_moment: {}}}
-    pinned: {{indices: [0], clamped: true}}
-    torsion: false
-)",
-      kLength, segments, kDensity, kE, kArea, kInertia, 2 * kInertia, half, kDensity / 10, e2,
-      kArea, kInertia, 2 * kInertia)));
+  const Model model = build_model(test::scene_from_yaml(clamped_beam_yaml(
+      segments, fmt::format("    parts:\n"
+                            "      - nodes: {{box: {{min: [{}, -1, -1], max: [2, 1, 1]}}}}\n"
+                            "        material: {{density: {}, youngs_modulus: {}, area: {}, "
+                            "area_moment: {}, polar_moment: {}}}\n",
+                            half, kDensity / 10, e2, kArea, kInertia, 2 * kInertia))));
   EXPECT_NEAR(model.total_mass(), kDensity * kArea * half * (1.0 + 0.1), 1e-12);
 
   const test::FreeDofs dofs = test::free_dofs(model);
