@@ -27,17 +27,13 @@ constexpr double kEI = kE * kInertia;
 // Euler–Bernoulli first cantilever frequency, (β₁L)² √(EI / (ρ A L⁴)) with β₁L = 1.8751.
 const double kOmega1 = 1.8751 * 1.8751 * std::sqrt(kEI / (kDensity * kArea)) / (kLength * kLength);
 
-// A cantilever along +x from the origin in `segments` bars. The clamp is two pinned nodes: the
-// root and one a thousandth of a segment behind it, so the root's bending spring spans half a
-// segment of beam as a clamped end should (k = 2EI / (ε + h) → 2EI / h).
-// Node ids: 0 behind, 1 root, segments + 1 tip. `extra` is appended to the object.
-std::string cantilever_yaml(int segments, const std::string& extra, const std::string& scene) {
-  const double h = kLength / segments;
-  std::string points = fmt::format("[[{}, 0, 0]", -1e-3 * h);
-  for (int k = 0; k <= segments; ++k) {
-    points += fmt::format(", [{}, 0, 0]", k * h);
-  }
-  points += "]";
+// The beam as a scene: `mesh` its mesh map, `pinned` its pinned map; `material_extra` goes at the
+// end of the material map (", yield_stress: …"), `object_keys` are further keys of the object
+// (whole YAML lines, indented) and `scene_keys` further top-level keys.
+std::string beam_scene_yaml(const std::string& mesh, const std::string& pinned,
+                            const std::string& material_extra = "",
+                            const std::string& object_keys = "",
+                            const std::string& scene_keys = "") {
   return fmt::format(R"(version: 1
 duration: 1
 gravity: [0, 0, 0]
@@ -45,12 +41,28 @@ ground: {{contact: false}}
 {}
 objects:
   - name: beam
-    mesh: {{polyline: {{points: {}}}}}
+    mesh: {}
     material: {{density: {}, youngs_modulus: {}, area: {}, area_moment: {}, polar_moment: {} {}}}
-    pinned: {{indices: [0, 1]}}
+{}    pinned: {}
     torsion: false
 )",
-                     scene, points, kDensity, kE, kArea, kInertia, 2 * kInertia, extra);
+                     scene_keys, mesh, kDensity, kE, kArea, kInertia, 2 * kInertia, material_extra,
+                     object_keys, pinned);
+}
+
+// A cantilever along +x from the origin in `segments` bars. The clamp is two pinned nodes: the
+// root and one a thousandth of a segment behind it, so the root's bending spring spans half a
+// segment of beam as a clamped end should (k = 2EI / (ε + h) → 2EI / h).
+// Node ids: 0 behind, 1 root, segments + 1 tip. `extra` is appended to the material.
+std::string cantilever_yaml(int segments, const std::string& extra, const std::string& scene) {
+  const double h = kLength / segments;
+  std::string points = fmt::format("[[{}, 0, 0]", -1e-3 * h);
+  for (int k = 0; k <= segments; ++k) {
+    points += fmt::format(", [{}, 0, 0]", k * h);
+  }
+  points += "]";
+  return beam_scene_yaml(fmt::format("{{polyline: {{points: {}}}}}", points), "{indices: [0, 1]}",
+                         extra, "", scene);
 }
 
 // Runs the model for `duration` at its automatic step, calling `watch(state)` after each step.
@@ -111,21 +123,13 @@ TEST(Cantilever, FirstFrequencyConvergesToEulerBernoulli) {
               errors[2]);
 }
 
-// The beam above as a polyline of `segments` bars along +x, built in at its first vertex by one
+// The beam as a polyline of `segments` bars along +x, built in at its first vertex by one
 // clamped pinned node; `parts` (YAML, indented as a key of the object) may add materials.
 std::string clamped_beam_yaml(int segments, const std::string& parts = "") {
-  return fmt::format(R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-ground: {{contact: false}}
-objects:
-  - name: beam
-    mesh: {{polyline: {{points: [[0, 0, 0], [{}, 0, 0]], segments: {}}}}}
-    material: {{density: {}, youngs_modulus: {}, area: {}, area_moment: {}, polar_moment: {}}}
-{}    pinned: {{indices: [0], clamped: true}}
-    torsion: false
-)",
-                     kLength, segments, kDensity, kE, kArea, kInertia, 2 * kInertia, parts);
+  return beam_scene_yaml(
+      fmt::format("{{polyline: {{points: [[0, 0, 0], [{}, 0, 0]], segments: {}}}}}", kLength,
+                  segments),
+      "{indices: [0], clamped: true}", "", parts);
 }
 
 // A cantilever built in at one clamped pinned node (docs/scene-format.md, 'clamped'): its natural
