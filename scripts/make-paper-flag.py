@@ -10,6 +10,11 @@ gives 192 nodes and 521 edges. The ropes are line elements:
     to a cleat on the pole (14 edges), and its loose end hanging from the cleat (11 edges).
 That is 192 + 25 + 28 = 245 nodes and 521 + 30 + 28 = 579 edges; the script checks both.
 
+The cloth bows 1 cm out of its plane (a sine across its length), as a real flag never hangs
+perfectly flat. A flat cloth hanging in its own plane is a symmetric problem: when it buckles
+under its own weight, the side it folds to is decided by rounding, so its settled shape would
+change with the last bits of a sum; the bow decides it instead.
+
 glTF is y-up, so the file holds (x, z, -y) of dinam's z-up world; scenes turn it upright with
 `rotation: [90, 0, 0]`. The pole's axis is the world z axis, and every node to be pinned lies
 within 0.032 m of it in x and y; no other node does.
@@ -28,13 +33,15 @@ TIE_ROWS = (0, 3, 6, 8, 11)             # hoist nodes with a tie around the pole
 RING = 0.03                             # radius of a tie's loop around the pole, m
 POLE_TOP, CLEAT_Z, CLEAT_X = 4.0, 1.2, 0.03
 TAIL_SEGMENTS, TAIL_X = 11, 0.06
+CAMBER = 0.01                           # the cloth's bow out of its plane, m (see below)
 
 # --- the cloth: vertices (x, z) in its plane y = 0, u along the flag, v down from the top
 cloth = []
 uvs = []
 for j in range(ROWS + 1):
     for i in range(COLUMNS + 1):
-        cloth.append((HOIST_X + CELL * i, 0.0, BOTTOM_Z + CELL * j))
+        cloth.append((HOIST_X + CELL * i, CAMBER * math.sin(math.pi * i / COLUMNS),
+                      BOTTOM_Z + CELL * j))
         uvs.append((i / COLUMNS, 1.0 - j / ROWS))
 
 

@@ -190,6 +190,10 @@ int run_render(const RenderOptions& options) {
     movie_note = fmt::format(", movie {}", movie_path.string());
   }
   if (!options.quiet) {
+    if (const std::string settled = settle_summary(frames.settled, timestep ? timestep->dt : 0.0);
+        !settled.empty()) {
+      fmt::print("dinam: {}\n", settled);
+    }
     fmt::print("dinam: {} frames in {}{} ({:.1f} s: {} {:.2f} s, draw and write {:.2f} s)\n",
                range.count(), folder.string(), movie_note, seconds_since(start),
                cache ? "read the cache" : "simulate", frames.seconds, draw_seconds);

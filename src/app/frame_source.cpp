@@ -34,6 +34,9 @@ SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, in
   frames.positions.resize(static_cast<std::size_t>(last));
   run_dynamics(model, timestep, last, track_energy, [&](int frame, const State& state) {
     positions_for_render(state.x, frames.positions[static_cast<std::size_t>(frame - 1)]);
+    if (frame == 1) {
+      frames.settled = state.settled;
+    }
     if (on_frame) {
       on_frame(frame, state);
     }
@@ -41,6 +44,16 @@ SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, in
   frames.motion = motion_bounds(frames.positions);
   frames.seconds = seconds_since(start);
   return frames;
+}
+
+std::string settle_summary(const SettleOutcome& settled, double dt) {
+  if (!settled.ran) {
+    return "";
+  }
+  return fmt::format(
+      "settled under gravity in {:g} s ({} steps, {} restarts from rest): the largest "
+      "out-of-balance force is {:.2g} of a node's weight",
+      static_cast<double>(settled.steps) * dt, settled.steps, settled.restarts, settled.residual);
 }
 
 SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {

@@ -26,6 +26,7 @@ struct SimulatedFrames {
   std::vector<std::vector<Vec3f>> positions;  // (frames held) × (n_nodes)
   Bounds motion;                              // every position of every frame of the motion
   double seconds = 0.0;                       // wall time spent simulating or reading
+  SettleOutcome settled;                      // how the settling phase ended (simulated only)
 
   int last_frame() const { return first_frame + static_cast<int>(positions.size()) - 1; }
   const std::vector<Vec3f>& at(int frame) const {
@@ -43,6 +44,9 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
 SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, int last,
                                 bool track_energy,
                                 const std::function<void(int, const State&)>& on_frame = {});
+
+// One line on how the settling phase ended, for the log: "" when there was none.
+std::string settle_summary(const SettleOutcome& settled, double dt);
 
 // Frames first … last from a cache, with the bounds of its whole motion.
 SimulatedFrames cached_frames(const MotionCache& cache, int first, int last);

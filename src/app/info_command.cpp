@@ -29,8 +29,9 @@ MemoryFigures memory_figures(const SceneDescription& scene, const Model& model) 
 
 long long steps_in_all(const SceneDescription& scene, const Model& model,
                        const TimeStep& timestep) {
-  return static_cast<long long>(scene.frame_count()) * timestep.steps_per_frame +
-         std::llround(model.settle.duration / timestep.dt);
+  const long long settling =
+      model.settle.enabled ? std::llround(model.settle.duration / timestep.dt) : 0;
+  return static_cast<long long>(scene.frame_count()) * timestep.steps_per_frame + settling;
 }
 
 void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
@@ -57,7 +58,8 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"fps", scene.fps},
       {"frame_count", scene.frame_count()},
       {"duration_s", scene.duration},
-      {"settle_s", model.settle.duration},
+      {"settle_s", model.settle.enabled ? model.settle.duration : 0.0},
+      {"settle_residual", model.settle.enabled ? model.settle.residual : 0.0},
       {"steps", steps_in_all(scene, model, timestep)},
       {"memory_render_bytes", memory.render.peak()},
       {"memory_simulate_bytes", memory.simulate.peak()},
@@ -95,11 +97,15 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
              (frames - 1) / scene.fps);
   fmt::print("steps            {} over the {:g} s duration ({} up to the last frame)\n",
              steps_to_last_frame + timestep.steps_per_frame, scene.duration, steps_to_last_frame);
-  if (model.settle.duration > 0.0) {
-    fmt::print("settling         {:g} s before t = 0 ({} steps), under gravity alone\n",
-               model.settle.duration, std::llround(model.settle.duration / timestep.dt));
+  if (model.settle.enabled) {
+    fmt::print(
+        "settling         before t = 0 under gravity alone, until the out-of-balance force on "
+        "every node is below {:g} of its weight; at most {:g} s ({} steps)\n",
+        model.settle.residual, model.settle.duration,
+        std::llround(model.settle.duration / timestep.dt));
   }
-  fmt::print("steps in all     {}\n", steps_in_all(scene, model, timestep));
+  fmt::print("steps in all     {}{}\n", steps_in_all(scene, model, timestep),
+             model.settle.enabled ? " at most (settling stops once it has converged)" : "");
   const MemoryFigures memory = memory_figures(scene, model);
   fmt::print("memory, render   about {} at {}×{}\n", memory.render.summary(), scene.image_width,
              scene.image_height);

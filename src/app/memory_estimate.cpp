@@ -203,7 +203,7 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
   estimate.scene = scene_bytes(scene);
   estimate.model = model_bytes(model);
   estimate.dynamics = state_bytes(model, use.energy);
-  if (model.settle.duration > 0.0) {
+  if (model.settle.enabled) {
     // settle.cpp relaxes a copy of the model (no driving forces) with a state of its own.
     estimate.dynamics += estimate.model + state_bytes(model, false);
   }

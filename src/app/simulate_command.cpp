@@ -60,6 +60,7 @@ int run_simulate(const SimulateOptions& options) {
                         available_memory(), options.force);
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
+  SettleOutcome settled;
 
   // A cache that cannot be written whole (a full disk) leaves nothing: the writer removes its
   // temporary folder, and an older cache stays as it was.
@@ -78,6 +79,9 @@ int run_simulate(const SimulateOptions& options) {
                    [&](int frame, const State& state) {
                      stop_if_asked();
                      positions_for_render(state.x, positions);
+                     if (frame == 1) {
+                       settled = state.settled;
+                     }
                      writer.add_frame(positions);
                      if (energy_csv) {
                        const EnergyReport& report = state.energy_workspace.last;
@@ -113,6 +117,9 @@ int run_simulate(const SimulateOptions& options) {
                     e.what(), request.folder.string()));
   }
   if (!options.quiet) {
+    if (const std::string line = settle_summary(settled, timestep.dt); !line.empty()) {
+      fmt::print("dinam: {}\n", line);
+    }
     fmt::print("dinam: motion cache of {} frames in {} ({} objects, {}; {:.2f} s)\n",
                request.frame_count, request.folder.string(), model.objects.size(),
                request.pc2 && request.mdd ? "PC2 and MDD"

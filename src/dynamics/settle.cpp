@@ -1,38 +1,104 @@
 #include "dynamics/settle.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <tuple>
 
+#include "core/error.hpp"
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
+namespace {
 
-void relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
-                              std::int64_t steps, State& state) {
-  // The motion runs on, and whenever the kinetic energy has passed a peak every velocity is
-  // zeroed. Each reset removes energy near a point of lowest potential, so the structure walks
-  // down to a static equilibrium; unlike viscous damping it also settles the soft, slow modes (a
-  // hanging cloth's folds) in a few of their periods.
-  double previous_kinetic = 0.0;
-  for (std::int64_t s = 0; s < steps; ++s) {
-    step(model, dt, switches, state);
-    double kinetic = 0.0;
-    for (Index i = 0; i < model.node_count(); ++i) {
-      kinetic += model.node_mass[i] * state.v_half[i].squaredNorm();
+constexpr double kStandardGravity = 9.80665;  // m/s², the weight scale where the model has none
+
+// Steps between residual checks while no kinetic-energy peak comes (a slow, steady creep); the
+// last step is always checked.
+constexpr std::int64_t kCheckInterval = 1000;
+
+double kinetic_measure(const Model& model, const State& state) {
+  double sum = 0.0;  // Σ m v², serial: the restarts must not depend on the thread count
+  for (Index i = 0; i < model.node_count(); ++i) {
+    sum += model.node_mass[i] * state.v_half[i].squaredNorm();
+  }
+  return sum;
+}
+
+// The static forces at the present positions (velocities zero: no damping or drag) into
+// state.force, leaving plastic sets and contact anchors as they are.
+void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state) {
+  for (Vec3& v : state.v_half) {
+    v.setZero();
+  }
+  compute_forces(model, switches, state, false);
+}
+
+}  // namespace
+
+std::pair<double, Index> relative_residual(const Model& model, const State& state) {
+  const double g = model.gravity.norm() > 0.0 ? model.gravity.norm() : kStandardGravity;
+  double largest = 0.0;
+  Index worst = -1;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (model.pinned(i)) {
+      continue;
     }
-    if (kinetic < previous_kinetic) {
-      for (Index i = 0; i < model.node_count(); ++i) {
-        state.v_half[i].setZero();
+    const double r = state.force[i].norm() / (model.node_mass[i] * g);
+    if (!(r <= largest)) {  // NaN counts as the worst
+      largest = r;
+      worst = i;
+    }
+  }
+  return {largest, worst};
+}
+
+SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
+                                       std::int64_t max_steps, double residual, State& state) {
+  SettleOutcome outcome;
+  outcome.ran = true;
+  outcome.residual = std::numeric_limits<double>::infinity();
+  std::vector<Vec3> held_velocities;
+  double previous_kinetic = 0.0;
+  std::int64_t last_check = 0;
+  for (std::int64_t s = 1; s <= max_steps; ++s) {
+    step(model, dt, switches, state);
+    outcome.steps = s;
+    double kinetic = kinetic_measure(model, state);
+    const bool peak = kinetic < previous_kinetic;
+    if (peak || s - last_check >= kCheckInterval || s == max_steps) {
+      if (!peak) {
+        held_velocities = state.v_half;
       }
-      kinetic = 0.0;
+      compute_static_forces(model, switches, state);
+      std::tie(outcome.residual, outcome.worst_node) = relative_residual(model, state);
+      last_check = s;
+      if (residual > 0.0 && outcome.residual <= residual) {
+        break;
+      }
+      if (peak) {
+        // Restart from rest at x: leapfrog starts from rest with v_{½} = ½ Δt a, so
+        // v_{−½} = −½ Δt a. Zeroing v_{−½} instead would start every restart with a kick of
+        // ½ Δt a, which feeds the stiffest modes at each of the frequent restarts near
+        // convergence until they blow up (the paper's flag did, at 0.5 ms).
+        outcome.restarts += 1;
+        for (Index i = 0; i < model.node_count(); ++i) {
+          state.v_half[i] = (-0.5 * dt * model.node_inv_mass[i]) * state.force[i];
+        }
+        kinetic = 0.0;
+      } else {
+        state.v_half = held_velocities;
+      }
     }
     previous_kinetic = kinetic;
   }
+  return outcome;
 }
 
 void settle_under_gravity(const Model& model, double dt, const ForceSwitches& switches,
                           State& state) {
-  if (model.settle.duration <= 0.0) {
+  if (!model.settle.enabled) {
     return;
   }
   // The same structure at rest with nothing but gravity and the ground acting. A copy is made once
@@ -49,9 +115,23 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
   quiet.node_initial_x = state.x;
 
   State settling = initial_state(quiet, dt, switches, false);
-  relax_by_kinetic_damping(quiet, dt, switches,
-                           static_cast<std::int64_t>(std::llround(model.settle.duration / dt)),
-                           settling);
+  const auto max_steps = std::max<std::int64_t>(1, std::llround(model.settle.duration / dt));
+  state.settled =
+      relax_by_kinetic_damping(quiet, dt, switches, max_steps, model.settle.residual, settling);
+  const SettleOutcome& outcome = state.settled;
+  if (!(outcome.residual <= model.settle.residual)) {
+    const Index node = outcome.worst_node;
+    const ModelObject& object = model.objects[model.node_object[node]];
+    throw_user_error(
+        model.settle.loc,
+        "the settling phase did not come to rest within its {:g} s ({} steps): the largest "
+        "out-of-balance force is still {:.3g} of a node's weight (node {} of object '{}'), above "
+        "'settle.residual' {:g}. Give 'settle.duration' more time or 'settle.residual' a larger "
+        "value; if it never settles, part of the structure can move without resisting (a "
+        "mechanism, a node with too few bars) or the time step is too long for it",
+        model.settle.duration, max_steps, outcome.residual, node - object.first_node, object.name,
+        model.settle.residual);
+  }
   state.x = std::move(settling.x);
   state.bar_plastic_set = std::move(settling.bar_plastic_set);
   state.bend_plastic_set = std::move(settling.bend_plastic_set);

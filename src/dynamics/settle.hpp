@@ -1,8 +1,8 @@
 #pragma once
 // The settling phase before t = 0 (SettlePhase): the structure hangs or rests under gravity alone
-// until its motion has died away, and the shape it reaches becomes the start of the shown motion.
-// Fields, wind and initial velocities wait until t = 0; plastic sets and ground contact history
-// carry over, so a structure that yields under its own weight keeps that set.
+// until it is in static equilibrium, and the shape it reaches becomes the start of the shown
+// motion. Fields, wind and initial velocities wait until t = 0; plastic sets and ground contact
+// history carry over, so a structure that yields under its own weight keeps that set.
 #include <cstdint>
 
 #include "dynamics/state.hpp"
@@ -12,14 +12,23 @@ namespace dinam {
 struct Model;
 struct ForceSwitches;
 
-// Dynamic relaxation: `steps` steps from `state`, with every velocity zeroed whenever the kinetic
-// energy passes a peak, which walks the structure down to a static equilibrium of the forces that
-// `switches` leave on (plastic sets and contact history evolve as in any step).
-void relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
-                              std::int64_t steps, State& state);
+// The largest out-of-balance force on a free node relative to that node's weight m |g| (standard
+// gravity where the model has none), from the forces in state.force, and the node it is on.
+std::pair<double, Index> relative_residual(const Model& model, const State& state);
 
-// Runs the phase from `state` (at the mesh positions, at rest) for model.settle.duration with
-// steps of dt, leaving positions and histories in `state`. Does nothing without a phase.
+// Dynamic relaxation by kinetic damping: from `state`, at most `max_steps` steps; whenever the
+// kinetic energy has passed a peak, the motion restarts from rest where it is. Each restart
+// removes the energy near a point of lowest potential, so the structure walks down to a static
+// equilibrium of the forces that `switches` leave on (plastic sets and contact history evolve as
+// in any step). Stops at the first restart whose out-of-balance force is at most `residual` of the
+// weight (0: never, run all the steps); positions and histories are left in `state`.
+SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
+                                       std::int64_t max_steps, double residual, State& state);
+
+// Runs the phase from `state` (at the mesh positions, at rest) with steps of dt until it reaches
+// model.settle.residual, leaving positions and histories in `state` and the outcome in
+// state.settled. Does nothing without a phase. Throws UserError at the scene's `settle` when it
+// has not converged within model.settle.duration.
 void settle_under_gravity(const Model& model, double dt, const ForceSwitches& switches,
                           State& state);
 

@@ -40,9 +40,13 @@ struct PinMotion {
   TimeProfile profile;
 };
 
-// The settling phase before t = 0 (SettleDesc): gravity alone, by kinetic damping.
+// The settling phase before t = 0 (SettleDesc): gravity alone, by kinetic damping, until the
+// out-of-balance force on every free node is below `residual` of its weight.
 struct SettlePhase {
-  double duration = 0.0;  // s; 0 for none
+  bool enabled = false;
+  double duration = 0.0;  // s, the longest it may take
+  double residual = 0.0;  // of each node's weight
+  FileLoc loc;            // of the scene's `settle`, for the message when it does not converge
 };
 
 // The ground as the dynamics sees it: a rigid half-space with penalty contact and friction.

@@ -346,7 +346,8 @@ Model build_model(const SceneDescription& scene) {
   Model model;
   model.gravity = scene.gravity;
   model.global_damping = scene.global_damping;
-  model.settle.duration = scene.settle.duration;
+  model.settle = {scene.settle.enabled, scene.settle.duration, scene.settle.residual,
+                  scene.settle.loc};
   model.face_offsets.push_back(0);
   std::vector<ObjectNodes> objects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {

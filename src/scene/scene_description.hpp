@@ -195,7 +195,9 @@ struct GroundDesc {
 // wind, no initial velocities, by kinetic damping); its final shape is the start of the shown
 // motion. The paper's flag begins this way.
 struct SettleDesc {
-  double duration = 0.0;  // s; 0: no settling, the motion starts from the meshes as given
+  bool enabled = false;      // false: no settling, the motion starts from the meshes as given
+  double duration = 60.0;    // s, the longest the phase may take to reach `residual`
+  double residual = 1.0e-6;  // largest out-of-balance force on a free node / that node's weight
   FileLoc loc;
 };
 

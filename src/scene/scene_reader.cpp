@@ -305,9 +305,16 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
   }
   if (map.has("settle")) {
     YamlMap settle(map.get("settle"), file, "settle");
+    scene.settle.enabled = true;
     scene.settle.loc = settle.loc();
-    scene.settle.duration = settle.required_number("duration");
+    scene.settle.duration = settle.number("duration", scene.settle.duration);
     require_positive(scene.settle.duration, settle.loc("duration"), "settle.duration", "s");
+    scene.settle.residual = settle.number("residual", scene.settle.residual);
+    if (!(scene.settle.residual >= 1e-12 && scene.settle.residual <= 0.1)) {
+      throw_user_error(settle.loc("residual"),
+                       "'settle.residual' must be from 1e-12 to 0.1 (the largest out-of-balance "
+                       "force on a node as a fraction of its weight); 1e-6 is the default");
+    }
     settle.finish();
   }
 

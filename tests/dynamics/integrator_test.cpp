@@ -213,13 +213,15 @@ TEST(Integrator, ShakenSupportDrivesTheSpringMassAsTheClosedFormSays) {
 }
 
 // Settling: a mass hanging on a spring comes to rest at its static extension m g / k (4.905 mm)
-// before t = 0. Kinetic damping leaves a residue far below a micrometre; 1e-3 of the extension
-// is the bound. The sideways field waits for t = 0, so the mass has not moved sideways.
+// before t = 0. It stops once the out-of-balance force is at most 1e-8 of the weight; on a linear
+// spring that force is k times the error, so the error is at most 1e-8 of the extension (with a
+// hundredth of that for rounding). The sideways field waits for t = 0, so the mass has not moved
+// sideways.
 TEST(Integrator, SettlingHangsTheSpringMassAtItsStaticExtension) {
   const Model model = build_model(test::scene_from_yaml(R"(version: 1
 duration: 1
 gravity: [0, 0, -9.81]
-settle: {duration: 1.0}
+settle: {duration: 1.0, residual: 1.0e-8}
 forces: [{acceleration: [5, 0, 0]}]
 objects:
   - mesh: {polyline: {points: [[0, 0, 2], [0, 0, 1]]}}
@@ -229,7 +231,10 @@ objects:
   const double dt = 2.0 * std::numbers::pi / kSpringOmega / 400.0;
   const State state = initial_state(model, dt);
   const double extension = 0.05 * 9.81 / 100.0;
-  EXPECT_NEAR(state.x[1].z(), 1.0 - extension, 1e-3 * extension);
+  EXPECT_NEAR(state.x[1].z(), 1.0 - extension, 1.01e-8 * extension);
+  EXPECT_TRUE(state.settled.ran);
+  EXPECT_LE(state.settled.residual, 1e-8);
+  EXPECT_LT(state.settled.steps, std::llround(1.0 / dt));  // it stopped once converged
   EXPECT_EQ(state.x[1].x(), 0.0);
   EXPECT_EQ(state.time, 0.0);
   EXPECT_EQ(state.step, 0);
