@@ -51,9 +51,10 @@ std::string settle_summary(const SettleOutcome& settled, double dt) {
     return "";
   }
   return fmt::format(
-      "settled under gravity in {:g} s ({} steps, {} restarts from rest): the largest "
-      "out-of-balance force is {:.2g} of a node's weight",
-      static_cast<double>(settled.steps) * dt, settled.steps, settled.restarts, settled.residual);
+      "settled under gravity in {:g} s ({} steps: {} overdamped, then {} of kinetic damping with "
+      "{} restarts from rest); the largest out-of-balance force is {:.2g} of a node's weight",
+      static_cast<double>(settled.steps) * dt, settled.steps, settled.viscous_steps,
+      settled.steps - settled.viscous_steps, settled.restarts, settled.residual);
 }
 
 SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {

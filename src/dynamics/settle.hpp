@@ -25,7 +25,21 @@ std::pair<double, Index> relative_residual(const Model& model, const State& stat
 SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
                                        std::int64_t max_steps, double residual, State& state);
 
-// Runs the phase from `state` (at the mesh positions, at rest) with steps of dt until it reaches
+// The viscous damping of the settling phase's first stage when the scene leaves it to dinam:
+// α = 8 √(g / D), D the size (bounding-box diagonal) of the free nodes, four times critical for
+// the slowest swing of the whole structure (ω ≈ √(g / D)), so that it creeps down instead.
+double automatic_settle_damping(const Model& model);
+
+// Viscous dynamic relaxation: at most `max_steps` steps of the model with global damping
+// `damping` (1/s) instead of its own, until the out-of-balance force is at most `handover` of
+// the weight (checked every 100 steps). Returns the steps taken; the residual is in `outcome`.
+std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches& switches,
+                             double damping, std::int64_t max_steps, double handover, State& state,
+                             SettleOutcome& outcome);
+
+// Runs the phase from `state` (at the mesh positions, at rest) with steps of dt: overdamped
+// viscous relaxation (model.settle.damping, automatic_settle_damping when empty; 0 skips it) until
+// every node carries 90 % of its weight, then kinetic damping until it reaches
 // model.settle.residual, leaving positions and histories in `state` and the outcome in
 // state.settled. Does nothing without a phase. Throws UserError at the scene's `settle` when it
 // has not converged within model.settle.duration.

@@ -63,10 +63,11 @@ struct EnergyWorkspace {
 // How the settling phase before t = 0 ended (settle.hpp); `ran` is false without one.
 struct SettleOutcome {
   bool ran = false;
-  std::int64_t steps = 0;  // steps taken until it converged
-  double residual = 0.0;   // largest out-of-balance force on a free node / that node's weight
-  Index worst_node = -1;   // the node with that force
-  int restarts = 0;        // kinetic-energy peaks, each a restart from rest
+  std::int64_t steps = 0;          // steps taken until it converged, in all
+  std::int64_t viscous_steps = 0;  // of which overdamped, before kinetic damping
+  double residual = 0.0;  // largest out-of-balance force on a free node / that node's weight
+  Index worst_node = -1;  // the node with that force
+  int restarts = 0;       // kinetic-energy peaks, each a restart from rest
 };
 
 // Leapfrog state at step n: positions at whole steps, velocities at half steps.

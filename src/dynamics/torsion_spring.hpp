@@ -21,27 +21,20 @@ struct TorsionSpringResult {
 };
 
 // A reference bar fixes a plane only while it is out of line with the bar: the twist φ is
-// undefined when a reference is collinear with the bar, and its gradient grows as 1/sin there.
-// So each end's reference is weighted by h(q), q = sin² of its angle with the bar: 1 while
-// q ≥ kTorsionFullWeightSin2 (the sine of kMinReferenceSine, with which references are chosen),
-// 0 below kTorsionNoWeightSin2 (sine 0.1, 5.7°), and a C¹ smoothstep between, so that
-//   E = w · ½ k (φ − φ0 − p)²,   w = h(q_a) h(q_b),
-// is C¹ for any motion, the spring is the paper's wherever its references are good, and its
-// stiffness never exceeds k (the stability bound holds). The force is
+// undefined when a reference is collinear with the bar, and its gradient grows as 1/sin there
+// (|∂φ/∂x_a| = 1/(|b1| sin θa)). So the energy is weighted by the sines squared of both
+// references' angles with the bar, q = sin²θ:
+//   E = w · ½ k (φ − φ0 − p)²,   w = q_a q_b,
+// with k the model's torsion_stiffness, G J / (L0 q_a0 q_b0), so that the spring is the paper's
+// G J / L0 at rest and under any twist about the bar (which leaves q_a and q_b as they are). The
+// weight cancels the 1/sin² of the gradient: the energy is smooth for any motion but a reference
+// exactly in line, where it is still continuously differentiable with zero gradient (the spring
+// vanishes as the reference swings into line), and the spring's stiffness against moving a node,
+// w k |∂φ/∂x_a|² = k_0 q_b / (q_b0 q_a0 |b1|²) with k_0 = G J / L0, never passes its rest value
+// k_0 / (q_a0 |b1|²) by more than the factor 1/q_b0 (1 or 2 for the references of a grid, which
+// are chosen as perpendicular as the mesh allows); the fixed-band fade this replaced let it grow
+// as 1/q_a, 25-fold before the fade began. The force is
 //   f = −w T ∇φ − ½ k e² ∇w,   T = k e flattened at ±Ty/w (so that w T stays within ±Ty).
-inline constexpr double kTorsionFullWeightSin2 = 0.2 * 0.2;
-inline constexpr double kTorsionNoWeightSin2 = 0.1 * 0.1;
-
-// h(q) and dh/dq.
-struct ReferenceWeight {
-  double weight;
-  double slope;
-};
-[[gnu::always_inline]] inline ReferenceWeight reference_weight(double sin2) {
-  constexpr double kPerBand = 1.0 / (kTorsionFullWeightSin2 - kTorsionNoWeightSin2);
-  const double t = std::clamp((sin2 - kTorsionNoWeightSin2) * kPerBand, 0.0, 1.0);
-  return {t * t * (3.0 - 2.0 * t), 6.0 * t * (1.0 - t) * kPerBand};
-}
 
 // q = sin² of the angle between u and v, q = 1 − (u·v)²/(|u|²|v|²), and its gradients
 // ∂q/∂u = (2 u·v / (|u|²|v|²)) ((u·v/|u|²) u − v), ∂q/∂v likewise with u and v swapped.
@@ -81,14 +74,12 @@ struct Sin2Gradient {
   const double b2_squared = dot3(b2, b2);
   const double b2_norm = std::sqrt(b2_squared);
 
-  // The references' weights and the gradient of w = h_a h_b.
+  // The weight w = q_a q_b and its gradient.
   const Sin2Gradient qa = sin2_between(b1, b2);
   const Sin2Gradient qb = sin2_between(b3, b2);
-  const ReferenceWeight ha = reference_weight(qa.sin2);
-  const ReferenceWeight hb = reference_weight(qb.sin2);
-  const double weight = ha.weight * hb.weight;
-  const double wa = ha.slope * hb.weight;  // ∂w/∂q_a
-  const double wb = ha.weight * hb.slope;  // ∂w/∂q_b
+  const double weight = qa.sin2 * qb.sin2;
+  const double wa = qb.sin2;  // ∂w/∂q_a
+  const double wb = qa.sin2;  // ∂w/∂q_b
   // b1 = xi − xa, b2 = xj − xi, b3 = xb − xj.
   const Vec3 dw_a = -wa * qa.d_u;
   const Vec3 dw_i = wa * (qa.d_u - qa.d_v) - wb * qb.d_v;

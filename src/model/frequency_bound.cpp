@@ -68,7 +68,8 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
     sums.add(model, model.clamp_stiffness[s], &a, &norm, 1);
   }
   // Torsion: |∂φ/∂x_a| = 1/(|b1| sin θ1), |∂φ/∂x_b| = 1/(|b3| sin θ2), and the axis nodes'
-  // blocks are combinations of those: |g_i| ≤ (1 + |b1|/|b2|) |g_a| + |b3|/|b2| |g_b|.
+  // blocks are combinations of those: |g_i| ≤ (1 + |b1|/|b2|) |g_a| + |b3|/|b2| |g_b|. The
+  // spring's stiffness in φ is its weight sin²θ1 sin²θ2 times torsion_stiffness.
   for (Index s = 0; s < model.torsion_count(); ++s) {
     const Index* nodes = &model.torsion_nodes[4 * s];
     const Vec3 b1 = x[nodes[1]] - x[nodes[0]];
@@ -79,7 +80,9 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
     const double r1 = b1.norm() / b2.norm();
     const double r3 = b3.norm() / b2.norm();
     const double norms[4] = {ga, (1 + r1) * ga + r3 * gb, (1 + r3) * gb + r1 * ga, gb};
-    sums.add(model, model.torsion_stiffness[s], nodes, norms, 4);
+    const double weight = b1.cross(b2).squaredNorm() / (b1.squaredNorm() * b2.squaredNorm()) *
+                          b2.cross(b3).squaredNorm() / (b3.squaredNorm() * b2.squaredNorm());
+    sums.add(model, weight * model.torsion_stiffness[s], nodes, norms, 4);
   }
   // Contact: the normal and stick penalties act on each node alone.
   if (include_contact && model.ground.enabled) {

@@ -3,6 +3,7 @@
 // changes during a run lives in dynamics' State. Arrays are flat and indexed by element id; each
 // comment gives the shape and the unit.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,9 +45,10 @@ struct PinMotion {
 // out-of-balance force on every free node is below `residual` of its weight.
 struct SettlePhase {
   bool enabled = false;
-  double duration = 0.0;  // s, the longest it may take
-  double residual = 0.0;  // of each node's weight
-  FileLoc loc;            // of the scene's `settle`, for the message when it does not converge
+  double duration = 0.0;          // s, the longest it may take
+  double residual = 0.0;          // of each node's weight
+  std::optional<double> damping;  // 1/s, of the first, viscous stage; empty: automatic
+  FileLoc loc;  // of the scene's `settle`, for the message when it does not converge
 };
 
 // The ground as the dynamics sees it: a rigid half-space with penalty contact and friction.
@@ -94,10 +96,11 @@ struct Model {
   std::vector<double> bend_yield_moment;  // (n_bends) N·m; infinite when elastic
 
   // Torsion springs: on bar i–j, the dihedral angle between the planes (a, i, j) and (i, j, b)
-  // of its reference neighbours i–a and j–b.
+  // of its reference neighbours i–a and j–b, weighted by the sines squared of the references'
+  // angles with the bar, q_a q_b (torsion_spring.hpp).
   std::vector<Index> torsion_nodes;          // (n_torsions × 4) a, i, j, b
   std::vector<double> torsion_rest_angle;    // (n_torsions) rad, in (−π, π]
-  std::vector<double> torsion_stiffness;     // (n_torsions) N·m/rad, G J / L0
+  std::vector<double> torsion_stiffness;     // (n_torsions) N·m/rad, G J / (L0 q_a0 q_b0)
   std::vector<double> torsion_yield_moment;  // (n_torsions) N·m; infinite when elastic
   Index bars_without_torsion = 0;            // bars with no usable reference neighbours
 

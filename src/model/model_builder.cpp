@@ -347,7 +347,7 @@ Model build_model(const SceneDescription& scene) {
   model.gravity = scene.gravity;
   model.global_damping = scene.global_damping;
   model.settle = {scene.settle.enabled, scene.settle.duration, scene.settle.residual,
-                  scene.settle.loc};
+                  scene.settle.damping, scene.settle.loc};
   model.face_offsets.push_back(0);
   std::vector<ObjectNodes> objects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {

@@ -50,7 +50,13 @@ void add_torsion_springs(const BarMaterials& materials, const ModelObject& objec
     model.torsion_rest_angle.push_back(
         dihedral_angle(model.node_initial_x[best_a], model.node_initial_x[i],
                        model.node_initial_x[j], model.node_initial_x[best_b]));
-    model.torsion_stiffness.push_back(gj / model.bar_rest_length[bar]);
+    // Per unit of the weight q_a q_b (torsion_spring.hpp), which is q_a0 q_b0 at rest.
+    const double sine_a =
+        sine_between(model.node_initial_x[best_a] - model.node_initial_x[i], axis);
+    const double sine_b =
+        sine_between(model.node_initial_x[best_b] - model.node_initial_x[j], axis);
+    const double rest_weight = sine_a * sine_a * sine_b * sine_b;
+    model.torsion_stiffness.push_back(gj / model.bar_rest_length[bar] / rest_weight);
     model.torsion_yield_moment.push_back(material.yield_torsion_moment);
   }
 }

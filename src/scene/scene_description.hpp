@@ -198,6 +198,7 @@ struct SettleDesc {
   bool enabled = false;      // false: no settling, the motion starts from the meshes as given
   double duration = 60.0;    // s, the longest the phase may take to reach `residual`
   double residual = 1.0e-6;  // largest out-of-balance force on a free node / that node's weight
+  std::optional<double> damping;  // 1/s, of the first, overdamped stage; empty: automatic
   FileLoc loc;
 };
 

@@ -315,6 +315,14 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
                        "'settle.residual' must be from 1e-12 to 0.1 (the largest out-of-balance "
                        "force on a node as a fraction of its weight); 1e-6 is the default");
     }
+    if (settle.has("damping") && settle.string("damping", "") != "auto") {
+      scene.settle.damping = settle.number("damping", 0.0);
+      if (!(*scene.settle.damping >= 0.0 && *scene.settle.damping <= 1e6)) {
+        throw_user_error(settle.loc("damping"),
+                         "'settle.damping' must be 'auto' or from 0 to 1e6 (1/s, the viscous "
+                         "damping of the first stage; 0 leaves only kinetic damping)");
+      }
+    }
     settle.finish();
   }
 

@@ -151,8 +151,8 @@ TEST(SceneReader, PhysicalModelMistakesAreErrors) {
       {"'flag', which is no object"});
   expect_user_error([&] { scene_from_yaml(base + "settle: {duration: -1}\n"); }, 7,
                     {"'settle.duration' must be greater than zero"});
-  expect_user_error([&] { scene_from_yaml(base + "settle: {duration: 2, damping: 3}\n"); }, 7,
-                    {"damping"});
+  expect_user_error([&] { scene_from_yaml(base + "settle: {duration: 2, damping: -3}\n"); }, 7,
+                    {"'settle.damping' must be 'auto' or from 0"});
   expect_user_error(
       [&] { scene_from_yaml(base + "    pin_motion: {displacement: [0.1, 0, 0]}\n"); }, 7,
       {"has none; add 'pinned'"});
