@@ -26,7 +26,15 @@ void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
     const auto& bars = adjacency[local];
     const Vec3& xc = model.node_initial_x[c];
     std::vector<std::pair<int, int>> chosen;  // indices into `bars`, first < second
-    if (pairs == BendingPairs::kAll) {
+    // A joint where only wires meet is welded: every pair keeps its angle, or the joint would
+    // turn about a member (with three bars in a plane, pairing each with its most collinear
+    // partner leaves a T joint free to fold out of the plane). Where a surface's edges meet, each
+    // bar pairs with its most collinear partner, so a grid bends like crossing beams and does
+    // not resist shear in its plane as a welded grid would.
+    const bool on_surface = std::any_of(bars.begin(), bars.end(), [&](const auto& neighbour) {
+      return model.bar_on_face[neighbour.second] != 0;
+    });
+    if (pairs == BendingPairs::kAll || (pairs == BendingPairs::kAuto && !on_surface)) {
       for (int p = 0; p < static_cast<int>(bars.size()); ++p) {
         for (int q = p + 1; q < static_cast<int>(bars.size()); ++q) {
           chosen.emplace_back(p, q);

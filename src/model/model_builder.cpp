@@ -353,6 +353,7 @@ Model build_model(const SceneDescription& scene) {
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
     objects.push_back(add_object(scene.objects[i], static_cast<Index>(i), model));
   }
+  mark_bars_on_faces(model);  // before the bending springs, which pair bars by it
   for (const ObjectNodes& object : objects) {
     add_object_conditions(object, model);
     const ModelObject& info = model.objects[object.object_id];
@@ -368,7 +369,6 @@ Model build_model(const SceneDescription& scene) {
       model.bars_without_torsion += info.bar_count;
     }
   }
-  mark_bars_on_faces(model);
   add_fields(scene, objects, model);
   add_wind(scene, model);
   add_ground(scene, model);

@@ -323,15 +323,18 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
       object.parts.push_back(std::move(desc));
     }
   }
-  const std::string pairs = map.string("bending_pairs", "collinear");
-  if (pairs == "collinear") {
+  const std::string pairs = map.string("bending_pairs", "auto");
+  if (pairs == "auto") {
+    object.bending_pairs = BendingPairs::kAuto;
+  } else if (pairs == "collinear") {
     object.bending_pairs = BendingPairs::kMostCollinear;
   } else if (pairs == "all") {
     object.bending_pairs = BendingPairs::kAll;
   } else if (pairs == "none") {
     object.bending_pairs = BendingPairs::kNone;
   } else {
-    throw_user_error(map.loc("bending_pairs"), "'{}' must be collinear, all or none; got '{}'",
+    throw_user_error(map.loc("bending_pairs"),
+                     "'{}' must be auto, collinear, all or none; got '{}'",
                      map.path("bending_pairs"), pairs);
   }
   object.torsion = map.boolean("torsion", object.torsion);

@@ -34,6 +34,7 @@ struct MaterialDesc {
 
 // Which pairs of bars meeting at a node get a bending spring.
 enum class BendingPairs {
+  kAuto,           // kAll where only wires meet, kMostCollinear where a surface's edges meet
   kMostCollinear,  // each bar with its most nearly collinear partner (a grid bends like beams)
   kAll,            // every pair
   kNone,
@@ -115,7 +116,7 @@ struct ObjectDesc {
   PinMotionDesc pin_motion;   // none by default: pinned nodes stay where they are
   Vec3 initial_velocity = Vec3::Zero();  // m/s
   std::vector<VelocityGroupDesc> velocity_groups;
-  BendingPairs bending_pairs = BendingPairs::kMostCollinear;
+  BendingPairs bending_pairs = BendingPairs::kAuto;
   bool torsion = true;  // torsion springs wherever a bar has reference neighbours
   AxialDampingDesc axial_damping;
   Vec3f color{0.8f, 0.8f, 0.8f};        // linear RGB in [0, 1]

@@ -441,9 +441,11 @@ TEST(ShippedScenes, DroppedWireChairStaysBent) {
 }
 
 // The shaken tower: its feet follow the table exactly, it never goes below the ground, and driven
-// at its first natural frequency its top sways, relative to the table, by several times the
-// table's own motion, along the direction of shaking. Driven at twice that frequency (the
-// control), far from resonance, the top moves less than the table does.
+// at its resonance (3.65 Hz) its top sways, relative to the table, by several times the table's
+// own motion, along the direction of shaking. Driven at twice that frequency (the control), away
+// from resonance, it sways by less than half as much. (Well above a resonance the top stands
+// nearly still while the table moves, so its sway relative to the table approaches the table's
+// own motion: 1.02 times it here, which is why the control compares with the resonant sway.)
 TEST(ShippedScenes, ShakenTowerResonates) {
   SceneDescription scene = shipped("shaken_tower");
   const PinMotionDesc& shaking = scene.objects[0].pin_motion;
@@ -479,7 +481,7 @@ TEST(ShippedScenes, ShakenTowerResonates) {
   EXPECT_GT(resonant, 2.0 * table);
   EXPECT_LT(sideways, 0.2 * resonant);
   scene.objects[0].pin_motion.profile.frequency *= 2.0;
-  EXPECT_LT(largest_sway(scene, &sideways), table);
+  EXPECT_LT(largest_sway(scene, &sideways), 0.5 * resonant);
 }
 
 }  // namespace

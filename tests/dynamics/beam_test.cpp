@@ -333,15 +333,29 @@ TEST(Cantilever, StandsBelowMyOverLAndCollapsesAboveIt) {
   EXPECT_GT(tip_after_hold(1.05 * collapse), 10.0 * elastic);
 }
 
-// A shaft of one bar between two lever arms; the far lever is turned by a couple T = F r. The
-// twist at rest is φ = T L / (G J). Bending is made very stiff so only torsion gives way.
-TEST(Shaft, TwistIsTorqueTimesLengthOverGJ) {
+// A shaft between two lever arms; the far lever is turned by a couple T = F r. The twist at rest
+// is φ = T L / (G J). Bending is made very stiff so only torsion gives way. The shaft is one bar,
+// or a straight wire cut into four, which has no references inside and gets one spring over its
+// whole length.
+class Shaft : public ::testing::TestWithParam<int> {};
+
+TEST_P(Shaft, TwistIsTorqueTimesLengthOverGJ) {
   test::TemporaryFolder folder("shaft");
   const double length = 1.0;
   const double arm = 0.1;
-  std::ofstream(folder.path() / "shaft.obj") << fmt::format(
-      "v -0.1 0 0\nv 0 0 0\nv {} 0 0\nv 0 {} 0\nv {} {} 0\nl 1 2\nl 2 3\nl 2 4\nl 3 5\n", length,
-      arm, length, arm);
+  const int bars = GetParam();
+  // Vertices 1 and 2: the near lever's tip and the shaft's start; the shaft runs from 2 through
+  // 3 … to its end, the far lever's tip beyond.
+  std::string obj = fmt::format("v -0.1 0 0\nv 0 0 0\nv 0 {} 0\n", arm);
+  for (int k = 1; k <= bars; ++k) {
+    obj += fmt::format("v {} 0 0\n", length * k / bars);
+  }
+  obj += fmt::format("v {} {} 0\nl 1 2\nl 2 3\n", length, arm);
+  for (int k = 0; k < bars; ++k) {
+    obj += fmt::format("l {} {}\n", k == 0 ? 2 : 3 + k, 4 + k);
+  }
+  obj += fmt::format("l {} {}\n", 3 + bars, 4 + bars);
+  std::ofstream(folder.path() / "shaft.obj") << obj;
   const double g = 8.0e10;
   const double j = 1.0e-9;   // GJ = 80 N·m²
   const double force = 8.0;  // T = 0.8 N·m: φ = 0.01 rad
@@ -364,7 +378,8 @@ forces:
       g, j, force, -force, fmt::arg("b", "{min: [0.99, 0.09, -0.01], max: [1.01, 0.11, 0.01]}"),
       fmt::arg("j", "{min: [0.99, -0.01, -0.01], max: [1.01, 0.01, 0.01]}"));
   const Model model = build_model(read_scene_text(scene, folder.path() / "shaft.yaml"));
-  ASSERT_EQ(model.torsion_count(), 1);  // only the shaft has references at both ends
+  ASSERT_EQ(model.torsion_count(), 1);       // only the shaft has references at both ends
+  ASSERT_EQ(model.bars_without_torsion, 3);  // the stub and the two levers, which end free
   const double dt = automatic_step(model);
   State state = initial_state(model, dt);
   run(model, 0.15, state, dt, [](const State&) {});
@@ -386,6 +401,8 @@ forces:
   // gives way by ~1e-4 of the twist: 0.5 % is ample and still catches a factor like 2 or 1/L.
   EXPECT_NEAR(twist / reference, 1.0, 0.005);
 }
+
+INSTANTIATE_TEST_SUITE_P(OneBarAndAWireOfFour, Shaft, ::testing::Values(1, 4));
 
 }  // namespace
 }  // namespace dinam
