@@ -4,6 +4,7 @@
 
 #include "app/command_support.hpp"
 #include "app/draw_list_from_model.hpp"
+#include "app/torn_drawing.hpp"
 #include "cache/motion_cache.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
@@ -37,6 +38,7 @@ SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, in
     if (frame == 1) {
       frames.settled = state.settled;
     }
+    record_tears(model, state, frame, frames.tears);
     if (on_frame) {
       on_frame(frame, state);
     }
@@ -62,6 +64,9 @@ SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {
   SimulatedFrames frames;
   frames.first_frame = first;
   frames.positions = cache.read_frames(first, last);
+  for (const CacheTear& tear : cache.manifest().tears) {
+    frames.tears.push_back({tear.frame, tear.n0, tear.n1});
+  }
   for (const FrameBounds& bounds : cache.manifest().frame_bounds) {
     frames.motion.add(bounds.min);
     frames.motion.add(bounds.max);
@@ -113,8 +118,19 @@ void draw_frames(Renderer& renderer, const DrawList& list, const SimulatedFrames
                  const std::function<void(int, const Image&)>& on_image) {
   DINAM_CHECK(first >= frames.first_frame && last <= frames.last_frame());
   Image image;
+  // With tears, a copy of the list loses each torn bar from the first frame that shows it broken.
+  DrawList torn;
+  if (!frames.tears.empty()) {
+    torn = list;
+  }
+  std::size_t shown = 0;
   for (int frame = first; frame <= last; ++frame) {
-    renderer.render(list, frames.at(frame),
+    const std::size_t before = shown;
+    while (shown < frames.tears.size() && frames.tears[shown].frame <= frame) {
+      hide_torn_bar(frames.tears[shown++], torn);
+    }
+    torn.revision += shown > before ? 1 : 0;
+    renderer.render(frames.tears.empty() ? list : torn, frames.at(frame),
                     cameras[static_cast<std::size_t>(frame - frames.first_frame)], image);
     on_image(frame, image);
   }

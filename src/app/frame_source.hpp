@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "app/torn_drawing.hpp"
 #include "core/image.hpp"
 #include "dynamics/state.hpp"
 #include "render/framing.hpp"
@@ -27,6 +28,7 @@ struct SimulatedFrames {
   Bounds motion;                              // every position of every frame of the motion
   double seconds = 0.0;                       // wall time spent simulating or reading
   SettleOutcome settled;                      // how the settling phase ended (simulated only)
+  std::vector<TornBar> tears;                 // in the order they broke
 
   int last_frame() const { return first_frame + static_cast<int>(positions.size()) - 1; }
   const std::vector<Vec3f>& at(int frame) const {

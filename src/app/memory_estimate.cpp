@@ -73,6 +73,9 @@ std::uint64_t model_bytes(const Model& model) {
   bytes += bytes_of(model.torsion_nodes) + bytes_of(model.torsion_rest_angle) +
            bytes_of(model.torsion_stiffness) + bytes_of(model.torsion_yield_moment);
   bytes += bytes_of(model.face_offsets) + bytes_of(model.face_nodes);
+  bytes += bytes_of(model.bar_breaking_strain) + bytes_of(model.bar_breaking_force) +
+           bytes_of(model.bar_spring_offsets) + bytes_of(model.bar_springs) +
+           bytes_of(model.bar_face_offsets) + bytes_of(model.bar_faces);
   bytes += colouring_bytes(model.bar_colours) + colouring_bytes(model.bend_colours) +
            colouring_bytes(model.torsion_colours);
   for (const FieldForce& field : model.fields) {
@@ -99,6 +102,10 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
   }
   if (energy) {
     bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_previous
+  }
+  if (model.can_tear()) {  // a broken flag per bar, spring and face
+    bytes += springs + static_cast<std::uint64_t>(model.clamp_count()) +
+             static_cast<std::uint64_t>(model.face_count());
   }
   return bytes;
 }

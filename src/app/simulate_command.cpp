@@ -11,6 +11,7 @@
 #include "app/frame_source.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
+#include "app/torn_drawing.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
 #include "dynamics/stability.hpp"
@@ -61,6 +62,7 @@ int run_simulate(const SimulateOptions& options) {
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
   SettleOutcome settled;
+  std::vector<TornBar> tears;
 
   // A cache that cannot be written whole (a full disk) leaves nothing: the writer removes its
   // temporary folder, and an older cache stays as it was.
@@ -82,6 +84,7 @@ int run_simulate(const SimulateOptions& options) {
                      if (frame == 1) {
                        settled = state.settled;
                      }
+                     record_tears(model, state, frame, tears);
                      writer.add_frame(positions);
                      if (energy_csv) {
                        const EnergyReport& report = state.energy_workspace.last;
@@ -99,6 +102,9 @@ int run_simulate(const SimulateOptions& options) {
     progress.finish();
     if (energy_csv) {
       energy_csv->close();
+    }
+    for (const TornBar& tear : tears) {
+      manifest.tears.push_back({tear.frame, tear.n0, tear.n1});
     }
     manifest.scene_path = canonical_scene_path(scene.source);
     manifest.scene_name = scene.name;

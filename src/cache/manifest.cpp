@@ -78,6 +78,13 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
       {"objects", objects},
       {"frame_bounds", bounds},
   };
+  if (!m.tears.empty()) {
+    Json tears = Json::array();
+    for (const CacheTear& tear : m.tears) {
+      tears.push_back({tear.frame, tear.n0, tear.n1});
+    }
+    json["tears"] = std::move(tears);
+  }
   if (!m.energy.columns.empty()) {
     Json energy = Json::object();
     for (std::size_t c = 0; c < m.energy.columns.size(); ++c) {
@@ -153,6 +160,16 @@ CacheManifest read_manifest(const std::filesystem::path& path) {
     }
     for (const Json& b : json.at("frame_bounds")) {
       m.frame_bounds.push_back(bounds_from(b));
+    }
+    if (json.contains("tears")) {
+      for (const Json& tear : json.at("tears")) {
+        m.tears.push_back(
+            {tear.at(0).get<int>(), tear.at(1).get<Index>(), tear.at(2).get<Index>()});
+        const CacheTear& t = m.tears.back();
+        if (t.frame < 1 || t.n0 < 0 || t.n1 < 0 || t.n0 >= m.node_count || t.n1 >= m.node_count) {
+          throw UserError(loc, "the manifest names a tear outside the frames or the nodes");
+        }
+      }
     }
     if (json.contains("energy")) {
       for (const auto& [name, column] : json.at("energy").items()) {

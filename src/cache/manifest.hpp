@@ -36,6 +36,14 @@ struct EnergyTable {
   std::vector<std::vector<double>> rows;  // (frame_count) × (columns)
 };
 
+// A bar that broke (tearing), by its end nodes, and the first frame that shows it broken; the
+// point caches hold positions only, so the tears travel in the manifest.
+struct CacheTear {
+  int frame = 1;
+  Index n0 = 0;
+  Index n1 = 0;
+};
+
 struct CacheManifest {
   static constexpr const char* kFormat = "dinam motion cache";
   static constexpr int kFormatVersion = 1;
@@ -56,6 +64,7 @@ struct CacheManifest {
   std::vector<CacheObjectEntry> objects;
   std::vector<FrameBounds> frame_bounds;  // (frame_count)
   EnergyTable energy;                     // empty unless asked for
+  std::vector<CacheTear> tears;           // in the order they broke; none unless it tears
 };
 
 // The path a manifest records for a scene file: absolute, with links and dots resolved.

@@ -8,9 +8,13 @@ namespace dinam {
 
 void add_axial_spring_forces(ForceContext& context) {
   const Model& model = context.model;
-  const SpringArrays springs{model.bar_colours,     model.bar_nodes,
-                             model.bar_rest_length, model.bar_axial_stiffness,
-                             model.bar_yield_force, context.state.bar_plastic_set};
+  const SpringArrays springs{model.bar_colours,
+                             model.bar_nodes,
+                             model.bar_rest_length,
+                             model.bar_axial_stiffness,
+                             model.bar_yield_force,
+                             context.state.bar_plastic_set,
+                             broken_flags(context.state.bar_broken)};
   add_spring_forces<2>(
       context, springs,
       [](SpringBlock<2> & block, Index k, double rest, double stiffness, double plastic_set,
@@ -32,7 +36,7 @@ void add_axial_damper_forces(ForceContext& context) {
     return;
   }
   for_each_spring(model.bar_colours, [&](Index b) {
-    if (model.bar_damping[b] == 0.0) {
+    if (model.bar_damping[b] == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
       return;
     }
     const Index n0 = model.bar_nodes[2 * b];
@@ -47,6 +51,9 @@ void add_axial_damper_forces(ForceContext& context) {
 double axial_spring_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index b = 0; b < model.bar_count(); ++b) {
+    if (!state.bar_broken.empty() && state.bar_broken[b] != 0) {
+      continue;
+    }
     energy += axial_spring(state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
                            model.bar_rest_length[b], model.bar_axial_stiffness[b],
                            state.bar_plastic_set[b], model.bar_yield_force[b])

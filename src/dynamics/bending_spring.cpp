@@ -7,9 +7,13 @@ namespace dinam {
 
 void add_bending_spring_forces(ForceContext& context) {
   const Model& model = context.model;
-  const SpringArrays springs{model.bend_colours,      model.bend_nodes,
-                             model.bend_rest_angle,   model.bend_stiffness,
-                             model.bend_yield_moment, context.state.bend_plastic_set};
+  const SpringArrays springs{model.bend_colours,
+                             model.bend_nodes,
+                             model.bend_rest_angle,
+                             model.bend_stiffness,
+                             model.bend_yield_moment,
+                             context.state.bend_plastic_set,
+                             broken_flags(context.state.bend_broken)};
   add_spring_forces<3>(
       context, springs,
       [](SpringBlock<3> & block, Index k, double rest, double stiffness, double plastic_set,
@@ -28,6 +32,9 @@ void add_bending_spring_forces(ForceContext& context) {
 double bending_spring_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index s = 0; s < model.bend_count(); ++s) {
+    if (!state.bend_broken.empty() && state.bend_broken[s] != 0) {
+      continue;
+    }
     const Index* nodes = &model.bend_nodes[3 * s];
     energy += bending_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]],
                              model.bend_rest_angle[s], model.bend_stiffness[s],

@@ -22,6 +22,9 @@ void add_clamp_forces(ForceContext& context) {
   const Model& model = context.model;
   State& state = context.state;
   for (Index s = 0; s < model.clamp_count(); ++s) {
+    if (!state.clamp_broken.empty() && state.clamp_broken[s] != 0) {
+      continue;
+    }
     const BendingSpringResult r = clamp_spring(model, state, s);
     context.add(model.clamp_nodes[2 * s + 1], r.force_a);
     if (context.update_history) {
@@ -34,6 +37,9 @@ void add_clamp_forces(ForceContext& context) {
 double clamp_spring_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index s = 0; s < model.clamp_count(); ++s) {
+    if (!state.clamp_broken.empty() && state.clamp_broken[s] != 0) {
+      continue;
+    }
     energy += clamp_spring(model, state, s).energy;
   }
   return energy;

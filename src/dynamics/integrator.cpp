@@ -14,6 +14,7 @@
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/settle.hpp"
+#include "dynamics/tearing.hpp"
 #include "dynamics/torsion_spring.hpp"
 #include "dynamics/wind.hpp"
 #include "model/model.hpp"
@@ -137,6 +138,7 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
     state.contact_touching.assign(n, 0);
     state.contact_sliding.assign(n, 0);
   }
+  prepare_tearing(model, state);
   place_driven_nodes(model, 0.0, state);
   settle_under_gravity(model, dt, switches, state);
   EnergyWorkspace& ledger = state.energy_workspace;
@@ -157,6 +159,8 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
 
 void step(const Model& model, double dt, const ForceSwitches& switches, State& state) {
   EnergyWorkspace& ledger = state.energy_workspace;
+  // 0. Bars strained past their breaking limit at x_n break, with what stands on them.
+  break_overloaded_bars(model, state);
   // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
   compute_forces(model, switches, state, true);
   if (ledger.enabled) {

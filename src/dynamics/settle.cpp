@@ -202,6 +202,12 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
   state.contact_anchor = std::move(settling.contact_anchor);
   state.contact_touching = std::move(settling.contact_touching);
   state.contact_sliding = std::move(settling.contact_sliding);
+  state.bar_broken = std::move(settling.bar_broken);  // what broke under its own weight
+  state.bend_broken = std::move(settling.bend_broken);
+  state.torsion_broken = std::move(settling.torsion_broken);
+  state.clamp_broken = std::move(settling.clamp_broken);
+  state.face_broken = std::move(settling.face_broken);
+  state.broken_bars = std::move(settling.broken_bars);
 }
 
 }  // namespace dinam

@@ -9,6 +9,7 @@
 // Passes 1 and 3 are scalar loads and stores through the node ids; pass 2, where the arithmetic
 // is, would not vectorise with them inside (the compiler cannot scatter to the nodes, and the
 // x86-64 baseline has no gather either).
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -27,7 +28,13 @@ struct SpringArrays {
   const std::vector<double>& stiffness;  // (n_springs) N/m or N·m/rad
   const std::vector<double>& yield;      // (n_springs) N or N·m; infinite when elastic
   std::vector<double>& plastic_set;      // (n_springs) m or rad
+  const std::uint8_t* broken = nullptr;  // (n_springs) 1 for a torn spring; null: none can tear
 };
+
+// The broken flags of one kind of spring, or null when the model cannot tear.
+inline const std::uint8_t* broken_flags(const std::vector<std::uint8_t>& flags) {
+  return flags.empty() ? nullptr : flags.data();
+}
 
 template <int kNodes>
 struct SpringBlock {
@@ -99,13 +106,20 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
       }
     }
     compute_spring_block(block, springs, first, count, kernel);
+    const std::uint8_t* broken = springs.broken == nullptr ? nullptr : springs.broken + first;
     for (Index k = 0; k < count; ++k) {
+      if (broken != nullptr && broken[k] != 0) {
+        continue;  // torn: computed with the block, but it acts no more
+      }
       for (int j = 0; j < kNodes; ++j) {
         force[spring_nodes[kNodes * k + j]] += block.node_force(j, k);
       }
     }
     if (may_yield) {
       for (Index k = 0; k < count; ++k) {
+        if (broken != nullptr && broken[k] != 0) {
+          continue;
+        }
         context.record_plastic_flow(first + k, springs.plastic_set[first + k],
                                     block.new_plastic_set[k], block.dissipated[k]);
       }

@@ -11,7 +11,7 @@ namespace dinam {
 // Work done and energy lost since t = 0, J, by what is not a potential of the positions.
 struct EnergyAccounts {
   double damping_work = 0.0;          // axial dampers and global viscous friction (≤ 0)
-  double plastic_dissipation = 0.0;   // Σ yield × |Δ plastic set| (≥ 0)
+  double plastic_dissipation = 0.0;   // Σ yield × |Δ plastic set|, and torn springs (≥ 0)
   double friction_work = 0.0;         // tangential ground forces (≤ 0 over a slide)
   double contact_damping_work = 0.0;  // the ground's normal damping (≤ 0)
   double wind_work = 0.0;             // aerodynamic drag
@@ -82,6 +82,13 @@ struct State {
   std::vector<double> bend_plastic_set;     // (n_bends) rad
   std::vector<double> torsion_plastic_set;  // (n_torsions) rad
   std::vector<double> clamp_plastic_set;    // (n_clamps) rad
+  // Tearing (empty unless the model can tear): 1 for what has broken, for good.
+  std::vector<std::uint8_t> bar_broken;      // (n_bars)
+  std::vector<std::uint8_t> bend_broken;     // (n_bends)
+  std::vector<std::uint8_t> torsion_broken;  // (n_torsions)
+  std::vector<std::uint8_t> clamp_broken;    // (n_clamps)
+  std::vector<std::uint8_t> face_broken;     // (n_faces) faces with a broken edge
+  std::vector<Index> broken_bars;            // in the order they broke
   std::vector<double>
       plastic_flow;  // (most springs of a kind that yields) J, scratch: each one's last flow
 

@@ -7,9 +7,13 @@ namespace dinam {
 
 void add_torsion_spring_forces(ForceContext& context) {
   const Model& model = context.model;
-  const SpringArrays springs{model.torsion_colours,      model.torsion_nodes,
-                             model.torsion_rest_angle,   model.torsion_stiffness,
-                             model.torsion_yield_moment, context.state.torsion_plastic_set};
+  const SpringArrays springs{model.torsion_colours,
+                             model.torsion_nodes,
+                             model.torsion_rest_angle,
+                             model.torsion_stiffness,
+                             model.torsion_yield_moment,
+                             context.state.torsion_plastic_set,
+                             broken_flags(context.state.torsion_broken)};
   add_spring_forces<4>(
       context, springs,
       [](SpringBlock<4> & block, Index k, double rest, double stiffness, double plastic_set,
@@ -29,6 +33,9 @@ void add_torsion_spring_forces(ForceContext& context) {
 double torsion_spring_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index s = 0; s < model.torsion_count(); ++s) {
+    if (!state.torsion_broken.empty() && state.torsion_broken[s] != 0) {
+      continue;
+    }
     const Index* nodes = &model.torsion_nodes[4 * s];
     energy +=
         torsion_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]], state.x[nodes[3]],

@@ -101,6 +101,9 @@ void add_wind_forces(ForceContext& context) {
   const State& state = context.state;
   const double rho = wind.field.air_density;
   for (const Index f : wind.faces) {
+    if (!state.face_broken.empty() && state.face_broken[f] != 0) {
+      continue;  // torn open: the wind passes through
+    }
     const Index begin = model.face_offsets[f];
     const Index end = model.face_offsets[f + 1];
     const double count = end - begin;
@@ -127,6 +130,9 @@ void add_wind_forces(ForceContext& context) {
     }
   }
   for (const Index b : wind.bars) {
+    if (!state.bar_broken.empty() && state.bar_broken[b] != 0) {
+      continue;
+    }
     const Index n0 = model.bar_nodes[2 * b];
     const Index n1 = model.bar_nodes[2 * b + 1];
     const Vec3 middle = 0.5 * (state.x[n0] + state.x[n1]);

@@ -13,6 +13,11 @@
 
 namespace dinam {
 
+// The kinds of spring that stand on a bar, as Model::bar_springs encodes them (3 × id + kind).
+inline constexpr Index kTornBend = 0;
+inline constexpr Index kTornTorsion = 1;
+inline constexpr Index kTornClamp = 2;
+
 // What one scene object became: a contiguous range of nodes and of bars.
 struct ModelObject {
   std::string name;
@@ -113,6 +118,17 @@ struct Model {
   std::vector<Vec3> clamp_ghost_offset;    // (n_clamps) m, g − c
   std::vector<double> clamp_stiffness;     // (n_clamps) N·m/rad
   std::vector<double> clamp_yield_moment;  // (n_clamps) N·m; infinite when elastic
+
+  // Tearing (model/tearing.cpp), empty when no material can break: a bar breaks for good once its
+  // strain or tension reaches its limit, and every spring standing on it goes with it, as does
+  // every face it is an edge of.
+  std::vector<double> bar_breaking_strain;  // (n_bars) infinite when it cannot break
+  std::vector<double> bar_breaking_force;   // (n_bars) N; infinite when it cannot break
+  std::vector<Index> bar_spring_offsets;    // (n_bars + 1) into bar_springs
+  std::vector<Index> bar_springs;           // 3 × id + kind (kTornBend, kTornTorsion, kTornClamp)
+  std::vector<Index> bar_face_offsets;      // (n_bars + 1) into bar_faces
+  std::vector<Index> bar_faces;             // face ids
+  bool can_tear() const { return !bar_breaking_strain.empty(); }
 
   // Mesh faces as loops of node ids (for drawing surfaces and for wind later):
   // face k has nodes face_nodes[face_offsets[k] .. face_offsets[k + 1]).

@@ -369,6 +369,11 @@ Model build_model(const SceneDescription& scene) {
       model.bars_without_torsion += info.bar_count;
     }
   }
+  std::vector<BarMaterials> bar_materials;
+  for (const ObjectNodes& object : objects) {
+    bar_materials.push_back(object.bar_materials);
+  }
+  add_tearing(bar_materials, model);
   add_fields(scene, objects, model);
   add_wind(scene, model);
   add_ground(scene, model);

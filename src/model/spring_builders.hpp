@@ -30,4 +30,9 @@ inline constexpr double kMinReferenceSine = 0.2;  // about 11.5°
 void add_torsion_springs(const BarMaterials& materials, const ModelObject& object,
                          const NodeAdjacency& adjacency, Model& model);
 
+// Tearing, when some bar's material can break (MaterialDesc::breaking_*): each bar's limits, and
+// the springs and faces that stand on it (model.hpp), found from the springs' node ids; every
+// spring and face must already be built. `materials` holds each object's BarMaterials.
+void add_tearing(const std::vector<BarMaterials>& materials, Model& model);
+
 }  // namespace dinam

@@ -31,6 +31,9 @@ struct DrawList {
   std::vector<Eigen::Vector2f> point_uv;  // (n_points) texture coordinates of surface points
   std::vector<SurfaceBatch> surfaces;
   std::vector<Image> textures;  // sRGB-encoded RGBA, as read from PNG files
+  // Bumped whenever the points' colours, the surfaces or the textures change after the list was
+  // first drawn (a tear hides triangles), so that the renderer uploads them again.
+  int revision = 0;
 
   bool ground_visible = true;
   bool ground_checker = true;            // a checkerboard, else one plain colour

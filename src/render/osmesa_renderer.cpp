@@ -222,10 +222,11 @@ void OsmesaRenderer::create_framebuffers() {
 }
 
 void OsmesaRenderer::upload_static(const DrawList& list) {
-  if (static_list_ == &list) {
+  if (static_list_ == &list && static_revision_ == list.revision) {
     return;
   }
   static_list_ = &list;
+  static_revision_ = list.revision;
   // Colour and texture coordinates of every point, for the surfaces.
   std::vector<float> attributes_data;
   attributes_data.reserve(list.point_color.size() * 5);

@@ -56,6 +56,7 @@ class OsmesaRenderer final : public Renderer {
 
   // What upload_static last saw, so a list is uploaded once and a new one replaces it.
   const DrawList* static_list_ = nullptr;
+  int static_revision_ = 0;
   std::vector<unsigned> batch_ebos_;     // (n_batches)
   std::vector<int> batch_index_counts_;  // (n_batches)
   std::vector<unsigned> texture_ids_;    // (n_textures)

@@ -100,6 +100,23 @@ MaterialDesc read_material(YamlMap map) {
     }
     yield.finish();
   }
+  if (map.has("breaking")) {
+    YamlMap breaking(map.get("breaking"), map.file(), map.path("breaking"));
+    if (!breaking.has("strain") && !breaking.has("force")) {
+      throw_user_error(breaking.loc(), "'{}' needs 'strain' (for example 0.3) or 'force' (N)",
+                       breaking.name());
+    }
+    if (breaking.has("strain")) {
+      material.breaking_strain = breaking.number("strain", 0.0);
+      require_in_range(material.breaking_strain, 1e-6, 100.0, breaking.loc("strain"),
+                       breaking.path("strain"), "(a strain)");
+    }
+    if (breaking.has("force")) {
+      material.breaking_force = breaking.number("force", 0.0);
+      require_positive(material.breaking_force, breaking.loc("force"), breaking.path("force"), "N");
+    }
+    breaking.finish();
+  }
   map.finish();
   return material;
 }

@@ -29,6 +29,10 @@ struct MaterialDesc {
   double yield_axial_force = kNoYield;     // N
   double yield_bending_moment = kNoYield;  // N·m
   double yield_torsion_moment = kNoYield;  // N·m
+  // Tearing: a bar breaks for good once its strain or its axial force reaches one of these.
+  double breaking_strain = kNoYield;  // (L − L0) / L0
+  double breaking_force = kNoYield;   // N, tension
+  bool can_break() const { return breaking_strain < kNoYield || breaking_force < kNoYield; }
   FileLoc loc;
 };
 

@@ -77,6 +77,41 @@ TEST(FrameSource, DrawsEachChosenFrameOnceWithItsPositions) {
   EXPECT_NE(renderer.calls[4].positions, renderer.calls[0].positions);  // the cloth moved
 }
 
+// A tear shown from frame 5: the frames before draw the whole cloth; from frame 5 on, the torn
+// bar's triangles (it is an edge of two) are collapsed, and the list's revision tells the
+// renderer to upload its surfaces again.
+TEST(FrameSource, TornBarsLeaveTheDrawingFromTheirFrame) {
+  Pipeline p = run("camera: auto");
+  const DrawList list = make_draw_list(p.scene, p.model, motion_bounds(p.frames.positions));
+  Index torn = -1;  // a cloth bar inside the grid: an edge of two faces
+  for (Index b = 0; b < p.model.bar_count() && torn < 0; ++b) {
+    const Vec3& a = p.model.node_initial_x[p.model.bar_nodes[2 * b]];
+    const Vec3& c = p.model.node_initial_x[p.model.bar_nodes[2 * b + 1]];
+    torn = p.model.bar_on_face[b] != 0 && a.z() == c.z() && a.z() > 1.5 && a.z() < 1.9 ? b : -1;
+  }
+  ASSERT_GE(torn, 0);
+  p.frames.tears.push_back({5, p.model.bar_nodes[2 * torn], p.model.bar_nodes[2 * torn + 1]});
+  struct CountingRenderer : Renderer {
+    void render(const DrawList& drawn, const std::vector<Vec3f>&, const RenderCamera&,
+                Image& image) override {
+      int collapsed = 0;
+      for (const SurfaceBatch& batch : drawn.surfaces) {
+        for (std::size_t k = 0; k + 2 < batch.triangles.size(); k += 3) {
+          collapsed += batch.triangles[k] == batch.triangles[k + 1] ? 1 : 0;
+        }
+      }
+      collapsed_per_frame.push_back(collapsed);
+      revisions.push_back(drawn.revision);
+      image = Image(4, 4);
+    }
+    std::vector<int> collapsed_per_frame;
+    std::vector<int> revisions;
+  } renderer;
+  draw_frames(renderer, list, p.frames, p.cameras, 3, 7, [](int, const Image&) {});
+  EXPECT_EQ(renderer.collapsed_per_frame, (std::vector<int>{0, 0, 2, 2, 2}));
+  EXPECT_LT(renderer.revisions[1], renderer.revisions[2]);
+}
+
 TEST(FrameSource, AutoCameraKeepsStillAndSeesEveryPointOfEveryFrame) {
   const Pipeline p = run("camera: auto");
   for (const RenderCamera& camera : p.cameras) {

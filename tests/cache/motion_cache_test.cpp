@@ -93,6 +93,35 @@ TEST(MotionCache, FramesReadBackBitForBitWithTheBoundsOfTheWholeMotion) {
   EXPECT_EQ(chunk.motion.max, s.frames.motion.max);
 }
 
+// A rope that tears: its tears travel in the manifest, so frames drawn from the cache (in any
+// chunk) lose the same bars from the same frames as the simulation's.
+TEST(MotionCache, TearsReadBackWithTheFrames) {
+  Simulated s = simulate(
+      replaced(replaced(kRope, "radius: 0.004}", "radius: 0.004, breaking: {strain: 0.001}}"),
+               "duration: 0.4", "duration: 0.4\nforces: [{acceleration: [0, 0, -200]}]"));
+  ASSERT_FALSE(s.frames.tears.empty());
+  const test::TemporaryFolder folder("cache");
+  MotionCacheWriter writer(request_for(s, folder.path() / "cache"), s.model);
+  for (const auto& positions : s.frames.positions) {
+    writer.add_frame(positions);
+  }
+  CacheManifest manifest;
+  manifest.scene_path = canonical_scene_path(s.scene.source);
+  manifest.scene_name = s.scene.name;
+  manifest.motion_settings = s.scene.motion_settings;
+  for (const TornBar& tear : s.frames.tears) {
+    manifest.tears.push_back({tear.frame, tear.n0, tear.n1});
+  }
+  writer.commit(manifest);
+  const SimulatedFrames chunk = cached_frames(MotionCache(folder.path() / "cache"), 3, 4);
+  ASSERT_EQ(chunk.tears.size(), s.frames.tears.size());
+  for (std::size_t k = 0; k < chunk.tears.size(); ++k) {
+    EXPECT_EQ(chunk.tears[k].frame, s.frames.tears[k].frame);
+    EXPECT_EQ(chunk.tears[k].n0, s.frames.tears[k].n0);
+    EXPECT_EQ(chunk.tears[k].n1, s.frames.tears[k].n1);
+  }
+}
+
 TEST(MotionCache, AnAbandonedWriterLeavesNothingAndTheOldCacheStands) {
   const Simulated s = simulate(kRope);
   const test::TemporaryFolder folder("atomic");

@@ -17,8 +17,8 @@ namespace {
 // A falling, yielding cloth held at one edge, of 120 × 120 cells (about 43 000 bars, more bending
 // and torsion springs), big enough that every spring loop runs in parallel, with wind and ground
 // contact.
-State run_cloth(int threads, int steps) {
-  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+State run_cloth(int threads, int steps, const std::string& breaking = "") {
+  const Model model = build_model(test::scene_from_yaml(std::string(R"(version: 1
 duration: 1
 wind: {velocity: [3, 0, 0], turbulence: {amplitude: 1}}
 ground: {height: 0.5}
@@ -27,7 +27,8 @@ objects:
     mesh:
       grid: {width: 1.2, height: 1.2, columns: 120, rows: 120, diagonals: one}
       translation: [0, 0, 0.6]
-    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001, yield_stress: 2.0e5}
+    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001, yield_stress: 2.0e5)") +
+                                                        breaking + R"(}
     pinned: {box: {min: [-1, -1, 0], max: [0.001, 2, 1]}}
     damping: {axial_ratio: 0.05}
     initial_velocity: [0, 0, -3]
@@ -62,6 +63,22 @@ TEST(Threads, OneAndTwoThreadsGiveTheSameStateBitForBit) {
   EXPECT_EQ(one.energy_workspace.last.total, two.energy_workspace.last.total);
   // It did something: it moved, and some springs flowed.
   EXPECT_GT(one.energy.plastic_dissipation, 0.0);
+}
+
+// Tearing too: which bars break, in which order, and everything after, is the same with 1 and 2
+// threads (the check runs serially over the bars, and the forces it reads are bit-identical).
+TEST(Threads, TearingIsTheSameForAnyThreadCount) {
+  const std::string breaking = ", breaking: {force: 0.3}";
+  const State one = run_cloth(1, 60, breaking);
+  const State two = run_cloth(2, 60, breaking);
+  EXPECT_GT(one.broken_bars.size(), 10u);                             // it tore
+  EXPECT_LT(one.broken_bars.size(), one.bar_plastic_set.size() / 2);  // but not to shreds
+  EXPECT_EQ(one.broken_bars, two.broken_bars);
+  EXPECT_TRUE(same_bits(one.x, two.x));
+  EXPECT_TRUE(same_bits(one.v_half, two.v_half));
+  EXPECT_TRUE(same_bits(one.bend_broken, two.bend_broken));
+  EXPECT_TRUE(same_bits(one.torsion_broken, two.torsion_broken));
+  EXPECT_EQ(one.energy_workspace.last.total, two.energy_workspace.last.total);
 }
 
 }  // namespace

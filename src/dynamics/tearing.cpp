@@ -1,0 +1,90 @@
+#include "dynamics/tearing.hpp"
+
+#include <cmath>
+
+#include "dynamics/axial_spring.hpp"
+#include "dynamics/bending_spring.hpp"
+#include "dynamics/clamp_spring.hpp"
+#include "dynamics/torsion_spring.hpp"
+#include "model/model.hpp"
+
+namespace dinam {
+namespace {
+
+double elastic_energy(const Model& model, const State& state) {
+  return axial_spring_energy(model, state) + bending_spring_energy(model, state) +
+         torsion_spring_energy(model, state) + clamp_spring_energy(model, state);
+}
+
+bool past_its_limit(const Model& model, const State& state, Index b) {
+  const Index n0 = model.bar_nodes[2 * b];
+  const Index n1 = model.bar_nodes[2 * b + 1];
+  const double length = (state.x[n1] - state.x[n0]).norm();
+  const double rest = model.bar_rest_length[b];
+  if (length - rest >= model.bar_breaking_strain[b] * rest) {
+    return true;
+  }
+  // The axial spring's tension, as the kernel computes it (clamped at the yield force).
+  const double tension =
+      std::min(model.bar_axial_stiffness[b] * (length - rest - state.bar_plastic_set[b]),
+               model.bar_yield_force[b]);
+  return tension >= model.bar_breaking_force[b];
+}
+
+void break_bar(const Model& model, Index b, State& state) {
+  state.bar_broken[b] = 1;
+  state.broken_bars.push_back(b);
+  for (Index k = model.bar_spring_offsets[b]; k < model.bar_spring_offsets[b + 1]; ++k) {
+    const Index id = model.bar_springs[k] / 3;
+    switch (model.bar_springs[k] % 3) {
+      case kTornBend:
+        state.bend_broken[id] = 1;
+        break;
+      case kTornTorsion:
+        state.torsion_broken[id] = 1;
+        break;
+      default:
+        state.clamp_broken[id] = 1;
+        break;
+    }
+  }
+  for (Index k = model.bar_face_offsets[b]; k < model.bar_face_offsets[b + 1]; ++k) {
+    state.face_broken[model.bar_faces[k]] = 1;
+  }
+}
+
+}  // namespace
+
+void prepare_tearing(const Model& model, State& state) {
+  if (!model.can_tear()) {
+    return;
+  }
+  state.bar_broken.assign(model.bar_count(), 0);
+  state.bend_broken.assign(model.bend_count(), 0);
+  state.torsion_broken.assign(model.torsion_count(), 0);
+  state.clamp_broken.assign(model.clamp_count(), 0);
+  state.face_broken.assign(model.face_count(), 0);
+}
+
+void break_overloaded_bars(const Model& model, State& state) {
+  if (!model.can_tear()) {
+    return;
+  }
+  double energy_before = 0.0;
+  bool any = false;
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    if (state.bar_broken[b] != 0 || !past_its_limit(model, state, b)) {
+      continue;
+    }
+    if (!any && state.energy_workspace.enabled) {
+      energy_before = elastic_energy(model, state);
+    }
+    any = true;
+    break_bar(model, b, state);
+  }
+  if (any && state.energy_workspace.enabled) {
+    state.energy.plastic_dissipation += energy_before - elastic_energy(model, state);
+  }
+}
+
+}  // namespace dinam
