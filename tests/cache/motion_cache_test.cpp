@@ -61,6 +61,9 @@ void write_cache(const Simulated& s, const std::filesystem::path& folder) {
   manifest.scene_path = canonical_scene_path(s.scene.source);
   manifest.scene_name = s.scene.name;
   manifest.motion_settings = s.scene.motion_settings;
+  for (const TornBar& tear : s.frames.tears) {
+    manifest.tears.push_back({tear.frame, tear.n0, tear.n1});
+  }
   writer.commit(manifest);
 }
 
@@ -101,18 +104,7 @@ TEST(MotionCache, TearsReadBackWithTheFrames) {
                "duration: 0.4", "duration: 0.4\nforces: [{acceleration: [0, 0, -200]}]"));
   ASSERT_FALSE(s.frames.tears.empty());
   const test::TemporaryFolder folder("cache");
-  MotionCacheWriter writer(request_for(s, folder.path() / "cache"), s.model);
-  for (const auto& positions : s.frames.positions) {
-    writer.add_frame(positions);
-  }
-  CacheManifest manifest;
-  manifest.scene_path = canonical_scene_path(s.scene.source);
-  manifest.scene_name = s.scene.name;
-  manifest.motion_settings = s.scene.motion_settings;
-  for (const TornBar& tear : s.frames.tears) {
-    manifest.tears.push_back({tear.frame, tear.n0, tear.n1});
-  }
-  writer.commit(manifest);
+  write_cache(s, folder.path() / "cache");
   const SimulatedFrames chunk = cached_frames(MotionCache(folder.path() / "cache"), 3, 4);
   ASSERT_EQ(chunk.tears.size(), s.frames.tears.size());
   for (std::size_t k = 0; k < chunk.tears.size(); ++k) {
