@@ -103,9 +103,10 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
   if (energy) {
     bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_previous
   }
-  if (model.can_tear()) {  // a broken flag per bar, spring and face
+  if (model.can_tear()) {  // a broken flag per bar, spring and face, and the list of bars
     bytes += springs + static_cast<std::uint64_t>(model.clamp_count()) +
-             static_cast<std::uint64_t>(model.face_count());
+             static_cast<std::uint64_t>(model.face_count()) +
+             static_cast<std::uint64_t>(model.bar_count()) * sizeof(Index);
   }
   return bytes;
 }

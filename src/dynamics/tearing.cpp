@@ -64,6 +64,7 @@ void prepare_tearing(const Model& model, State& state) {
   state.torsion_broken.assign(model.torsion_count(), 0);
   state.clamp_broken.assign(model.clamp_count(), 0);
   state.face_broken.assign(model.face_count(), 0);
+  state.broken_bars.reserve(static_cast<std::size_t>(model.bar_count()));  // steps allocate nothing
 }
 
 void break_overloaded_bars(const Model& model, State& state) {

@@ -87,7 +87,7 @@ class Interruption : public ::testing::Test {
 };
 
 TEST_F(Interruption, ARenderStopsWithinASecondKeepingWholeFramesAndNoMovie) {
-  const std::filesystem::path flag = std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/flag.yaml";
+  const std::filesystem::path flag = std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/windy_flag.yaml";
   for (const int signal : {SIGINT, SIGTERM}) {
     const std::filesystem::path out = path(signal == SIGINT ? "int" : "term");
     // Stopped once it has written a few frames, while ffmpeg is encoding the movie.
@@ -102,7 +102,7 @@ TEST_F(Interruption, ARenderStopsWithinASecondKeepingWholeFramesAndNoMovie) {
     EXPECT_NE(stopped.messages.find("frames were written to"), std::string::npos)
         << stopped.messages;
     EXPECT_NE(stopped.messages.find("no movie was made"), std::string::npos) << stopped.messages;
-    EXPECT_FALSE(std::filesystem::exists(out / "flag.mp4"));
+    EXPECT_FALSE(std::filesystem::exists(out / "windy_flag.mp4"));
     EXPECT_FALSE(any_entry(out,
                            [](const std::string& name) {
                              return name.find(".part") != std::string::npos ||

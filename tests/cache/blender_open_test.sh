@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A motion cache opens in Blender: simulates the paper's flag into a cache with PC2 and MDD files,
+# A motion cache opens in Blender: simulates the windy flag into a cache with PC2 and MDD files,
 # then runs scripts/blender-check-cache.py in Blender itself (headless), which imports each OBJ,
 # adds Mesh Cache modifiers and compares the moved vertices with the cache files.
 #
@@ -15,7 +15,7 @@ if ! command -v blender >/dev/null; then
 fi
 work=$(mktemp -d /tmp/dinam-blender-XXXXXX)
 trap 'rm -rf "$work"' EXIT
-"$dinam" simulate "$source_dir/scenes/flag.yaml" -o "$work/cache" --format pc2,mdd --quiet
+"$dinam" simulate "$source_dir/scenes/windy_flag.yaml" -o "$work/cache" --format pc2,mdd --quiet
 blender -b --factory-startup --python-exit-code 1 \
   --python "$source_dir/scripts/blender-check-cache.py" -- "$work/cache" >"$work/blender.log" 2>&1 ||
   { cat "$work/blender.log"; exit 1; }
