@@ -42,7 +42,7 @@ class CacheEndToEnd : public ::testing::Test {
   test::TemporaryFolder folder_{"cache-e2e"};
 };
 
-const std::filesystem::path kFlag = std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/windy_flag.yaml";
+const std::filesystem::path kFlag = test::data_dir() / "end_to_end_flag.yaml";
 
 TEST_F(CacheEndToEnd, FlagInThreeChunksFromOneCacheIsTheWholeRenderByteForByte) {
   const CommandResult whole =
@@ -71,7 +71,7 @@ TEST_F(CacheEndToEnd, FlagInThreeChunksFromOneCacheIsTheWholeRenderByteForByte) 
   const CommandResult probe =
       run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
           "stream=codec_name,nb_read_frames,r_frame_rate -of csv=p=0 " +
-          shell_quoted(path("chunks") / "windy_flag.mp4"));
+          shell_quoted(path("chunks") / "end_to_end_flag.mp4"));
   ASSERT_EQ(probe.exit_code, 0) << probe.output;
   EXPECT_EQ(probe.output, "h264,20/1,120\n");
 }
@@ -90,8 +90,8 @@ TEST_F(CacheEndToEnd, MovieNamesMissingAndExtraFramesAndMakesNothing) {
   EXPECT_EQ(movie.exit_code, 2) << movie.output;
   EXPECT_NE(movie.output.find("missing frames: 5, 41-43"), std::string::npos) << movie.output;
   EXPECT_NE(movie.output.find("frame_0121.png"), std::string::npos) << movie.output;
-  EXPECT_FALSE(std::filesystem::exists(path("frames") / "windy_flag.mp4"));
-  EXPECT_FALSE(std::filesystem::exists(path("frames") / "windy_flag.mp4.part"));
+  EXPECT_FALSE(std::filesystem::exists(path("frames") / "end_to_end_flag.mp4"));
+  EXPECT_FALSE(std::filesystem::exists(path("frames") / "end_to_end_flag.mp4.part"));
 
   const CommandResult no_folder = run(dinam("movie " + shell_quoted(path("absent"))));
   EXPECT_EQ(no_folder.exit_code, 2);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# A motion cache opens in Blender: simulates the windy flag into a cache with PC2 and MDD files,
-# then runs scripts/blender-check-cache.py in Blender itself (headless), which imports each OBJ,
-# adds Mesh Cache modifiers and compares the moved vertices with the cache files.
+# A motion cache opens in Blender: simulates a small flag (tests/data/end_to_end_flag.yaml) into
+# a cache with PC2 and MDD files, then runs scripts/blender-check-cache.py in Blender itself
+# (headless), which imports each OBJ, adds Mesh Cache modifiers and compares the moved vertices
+# with the cache files.
 #
 #   tests/cache/blender_open_test.sh DINAM SOURCE_DIR
 #
@@ -15,7 +16,7 @@ if ! command -v blender >/dev/null; then
 fi
 work=$(mktemp -d /tmp/dinam-blender-XXXXXX)
 trap 'rm -rf "$work"' EXIT
-"$dinam" simulate "$source_dir/scenes/windy_flag.yaml" -o "$work/cache" --format pc2,mdd --quiet
+"$dinam" simulate "$source_dir/tests/data/end_to_end_flag.yaml" -o "$work/cache" --format pc2,mdd --quiet
 blender -b --factory-startup --python-exit-code 1 \
   --python "$source_dir/scripts/blender-check-cache.py" -- "$work/cache" >"$work/blender.log" 2>&1 ||
   { cat "$work/blender.log"; exit 1; }

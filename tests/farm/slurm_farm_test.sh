@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The Slurm render farm for real: brings up a one-node cluster on this machine (munged, slurmctld
 # and slurmd from Debian's munge and slurm-wlm, with a generated slurm.conf in a temporary folder),
-# runs scripts/slurm-render.sh on the windy flag in three chunks, and checks that every frame is
-# byte for byte the frame of one whole 'dinam render', and that the movie has all 120 frames. The
-# daemons are stopped and the folder removed at the end, whatever happens.
+# runs scripts/slurm-render.sh on a small flag (tests/data/end_to_end_flag.yaml) in three chunks,
+# and checks that every frame is byte for byte the frame of one whole 'dinam render', and that the
+# movie has all 120 frames. The daemons are stopped and the folder removed at the end, whatever
+# happens.
 #
 #   tests/farm/slurm_farm_test.sh DINAM SOURCE_DIR
 #
@@ -117,10 +118,10 @@ up=$(date +%s.%N)
 echo "cluster up in $(awk "BEGIN { printf \"%.1f\", $up - $started }") s"
 
 # The reference: one whole render, no cache.
-"$dinam" render "$source_dir/scenes/windy_flag.yaml" -o "$work/whole" --size "$size" --movie none -q
+"$dinam" render "$source_dir/tests/data/end_to_end_flag.yaml" -o "$work/whole" --size "$size" --movie none -q
 
 # The farm: simulate, three chunks of 40 frames from the cache, the movie.
-"$source_dir/scripts/slurm-render.sh" "$source_dir/scenes/windy_flag.yaml" --dinam "$dinam" \
+"$source_dir/scripts/slurm-render.sh" "$source_dir/tests/data/end_to_end_flag.yaml" --dinam "$dinam" \
   --chunk 40 --size "$size" --partition dinam --output "$work/farm" --wait
 done_at=$(date +%s.%N)
 echo "farm finished in $(awk "BEGIN { printf \"%.1f\", $done_at - $up }") s"
@@ -136,6 +137,6 @@ for frame in "$work"/whole/frame_*.png; do
 done
 [ "$compared" -eq 120 ] || { echo "FAIL: compared $compared frames, not 120"; exit 1; }
 count=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames \
-  -of csv=p=0 "$work/farm/windy_flag.mp4")
+  -of csv=p=0 "$work/farm/end_to_end_flag.mp4")
 [ "$count" = 120 ] || { echo "FAIL: the movie has $count frames, not 120"; exit 1; }
 echo "PASS: 120 frames from 3 Slurm tasks are byte-identical to one whole render; the movie has 120 frames"
