@@ -8,7 +8,9 @@ gives 192 nodes and 521 edges. The ropes are line elements:
     (5 new nodes and 6 edges each, three of the new nodes on the pole, to be pinned);
   - the halyard: from the top corner up to the pole's top (3 edges), from the bottom corner down
     to a cleat on the pole (14 edges), and its loose end hanging from the cleat (11 edges).
-That is 192 + 25 + 28 = 245 nodes and 521 + 30 + 28 = 579 edges; the script checks both.
+That is 192 + 25 + 28 = 245 nodes and 521 + 30 + 28 = 579 edges; the script checks both. The
+cloth's triangles have the material "cloth" (with the texture), the rope's lines "rope", so a scene
+can give each its own physical material (`parts: [{mesh_material: rope, ...}]`).
 
 The cloth bows 1 cm out of its plane (a sine across its length), as a real flag never hangs
 perfectly flat. A flat cloth hanging in its own plane is a symmetric problem: when it buckles
@@ -155,11 +157,13 @@ document = {
     "meshes": [{"name": "paper_flag", "primitives": [
         {"attributes": {"POSITION": cloth_positions, "TEXCOORD_0": cloth_uvs},
          "indices": cloth_indices, "mode": TRIANGLES, "material": 0},
-        {"attributes": {"POSITION": rope_positions}, "indices": rope_indices, "mode": LINES},
+        {"attributes": {"POSITION": rope_positions}, "indices": rope_indices, "mode": LINES,
+         "material": 1},
     ]}],
     "materials": [{"name": "cloth",
                    "pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
-                                            "metallicFactor": 0.0}}],
+                                            "metallicFactor": 0.0}},
+                  {"name": "rope", "pbrMetallicRoughness": {"metallicFactor": 0.0}}],
     "textures": [{"source": 0}],
     "images": [{"uri": "flag.png"}],
     "buffers": [{"byteLength": len(blob),

@@ -1,5 +1,6 @@
 // `dinam info`: the model summary, for a person or (--json) for a script such as the Slurm farm.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -38,9 +39,14 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
                 Index pinned) {
   const MemoryFigures memory = memory_figures(scene, model);
   nlohmann::ordered_json objects = nlohmann::ordered_json::array();
-  for (const ModelObject& object : model.objects) {
-    objects.push_back(
-        {{"name", object.name}, {"nodes", object.node_count}, {"bars", object.bar_count}});
+  for (std::size_t k = 0; k < model.objects.size(); ++k) {
+    const ModelObject& object = model.objects[k];
+    const RawMesh& mesh = scene.objects[k].mesh;
+    objects.push_back({{"name", object.name},
+                       {"nodes", object.node_count},
+                       {"bars", object.bar_count},
+                       {"mesh_materials", element_names(mesh, MeshNameKind::kMaterial)},
+                       {"mesh_groups", element_names(mesh, MeshNameKind::kGroup)}});
   }
   const nlohmann::ordered_json json = {
       {"scene", scene.source.string()},
@@ -75,8 +81,18 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
   const int frames = scene.frame_count();
   fmt::print("scene            {} ('{}')\n", scene.source.string(), scene.name);
   fmt::print("objects          {}\n", model.objects.size());
-  for (const ModelObject& object : model.objects) {
+  for (std::size_t k = 0; k < model.objects.size(); ++k) {
+    const ModelObject& object = model.objects[k];
     fmt::print("  {:<14} {} nodes, {} bars\n", object.name, object.node_count, object.bar_count);
+    // The names a part can choose bars by (`mesh_material`, `mesh_group`).
+    const RawMesh& mesh = scene.objects[k].mesh;
+    for (const auto& [kind, label] : {std::pair{MeshNameKind::kMaterial, "materials"},
+                                      std::pair{MeshNameKind::kGroup, "groups"}}) {
+      const std::vector<std::string> names = element_names(mesh, kind);
+      if (!names.empty()) {
+        fmt::print("  {:<14} the mesh file's {}: {}\n", "", label, fmt::join(names, ", "));
+      }
+    }
   }
   fmt::print("nodes            {} ({} pinned)\n", model.node_count(), pinned);
   fmt::print("bars             {}\n", model.bar_count());

@@ -86,6 +86,51 @@ std::vector<Index> select_nodes(const NodeSelection& selection, const ObjectNode
   return nodes;
 }
 
+// The part each edge belongs to (the last that holds it), or −1. A node selection holds the edges
+// whose two ends it holds; a mesh material or group, the sides of its faces and lines.
+std::vector<int> edge_parts(const ObjectDesc& object, const WeldResult& weld,
+                            const std::vector<Edge>& edges,
+                            const std::vector<Index>& node_of_welded, const ObjectNodes& nodes,
+                            const Model& model) {
+  std::vector<int> part_of_edge(edges.size(), -1);
+  const ModelObject& info = model.objects[nodes.object_id];
+  std::vector<bool> chosen(info.node_count);
+  for (std::size_t p = 0; p < object.parts.size(); ++p) {
+    const MaterialPartDesc& part = object.parts[p];
+    const int id = static_cast<int>(p);
+    if (!part.nodes.empty()) {
+      std::fill(chosen.begin(), chosen.end(), false);
+      for (const Index node : select_nodes(part.nodes, nodes, model)) {
+        chosen[node - info.first_node] = true;
+      }
+      for (std::size_t e = 0; e < edges.size(); ++e) {
+        if (chosen[node_of_welded[edges[e].first] - info.first_node] &&
+            chosen[node_of_welded[edges[e].second] - info.first_node]) {
+          part_of_edge[e] = id;
+        }
+      }
+    }
+    // The sides of the part's faces (closed loops) and lines (open chains).
+    auto mark = [&](const std::vector<Index>& loop, bool closed) {
+      const std::size_t sides = closed ? loop.size() : loop.size() - 1;
+      for (std::size_t i = 0; i < sides; ++i) {
+        const Index a = weld.node_of_vertex[loop[i]];
+        const Index b = weld.node_of_vertex[loop[(i + 1) % loop.size()]];
+        const Edge edge(std::min(a, b), std::max(a, b));
+        const auto at = std::lower_bound(edges.begin(), edges.end(), edge);
+        part_of_edge[static_cast<std::size_t>(at - edges.begin())] = id;
+      }
+    };
+    for (const Index f : part.mesh_faces) {
+      mark(object.mesh.faces[f], true);
+    }
+    for (const Index l : part.mesh_lines) {
+      mark(object.mesh.lines[l], false);
+    }
+  }
+  return part_of_edge;
+}
+
 ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) {
   const WeldResult weld = weld_vertices(object.mesh.vertices, weld_tolerance(object.mesh.vertices));
   const std::vector<Edge> edges = unique_edges(object, weld);
@@ -139,22 +184,15 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) 
     nodes.node_of_vertex.push_back(node_of_welded[w]);
   }
 
-  // Each bar's material: the last part holding both its ends, else the object's.
-  const Index first_node = model.objects.back().first_node;
-  std::vector<int> part_of_node(model.objects.back().node_count, -1);
-  for (std::size_t p = 0; p < object.parts.size(); ++p) {
-    for (const Index node : select_nodes(object.parts[p].nodes, nodes, model)) {
-      part_of_node[node - first_node] = static_cast<int>(p);
-    }
-  }
-  // Each bar's mass ρ A L0 goes half to each end.
-  for (const auto& [a, b] : edges) {
-    const Index n0 = node_of_welded[a];
-    const Index n1 = node_of_welded[b];
-    const int part0 = part_of_node[n0 - first_node];
-    const int part1 = part_of_node[n1 - first_node];
+  // Each bar's material: the last part holding it, else the object's. Each bar's mass ρ A L0 goes
+  // half to each end.
+  const std::vector<int> part_of_edge =
+      edge_parts(object, weld, edges, node_of_welded, nodes, model);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const Index n0 = node_of_welded[edges[e].first];
+    const Index n1 = node_of_welded[edges[e].second];
     const MaterialDesc& material =
-        part0 >= 0 && part0 == part1 ? object.parts[part0].material : object.material;
+        part_of_edge[e] >= 0 ? object.parts[part_of_edge[e]].material : object.material;
     nodes.bar_materials.push_back(&material);
     const double rest_length = (model.node_initial_x[n1] - model.node_initial_x[n0]).norm();
     model.bar_nodes.push_back(n0);
@@ -370,6 +408,7 @@ Model build_model(const SceneDescription& scene) {
     }
   }
   std::vector<BarMaterials> bar_materials;
+  bar_materials.reserve(objects.size());
   for (const ObjectNodes& object : objects) {
     bar_materials.push_back(object.bar_materials);
   }

@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <assimp/Importer.hpp>
 #include <cerrno>
@@ -22,13 +23,37 @@
 namespace dinam {
 namespace {
 
+// The id in `mesh.origins` of elements of `material` held by `groups`, added if new.
+Index origin_id(std::string material, std::vector<std::string> groups, RawMesh& mesh) {
+  for (std::size_t k = 0; k < mesh.origins.size(); ++k) {
+    if (mesh.origins[k].material == material && mesh.origins[k].groups == groups) {
+      return static_cast<Index>(k);
+    }
+  }
+  mesh.origins.push_back({std::move(material), std::move(groups)});
+  return static_cast<Index>(mesh.origins.size() - 1);
+}
+
 // Appends every mesh a node holds, moved by the node's transform, then recurses into its
-// children. A mesh used by two nodes is added twice, as the file means.
+// children. A mesh used by two nodes is added twice, as the file means. `groups` holds the names
+// of the nodes above this one (an OBJ file's `o` and `g` are nodes below the root).
 void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent_from_node,
-              RawMesh& mesh) {
+              std::vector<std::string> groups, RawMesh& mesh) {
   const aiMatrix4x4 world_from_node = parent_from_node * node.mTransformation;
+  if (node.mName.length > 0 && node.mParent != nullptr) {  // the root is named after the file
+    groups.emplace_back(node.mName.C_Str());
+  }
   for (unsigned k = 0; k < node.mNumMeshes; ++k) {
     const aiMesh* ai_mesh = scene.mMeshes[node.mMeshes[k]];
+    std::vector<std::string> mesh_groups = groups;
+    if (ai_mesh->mName.length > 0 && (groups.empty() || groups.back() != ai_mesh->mName.C_Str())) {
+      mesh_groups.emplace_back(ai_mesh->mName.C_Str());
+    }
+    aiString material;
+    if (ai_mesh->mMaterialIndex < scene.mNumMaterials) {
+      scene.mMaterials[ai_mesh->mMaterialIndex]->Get(AI_MATKEY_NAME, material);
+    }
+    const Index origin = origin_id(material.C_Str(), std::move(mesh_groups), mesh);
     const auto base = static_cast<Index>(mesh.vertices.size());
     for (unsigned v = 0; v < ai_mesh->mNumVertices; ++v) {
       const aiVector3D p = world_from_node * ai_mesh->mVertices[v];
@@ -48,13 +73,15 @@ void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& paren
       // assimp stores a line element as a 2-index face and a point as a 1-index face.
       if (ids.size() == 2) {
         mesh.lines.push_back(std::move(ids));
+        mesh.line_origin.push_back(origin);
       } else if (ids.size() >= 3) {
         mesh.faces.push_back(std::move(ids));
+        mesh.face_origin.push_back(origin);
       }
     }
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c) {
-    add_node(scene, *node.mChildren[c], world_from_node, mesh);
+    add_node(scene, *node.mChildren[c], world_from_node, groups, mesh);
   }
 }
 
@@ -74,7 +101,7 @@ RawMesh mesh_from_scene(const aiScene& scene, const std::filesystem::path& folde
     }
   }
   if (scene.mRootNode != nullptr) {
-    add_node(scene, *scene.mRootNode, aiMatrix4x4(), mesh);
+    add_node(scene, *scene.mRootNode, aiMatrix4x4(), {}, mesh);
   }
   return mesh;
 }
@@ -119,14 +146,62 @@ std::string serialize(const RawMesh& mesh) {
   }
   const std::string texture = mesh.texture.string();
   put_array(out, texture.data(), texture.size());
+  put_array(out, mesh.face_origin.data(), mesh.face_origin.size());
+  put_array(out, mesh.line_origin.data(), mesh.line_origin.size());
+  // Each origin as its group count, then its material and groups as zero-ended names.
+  std::vector<Index> group_counts;
+  std::vector<char> names;
+  for (const MeshElementOrigin& origin : mesh.origins) {
+    group_counts.push_back(static_cast<Index>(origin.groups.size()));
+    names.insert(names.end(), origin.material.begin(), origin.material.end());
+    names.push_back('\0');
+    for (const std::string& group : origin.groups) {
+      names.insert(names.end(), group.begin(), group.end());
+      names.push_back('\0');
+    }
+  }
+  put_array(out, group_counts.data(), group_counts.size());
+  put_array(out, names.data(), names.size());
   return out;
+}
+
+// Reads the origins `serialize` wrote: each one's material, then its groups.
+bool get_origins(const std::vector<Index>& group_counts, const std::vector<char>& names,
+                 RawMesh& mesh) {
+  std::size_t at = 0;
+  auto next_name = [&](std::string& name) {
+    const auto end = std::find(names.begin() + static_cast<std::ptrdiff_t>(at), names.end(), '\0');
+    if (end == names.end()) {
+      return false;
+    }
+    name.assign(names.begin() + static_cast<std::ptrdiff_t>(at), end);
+    at = static_cast<std::size_t>(end - names.begin()) + 1;
+    return true;
+  };
+  for (const Index count : group_counts) {
+    MeshElementOrigin& origin = mesh.origins.emplace_back();
+    origin.groups.resize(static_cast<std::size_t>(std::max<Index>(count, 0)));
+    if (!next_name(origin.material)) {
+      return false;
+    }
+    for (std::string& group : origin.groups) {
+      if (!next_name(group)) {
+        return false;
+      }
+    }
+  }
+  return at == names.size();
 }
 
 bool deserialize(std::string_view in, RawMesh& mesh) {
   std::vector<Index> flat[2];
   std::vector<char> texture;
+  std::vector<Index> group_counts;
+  std::vector<char> names;
   if (!get_array(in, mesh.vertices) || !get_array(in, mesh.uvs) || !get_array(in, flat[0]) ||
-      !get_array(in, flat[1]) || !get_array(in, texture) || !in.empty()) {
+      !get_array(in, flat[1]) || !get_array(in, texture) || !get_array(in, mesh.face_origin) ||
+      !get_array(in, mesh.line_origin) || !get_array(in, group_counts) || !get_array(in, names) ||
+      !in.empty() || !get_origins(group_counts, names, mesh)) {
     return false;
   }
   auto* loops = &mesh.faces;

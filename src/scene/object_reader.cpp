@@ -1,6 +1,7 @@
 // The readers of a scene's objects: material, mesh (file, grid or polyline) and its placement,
 // pinned and other node sets, velocities, drawing. Each reads every key it knows and finishes its
 // map; docs/scene-format.md documents every key read here; keep the two together.
+#include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -225,6 +226,47 @@ BoxDesc read_box(YamlMap map) {
   return box;
 }
 
+// One entry of an object's `parts`: which bars (exactly one of `nodes`, `mesh_material`,
+// `mesh_group`) and their `material`.
+MaterialPartDesc read_material_part(YamlMap part, const RawMesh& mesh) {
+  MaterialPartDesc desc;
+  desc.loc = part.loc();
+  const int selectors =
+      int{part.has("nodes")} + int{part.has("mesh_material")} + int{part.has("mesh_group")};
+  if (selectors != 1) {
+    throw_user_error(part.loc(),
+                     "'{}' needs exactly one of 'nodes' (a node selection), 'mesh_material' or "
+                     "'mesh_group' (a name from the mesh file) to say which bars it holds",
+                     part.name());
+  }
+  if (part.has("nodes")) {
+    desc.nodes = read_nodes(YamlMap(part.get("nodes"), part.file(), part.path("nodes")),
+                            mesh.vertices.size());
+  } else {
+    const bool by_material = part.has("mesh_material");
+    const char* key = by_material ? "mesh_material" : "mesh_group";
+    const MeshNameKind kind = by_material ? MeshNameKind::kMaterial : MeshNameKind::kGroup;
+    const std::string name = part.string(key, "");
+    const MeshElementIds ids = elements_named(mesh, kind, name);
+    if (ids.empty()) {
+      const std::vector<std::string> names = element_names(mesh, kind);
+      throw_user_error(part.loc(key), "'{}': no face or line of the mesh has the {} '{}'; {}",
+                       part.path(key), by_material ? "material" : "group", name,
+                       names.empty()
+                           ? fmt::format("the mesh names no {}s (only a mesh file can)",
+                                         by_material ? "material" : "group")
+                           : fmt::format("its {}s are {}", by_material ? "material" : "group",
+                                         fmt::join(names, ", ")));
+    }
+    desc.mesh_faces = ids.faces;
+    desc.mesh_lines = ids.lines;
+  }
+  desc.material =
+      read_material(YamlMap(part.required("material"), part.file(), part.path("material")));
+  part.finish();
+  return desc;
+}
+
 }  // namespace
 
 void require_positive(double value, const FileLoc& loc, const std::string& what, const char* unit) {
@@ -325,19 +367,14 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   }
   if (const YAML::Node parts = map.get("parts"); parts) {
     if (!parts.IsSequence()) {
-      throw_user_error(map.loc("parts"), "'{}' must be a list of {{nodes: ..., material: ...}}",
+      throw_user_error(map.loc("parts"),
+                       "'{}' must be a list of {{nodes | mesh_material | mesh_group: ..., "
+                       "material: ...}}",
                        map.path("parts"));
     }
     for (std::size_t i = 0; i < parts.size(); ++i) {
-      YamlMap part(parts[i], map.file(), fmt::format("{}[{}]", map.path("parts"), i));
-      MaterialPartDesc desc;
-      desc.loc = part.loc();
-      desc.nodes = read_nodes(YamlMap(part.required("nodes"), map.file(), part.path("nodes")),
-                              object.mesh.vertices.size());
-      desc.material =
-          read_material(YamlMap(part.required("material"), map.file(), part.path("material")));
-      part.finish();
-      object.parts.push_back(std::move(desc));
+      object.parts.push_back(read_material_part(
+          YamlMap(parts[i], map.file(), fmt::format("{}[{}]", map.path("parts"), i)), object.mesh));
     }
   }
   const std::string pairs = map.string("bending_pairs", "auto");

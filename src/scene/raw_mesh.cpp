@@ -1,6 +1,7 @@
 #include "scene/raw_mesh.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -15,6 +16,51 @@ constexpr double kMaxCoordinate = 1e6;  // m
 constexpr std::size_t kMaxMeshVertices = 50'000'000;
 
 }  // namespace
+
+namespace {
+
+bool origin_has(const MeshElementOrigin& origin, MeshNameKind kind, const std::string& name) {
+  return kind == MeshNameKind::kMaterial
+             ? origin.material == name
+             : std::find(origin.groups.begin(), origin.groups.end(), name) != origin.groups.end();
+}
+
+}  // namespace
+
+MeshElementIds elements_named(const RawMesh& mesh, MeshNameKind kind, const std::string& name) {
+  MeshElementIds ids;
+  for (std::size_t f = 0; f < mesh.face_origin.size(); ++f) {
+    if (origin_has(mesh.origins[mesh.face_origin[f]], kind, name)) {
+      ids.faces.push_back(static_cast<Index>(f));
+    }
+  }
+  for (std::size_t l = 0; l < mesh.line_origin.size(); ++l) {
+    if (origin_has(mesh.origins[mesh.line_origin[l]], kind, name)) {
+      ids.lines.push_back(static_cast<Index>(l));
+    }
+  }
+  return ids;
+}
+
+std::vector<std::string> element_names(const RawMesh& mesh, MeshNameKind kind) {
+  std::vector<std::string> names;
+  auto add = [&names](const std::string& name) {
+    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) {
+      names.push_back(name);
+    }
+  };
+  for (const auto* ids : {&mesh.face_origin, &mesh.line_origin}) {
+    for (const Index id : *ids) {
+      const MeshElementOrigin& origin = mesh.origins[id];
+      if (kind == MeshNameKind::kMaterial) {
+        add(origin.material);
+      } else {
+        std::for_each(origin.groups.begin(), origin.groups.end(), add);
+      }
+    }
+  }
+  return names;
+}
 
 void check_mesh_values(const RawMesh& mesh, const FileLoc& where, const std::string& what) {
   if (mesh.vertices.size() > kMaxMeshVertices) {
@@ -35,6 +81,18 @@ void check_mesh_values(const RawMesh& mesh, const FileLoc& where, const std::str
                            vertex_count - 1);
         }
       }
+    }
+  }
+  for (const auto* ids : {&mesh.face_origin, &mesh.line_origin}) {
+    const std::size_t count = ids == &mesh.face_origin ? mesh.faces.size() : mesh.lines.size();
+    const bool consistent =
+        ids->empty() ||
+        (ids->size() == count && std::all_of(ids->begin(), ids->end(), [&](Index id) {
+           return id >= 0 && static_cast<std::size_t>(id) < mesh.origins.size();
+         }));
+    if (!consistent) {
+      throw_user_error(where, "the materials and groups of {} do not match its elements; mend it",
+                       what);
     }
   }
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {

@@ -11,15 +11,44 @@
 
 namespace dinam {
 
+// Where in a mesh file an element came from: the name of its material and the names of the
+// groups holding it (for OBJ, its `o` and `g` names; for glTF and the rest, its mesh and the nodes
+// above it). A scene's `parts` choose materials by these names.
+struct MeshElementOrigin {
+  std::string material;             // empty when the file names none
+  std::vector<std::string> groups;  // outermost first; empty names left out
+};
+
 struct RawMesh {
   std::vector<Vec3> vertices;             // (n_vertices), metres, in world space
   std::vector<std::vector<Index>> faces;  // closed loops of vertex ids: every side is an edge
   std::vector<std::vector<Index>> lines;  // open chains of vertex ids: every segment is an edge
   std::filesystem::path texture;     // the diffuse texture a mesh file's material names, if any
   std::vector<Eigen::Vector2d> uvs;  // (n_vertices) texture coordinates, v from the top; or empty
+  // A file's materials and groups: each face and line names its origin. Empty for generated meshes.
+  std::vector<MeshElementOrigin> origins;
+  std::vector<Index> face_origin;  // (n_faces) into origins, or empty
+  std::vector<Index> line_origin;  // (n_lines) into origins, or empty
 
   bool has_edges() const;
 };
+
+// The two kinds of name a mesh file gives its elements.
+enum class MeshNameKind { kMaterial, kGroup };
+
+// The faces and lines of a mesh that carry one name.
+struct MeshElementIds {
+  std::vector<Index> faces;  // ids into RawMesh::faces, increasing
+  std::vector<Index> lines;  // ids into RawMesh::lines, increasing
+
+  bool empty() const { return faces.empty() && lines.empty(); }
+};
+
+// The elements whose material is `name` (kMaterial) or that any group named `name` holds (kGroup).
+MeshElementIds elements_named(const RawMesh& mesh, MeshNameKind kind, const std::string& name);
+
+// The distinct non-empty material or group names of a mesh's elements, in order of first use.
+std::vector<std::string> element_names(const RawMesh& mesh, MeshNameKind kind);
 
 // Object-to-world placement, applied to a mesh as scale, then rotation, then translation.
 struct Transform {

@@ -97,10 +97,13 @@ struct PinMotionDesc {
   bool moving() const { return !displacement.isZero(); }
 };
 
-// A part of an object made of another material: every bar whose two ends are both in `nodes`
-// (later parts win over earlier ones; other bars keep the object's material).
+// A part of an object made of another material: every bar whose two ends are both in `nodes`,
+// and every edge of the listed mesh faces and lines (those of one of the mesh file's materials or
+// groups). Later parts win over earlier ones; other bars keep the object's material.
 struct MaterialPartDesc {
   NodeSelection nodes;
+  std::vector<Index> mesh_faces;  // ids into the object's mesh.faces
+  std::vector<Index> mesh_lines;  // ids into the object's mesh.lines
   MaterialDesc material;
   FileLoc loc;
 };
@@ -114,7 +117,7 @@ struct ObjectDesc {
   RawMesh mesh;  // in world space
   FileLoc mesh_loc;
   MaterialDesc material;
-  std::vector<MaterialPartDesc> parts;  // bars of other materials, by node selection
+  std::vector<MaterialPartDesc> parts;  // bars of other materials
   PinDesc pins;
   bool pins_clamped = false;  // the pinned nodes hold the direction of their bars as well
   PinMotionDesc pin_motion;   // none by default: pinned nodes stay where they are

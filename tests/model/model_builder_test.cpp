@@ -125,6 +125,53 @@ objects:
   }
 }
 
+// banner.obj (tests/data) with its rope lines in another material, chosen by the file's material
+// name or by its group: the two 0.5 m rope bars take the rope's EA/L and mass, the cloth's four
+// sides and diagonal keep the object's. A later part wins over an earlier one.
+TEST(ModelBuilder, PartsByTheMeshFilesMaterialsAndGroups) {
+  const double cloth_area = 1e-4;
+  const double rope_area = 4e-4;
+  auto banner = [](const std::string& parts) {
+    return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - mesh: {{file: banner.obj}}
+    material: {{density: 1000, youngs_modulus: 1.0e6, area: 1.0e-4}}
+    parts:
+{})",
+                                                         parts)));
+  };
+  const std::string rope_material =
+      "material: {density: 1500, youngs_modulus: 3.0e6, area: 4.0e-4}";
+  for (const std::string selector : {"mesh_material: rope", "mesh_group: ropes"}) {
+    const Model model = banner(fmt::format("      - {{{}, {}}}\n", selector, rope_material));
+    ASSERT_EQ(model.bar_count(), 7);
+    int rope_bars = 0;
+    for (Index b = 0; b < model.bar_count(); ++b) {
+      const double length = model.bar_rest_length[b];
+      const bool rope = std::abs(length - 0.5) < 1e-12;  // only the rope's bars are 0.5 m
+      rope_bars += rope ? 1 : 0;
+      EXPECT_DOUBLE_EQ(model.bar_axial_stiffness[b],
+                       rope ? 3.0e6 * rope_area / length : 1.0e6 * cloth_area / length)
+          << selector << ", bar " << b;
+    }
+    EXPECT_EQ(rope_bars, 2) << selector;
+    EXPECT_NEAR(model.total_mass(),
+                1000 * cloth_area * (4.0 + std::sqrt(2.0)) + 1500 * rope_area * 1.0, 1e-15)
+        << selector;
+  }
+  // The cloth in the rope's material, then its bottom side back in the object's by a later part.
+  const Model later = banner(fmt::format(
+      "      - {{mesh_group: cloth, {}}}\n"
+      "      - {{nodes: {{box: {{min: [-1, -1, -1], max: [2, 1, 0.5]}}}}, material: {{density: "
+      "1000, youngs_modulus: 1.0e6, area: 1.0e-4}}}}\n",
+      rope_material));
+  // In the box: the bottom side (the tail is the object's anyway); the hanger was never a part's.
+  EXPECT_NEAR(later.total_mass(),
+              1500 * rope_area * (3.0 + std::sqrt(2.0)) + 1000 * cloth_area * (1.0 + 0.5 + 0.5),
+              1e-15);
+}
+
 TEST(ModelBuilder, ObjectsGetContiguousRanges) {
   const Model model = build_model(test::scene_from_yaml(R"(version: 1
 duration: 1

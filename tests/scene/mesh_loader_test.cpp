@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "model/model.hpp"
+#include "scene/mesh_generators.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
@@ -65,6 +66,41 @@ TEST(MeshLoader, GltfPyramidKeepsItsNodeTransform) {
     lowest = std::min(lowest, p.z());
   }
   EXPECT_DOUBLE_EQ(lowest, 2.0);  // the glTF node's translation (0, 0, 2) was applied
+}
+
+// banner.obj: two triangles in group "cloth" of material "fabric", two lines in group "ropes" of
+// material "rope" (see the file). Every element keeps where it came from.
+TEST(MeshLoader, FacesAndLinesKeepTheFilesMaterialsAndGroups) {
+  const RawMesh mesh = load_mesh_file(test::data_dir() / "banner.obj", {});
+  ASSERT_EQ(mesh.faces.size(), 2u);
+  ASSERT_EQ(mesh.lines.size(), 2u);
+  using Names = std::vector<std::string>;
+  EXPECT_EQ(element_names(mesh, MeshNameKind::kMaterial), (Names{"fabric", "rope"}));
+  EXPECT_EQ(element_names(mesh, MeshNameKind::kGroup), (Names{"cloth", "ropes"}));
+  const MeshElementIds rope = elements_named(mesh, MeshNameKind::kMaterial, "rope");
+  EXPECT_TRUE(rope.faces.empty());
+  EXPECT_EQ(rope.lines, (std::vector<Index>{0, 1}));
+  const MeshElementIds cloth = elements_named(mesh, MeshNameKind::kGroup, "cloth");
+  EXPECT_EQ(cloth.faces, (std::vector<Index>{0, 1}));
+  EXPECT_TRUE(cloth.lines.empty());
+  EXPECT_TRUE(elements_named(mesh, MeshNameKind::kMaterial, "cloth").empty());  // a group's name
+  // A generated mesh names nothing.
+  const RawMesh generated = make_grid({.width = 1.0, .height = 1.0});
+  EXPECT_TRUE(element_names(generated, MeshNameKind::kMaterial).empty());
+}
+
+// glTF: the paper's flag names its cloth's material "cloth" and its ropes' "rope", and its mesh
+// primitives become groups of their own below the file's node (assimp names them "paper_flag-0"
+// and "paper_flag-1"): 330 triangles and the 58 rope segments of scripts/make-paper-flag.py.
+TEST(MeshLoader, GltfPrimitivesKeepTheirMaterials) {
+  const RawMesh mesh = load_mesh_file(test::data_dir() / "../../assets/paper_flag.gltf", {});
+  const MeshElementIds rope = elements_named(mesh, MeshNameKind::kMaterial, "rope");
+  const MeshElementIds cloth = elements_named(mesh, MeshNameKind::kMaterial, "cloth");
+  EXPECT_EQ(rope.lines.size(), 58u);
+  EXPECT_TRUE(rope.faces.empty());
+  EXPECT_EQ(cloth.faces.size(), 330u);
+  EXPECT_TRUE(cloth.lines.empty());
+  EXPECT_EQ(elements_named(mesh, MeshNameKind::kGroup, "paper_flag-1").lines, rope.lines);
 }
 
 TEST(MeshLoader, MaterialTextureAndTextureCoordinatesComeFromTheFile) {
