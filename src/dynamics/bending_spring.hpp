@@ -1,8 +1,10 @@
 #pragma once
 // Bending springs: a rotational spring at node c between the bars c–a and c–b, on the angle θ
 // between them, elastoplastic in θ − θ0.
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/geometry.hpp"
 #include "core/types.hpp"
@@ -33,6 +35,8 @@ struct BendingSpringResult {
     double plastic_set = 0.0, double yield = std::numeric_limits<double>::infinity()) {
   // Below this sine of θ, |n| / (|e1| |e2|), the in-plane directions are lost in rounding.
   constexpr double kMinSine = 1e-9;
+  // The widest deflection from straight (rad) over which a bent rest's cone point is rounded.
+  constexpr double kStraightCap = 0.05;
   const Vec3 e1 = xa - xc;
   const Vec3 e2 = xb - xc;
   const double l1_squared = dot3(e1, e1);
@@ -44,16 +48,35 @@ struct BendingSpringResult {
   const double measured = fast_atan2(n_norm, dot3(e1, e2));
   const double angle = lengths_squared > 0.0 ? measured : rest_angle + plastic_set;
   const ElastoplasticResult r = elastoplastic(angle - rest_angle, plastic_set, stiffness, yield);
+  // Near straight, a spring whose rest is bent by ψ0 > 0 would have a cone point (see above);
+  // within ψ < w = min(ψ0, kStraightCap) its energy is the even quartic a + b ψ² + c ψ⁴ that meets
+  // ½ k (ψ0 − ψ)² at w with the same value, slope and curvature. No plastic flow there: the
+  // quartic's moment is at most the line's, and is held to the yield moment.
+  const double rest_deflection = std::numbers::pi - rest_angle - plastic_set;  // ψ0
+  const double deflection = std::numbers::pi - angle;                          // ψ
+  const double width = std::min(rest_deflection, kStraightCap);
+  const bool capped = rest_deflection > 0.0 && deflection < width;
+  const double w = capped ? width : 1.0;
+  const double inverse_width = 1.0 / w;
+  const double ratio = rest_deflection * inverse_width;  // ψ0 / w ≥ 1
+  const double quartic = 0.125 * stiffness * ratio * inverse_width * inverse_width;  // k ψ0 / 8w³
+  const double quadratic = stiffness * (0.5 - 0.75 * ratio);                         // b
+  const double psi2 = deflection * deflection;
+  const double cap_moment =
+      std::clamp(-(2.0 * quadratic + 4.0 * quartic * psi2) * deflection, -yield, yield);  // dE/dθ
+  const double cap_energy = 0.5 * stiffness * (rest_deflection - w) * (rest_deflection - w) +
+                            quadratic * (psi2 - w * w) + quartic * (psi2 * psi2 - w * w * w * w);
+  const double moment = capped ? cap_moment : r.force;
   const bool has_plane = n_squared > kMinSine * kMinSine * lengths_squared;
-  const double quotient = r.force / (has_plane ? n_norm * lengths_squared : 1.0);
+  const double quotient = moment / (has_plane ? n_norm * lengths_squared : 1.0);
   const double scale = has_plane ? quotient : 0.0;  // M / (|e1|² |e2|² |n|)
   BendingSpringResult result;
   result.force_a = (-scale * l2_squared) * cross3(e1, n);
   result.force_b = (-scale * l1_squared) * cross3(n, e2);
   result.force_c = -(result.force_a + result.force_b);
-  result.energy = r.energy;
-  result.plastic_set = r.plastic_set;
-  result.dissipated = r.dissipated;
+  result.energy = capped ? cap_energy : r.energy;
+  result.plastic_set = capped ? plastic_set : r.plastic_set;
+  result.dissipated = capped ? 0.0 : r.dissipated;
   return result;
 }
 

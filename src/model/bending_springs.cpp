@@ -1,9 +1,18 @@
 #include <algorithm>
+#include <numbers>
 
 #include "core/geometry.hpp"
 #include "model/spring_builders.hpp"
 
 namespace dinam {
+namespace {
+
+// Rest angles closer to straight than this (rad) are rounding, not a bend: a mesh written to six
+// decimals (as Blender writes OBJ) holds a 1 cm bar's ends to 5e-7 m, 5e-5 rad; and no real wire
+// is built bent by a hundredth of a millimetre per metre.
+constexpr double kStraightRounding = 1e-4;
+
+}  // namespace
 
 NodeAdjacency node_adjacency(const Model& model, const ModelObject& object) {
   NodeAdjacency adjacency(object.node_count);
@@ -71,8 +80,12 @@ void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
       const MaterialDesc& m1 = *materials[bars[p].second - object.first_bar];
       const MaterialDesc& m2 = *materials[bars[q].second - object.first_bar];
       model.bend_nodes.insert(model.bend_nodes.end(), {a, c, b});
-      model.bend_rest_angle.push_back(
-          bend_angle(model.node_initial_x[a], xc, model.node_initial_x[b]));
+      // A rest angle within 1e-4 rad of straight is rounding in the mesh's coordinates: it is
+      // made straight, so that the spring's energy is smooth and least there (a bent rest has its
+      // least energy on a cone of directions around straight; see bending_spring.hpp).
+      const double rest = bend_angle(model.node_initial_x[a], xc, model.node_initial_x[b]);
+      model.bend_rest_angle.push_back(std::numbers::pi - rest < kStraightRounding ? std::numbers::pi
+                                                                                  : rest);
       // A beam's bending energy ∫ EI κ²/2 over the length (L1 + L2)/2 that the node stands for,
       // with κ ≈ Δθ / ((L1 + L2)/2), is ½ k Δθ² with k = 2 EI / (L1 + L2); with two materials
       // the two half-bars turn through the same Δθ as rotational springs in series.

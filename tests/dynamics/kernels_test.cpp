@@ -208,6 +208,52 @@ TEST(BendingSpring, StraightBarsGiveNoNaNAndNoSpike) {
   }
 }
 
+// A spring whose rest is bent by ψ0 has, on ½ k (ψ0 − ψ)² alone, a cone point at straight (ψ = 0):
+// its force jumps from k ψ0 one way to k ψ0 the other as the bars pass through straight, which
+// central differences turn into an energy error at each crossing. Within ψ < w = min(ψ0, 0.05)
+// the energy is an even quartic instead: the force is still minus the energy's gradient there and
+// through straight, fades like ψ, and value and force are continuous where it meets the parabola.
+TEST(BendingSpring, BentRestIsSmoothThroughStraight) {
+  const double k = 2.0;
+  const double pi = std::numbers::pi;
+  auto bent = [](double psi) { return Vec3(std::cos(psi), std::sin(psi), 0.0); };
+  const Vec3 xa(-1, 0, 0), xc(0, 0, 0);
+  for (const double rest_deflection : {0.004, 0.3}) {
+    const double rest = pi - rest_deflection;
+    const double w = std::min(rest_deflection, 0.05);
+    for (const double psi : {0.0, 1e-7, 1e-4, 0.5 * w, 0.999 * w, 1.001 * w, 2.0 * w}) {
+      const std::vector<Vec3> x = {xa, xc, bent(psi)};
+      const BendingSpringResult r = bending_spring(x[0], x[1], x[2], rest, k);
+      ASSERT_TRUE(r.force_b.allFinite());
+      if (psi > 1e-5) {  // the finite-difference step must not cross straight in a kink-free test
+        expect_force_is_minus_gradient(x, {r.force_a, r.force_c, r.force_b}, [&](const auto& y) {
+          return bending_spring(y[0], y[1], y[2], rest, k).energy;
+        });
+      }
+      if (psi < w) {
+        // |M| ≤ (3 ψ0 / 2w − 1) k ψ near straight (the quartic's curvature there), not k ψ0.
+        EXPECT_LE(r.force_b.norm(), (1.5 * rest_deflection / w) * k * psi + 1e-15) << psi;
+      }
+    }
+    // Through straight itself: the energy is even in ψ and its gradient across is continuous.
+    const std::vector<Vec3> straight = {xa, xc, bent(0.0)};
+    const BendingSpringResult at_straight = bending_spring(xa, xc, bent(0.0), rest, k);
+    expect_force_is_minus_gradient(
+        straight, {at_straight.force_a, at_straight.force_c, at_straight.force_b},
+        [&](const auto& y) { return bending_spring(y[0], y[1], y[2], rest, k).energy; });
+    // Where the quartic meets the parabola, value and force agree to first order in the gap.
+    const double gap = 1e-9;
+    const BendingSpringResult inside = bending_spring(xa, xc, bent(w - gap), rest, k);
+    const BendingSpringResult outside = bending_spring(xa, xc, bent(w + gap), rest, k);
+    EXPECT_NEAR(inside.energy, 0.5 * k * (rest_deflection - w) * (rest_deflection - w), 1e-8);
+    EXPECT_NEAR(inside.energy, outside.energy, 1e-8);
+    EXPECT_NEAR(inside.force_b.norm(), outside.force_b.norm(), 1e-6);
+    if (rest_deflection <= 0.05) {  // the full quartic k (ψ² − ψ0²)² / 8ψ0²: k ψ0² / 8 at straight
+      EXPECT_NEAR(at_straight.energy, k * rest_deflection * rest_deflection / 8.0, 1e-12);
+    }
+  }
+}
+
 // An axial bar pulled past yield and released, by moving its end: the force plateaus at Ny once
 // the extension passes Ny/k, and after unloading to zero force the bar keeps Δmax − Ny/k.
 TEST(AxialSpring, PulledPastYieldPlateausAndKeepsAPermanentSet) {
