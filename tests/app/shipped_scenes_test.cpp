@@ -172,9 +172,9 @@ TEST(ShippedScenes, PaperFlagSettledShapeIsTheEquilibrium) {
 // included) within 0.1 % of its largest kinetic energy over the whole run at a fifth of the
 // paper's step. Central differences conserve a nearby energy to O(Δt²), and the breeze's sudden
 // start leaves energy in the flag's stiffest modes (its 4.3 cm rope bars, at 82 % of the stability
-// limit at 0.5 ms), so the balance wanders by 0.54 % at 0.5 ms, 0.16 % at 0.25 ms and 0.016 % at
+// limit at 0.5 ms), so the balance wanders by 0.34 % at 0.5 ms, 0.12 % at 0.25 ms and 0.037 % at
 // 0.1 ms. Before the torsion weighting by sines squared, the same run (thread ropes) wandered by
-// 1.4 % at 0.5 ms.
+// 1.4 % at 0.5 ms; before the bending springs were smooth through straight, 0.54 %.
 TEST(ShippedScenes, PaperFlagKeepsItsEnergyBalanceWithTorsion) {
   SceneDescription scene = shipped("flag");
   scene.timestep = 0.0005 / 5.0;
@@ -197,7 +197,7 @@ TEST(ShippedScenes, PaperFlagKeepsItsEnergyBalanceWithTorsion) {
 // 25 %: the thread is soft enough for the paper's 0.5 ms step, and the ties stretch by nearly a
 // fifth when the breeze first jerks the flag out), streams out along the field's +x on average,
 // never swings behind the pole or reaches the ground, and without damping its energy balance (field
-// work included) holds to 1 % of the largest kinetic energy at the paper's step (0.54 % measured;
+// work included) holds to 1 % of the largest kinetic energy at the paper's step (0.34 % measured;
 // the next test takes it to 0.1 %). Without the field the flag does not stream out (the control).
 TEST(ShippedScenes, PaperFlagStaysAttachedAndStreamsAlongTheField) {
   SceneDescription scene = shipped("flag");
