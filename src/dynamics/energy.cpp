@@ -4,6 +4,7 @@
 #include "dynamics/bending_spring.hpp"
 #include "dynamics/clamp_spring.hpp"
 #include "dynamics/ground_contact.hpp"
+#include "dynamics/object_contact.hpp"
 #include "dynamics/torsion_spring.hpp"
 #include "model/model.hpp"
 
@@ -36,7 +37,7 @@ EnergyReport energy_report(const Model& model, const State& state,
   report.bending = bending_spring_energy(model, state) + clamp_spring_energy(model, state);
   report.torsion = torsion_spring_energy(model, state);
   report.gravitational = gravitational_energy(model, state.x);
-  report.contact = ground_contact_energy(model, state);
+  report.contact = ground_contact_energy(model, state) + object_contact_energy(state);
   report.accounts = state.energy;
   const EnergyAccounts& a = report.accounts;
   report.total = report.kinetic + report.axial + report.bending + report.torsion +

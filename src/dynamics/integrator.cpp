@@ -11,6 +11,7 @@
 #include "dynamics/field_forces.hpp"
 #include "dynamics/global_damping.hpp"
 #include "dynamics/ground_contact.hpp"
+#include "dynamics/object_contact.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/settle.hpp"
@@ -107,9 +108,13 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   if (switches.global_damping) {
     add_global_damping_forces(damping);
   }
-  // 5. Boundary conditions: the ground.
+  // 5. Boundary conditions: the ground, then contact between objects and within one.
   if (switches.ground) {
     add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
+                              ledger.enabled ? &ledger.friction : nullptr);
+  }
+  if (switches.object_contact) {
+    add_object_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
                               ledger.enabled ? &ledger.friction : nullptr);
   }
 }
@@ -148,9 +153,12 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
       part->assign(n, Vec3::Zero());
     }
     ledger.v_previous.assign(n, Vec3::Zero());
+  }
+  state.object_contact.dt = dt;
+  compute_forces(model, switches, state, false);
+  if (track_energy) {  // after the forces: contact between objects finds its pairs there
     ledger.last = energy_report(model, state, state.v_half);
   }
-  compute_forces(model, switches, state, false);
   for (Index i = 0; i < model.node_count(); ++i) {
     state.v_half[i] -= 0.5 * dt * model.node_inv_mass[i] * state.force[i];
   }
@@ -161,6 +169,7 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
   EnergyWorkspace& ledger = state.energy_workspace;
   // 0. Bars strained past their breaking limit at x_n break, with what stands on them.
   break_overloaded_bars(model, state);
+  state.object_contact.dt = dt;
   // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
   compute_forces(model, switches, state, true);
   if (ledger.enabled) {

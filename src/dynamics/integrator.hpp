@@ -20,6 +20,7 @@ struct ForceSwitches {
   bool global_damping = true;
   bool wind = true;
   bool ground = true;
+  bool object_contact = true;  // between objects and within one
 };
 
 // The state at t = 0: x_0 and v_0 from the model, and v_{−½} = v_0 − ½Δt a_0 so that the first

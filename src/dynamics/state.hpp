@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "dynamics/object_contact_state.hpp"
 
 namespace dinam {
 
@@ -12,8 +13,8 @@ namespace dinam {
 struct EnergyAccounts {
   double damping_work = 0.0;          // axial dampers and global viscous friction (≤ 0)
   double plastic_dissipation = 0.0;   // Σ yield × |Δ plastic set|, and torn springs (≥ 0)
-  double friction_work = 0.0;         // tangential ground forces (≤ 0 over a slide)
-  double contact_damping_work = 0.0;  // the ground's normal damping (≤ 0)
+  double friction_work = 0.0;         // tangential contact forces (≤ 0 over a slide)
+  double contact_damping_work = 0.0;  // contact normal damping (≤ 0)
   double wind_work = 0.0;             // aerodynamic drag
   double field_work = 0.0;            // field forces other than gravity
 
@@ -37,7 +38,7 @@ struct EnergyReport {
   double bending = 0.0;        // J
   double torsion = 0.0;        // J
   double gravitational = 0.0;  // J, Σ −m g·x
-  double contact = 0.0;        // J, elastic energy of the ground's normal penalty
+  double contact = 0.0;        // J, elastic energy of the normal penalties (ground, objects)
   EnergyAccounts accounts;
   double total = 0.0;  // kinetic + elastic + gravitational + contact − works + dissipation
 };
@@ -98,6 +99,8 @@ struct State {
   std::vector<std::uint8_t> contact_touching;  // (n_nodes) 1 while below the plane
   std::vector<std::uint8_t> contact_sliding;   // (n_nodes) 1 while sliding
 
+  // Contact between objects (empty unless the model has it).
+  ObjectContactWorkspace object_contact;
   EnergyAccounts energy;
   EnergyWorkspace energy_workspace;
   SettleOutcome settled;  // how the shape at t = 0 was reached

@@ -91,6 +91,19 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
     }
   }
 
+  // Contact between objects: a contact's stiffness is at most omega_squared times the lightest
+  // free mass it moves (or the given stiffness); the bound allows two at once on every node.
+  if (include_contact && model.contact.enabled) {
+    const ObjectContact& contact = model.contact;
+    for (Index i = 0; i < n; ++i) {
+      if (contact.point_radius[i] > 0.0) {
+        const double k = contact.omega_squared > 0.0 ? contact.omega_squared * model.node_mass[i]
+                                                     : contact.stiffness;
+        sums.diagonal[i] += 2.0 * k * Mat3::Identity();
+      }
+    }
+  }
+
   double bound = 0.0;
   for (Index i = 0; i < n; ++i) {
     if (model.pinned(i)) {

@@ -68,6 +68,29 @@ struct GroundContact {
   bool stick = false;                  // never slide
 };
 
+// Contact between objects and within one, as the dynamics sees it (dynamics/object_contact.hpp):
+// the bars as capsules and the faces, fanned into triangles, as shells, of each object's contact
+// radius; which objects touch which; and the penalty. Empty when the scene asks for no contact.
+struct ObjectContact {
+  bool enabled = false;
+  std::vector<std::uint8_t> object_between;  // (n_objects) 1: touches other objects
+  std::vector<std::uint8_t> object_self;     // (n_objects) 1: touches itself
+  std::vector<Index> bars;                   // bars of objects with contact, increasing
+  std::vector<double> bar_radius;            // (n_bars) m, as a capsule; 0 without contact
+  std::vector<Index> points;                 // nodes that meet triangles (objects with contact)
+  std::vector<double> point_radius;          // (n_nodes) m: the largest of its bars'
+  std::vector<Index> triangles;              // (n_triangles × 3) node ids
+  std::vector<Index> triangle_face;          // (n_triangles) the face each was fanned from
+  std::vector<double> triangle_radius;       // (n_triangles) m, half the shell's thickness
+  // Each contact's stiffness: omega_squared / (1/m_A + 1/m_B), m_X the lightest free node of
+  // primitive X, so that no contact oscillates faster than √omega_squared (auto); or `stiffness`.
+  double omega_squared = 0.0;  // 1/s²; 0 when the stiffness is given
+  double stiffness = 0.0;      // N/m, when given
+  double damping_ratio = 0.3;
+  double static_friction = 0.5;   // μs
+  double kinetic_friction = 0.4;  // μk
+};
+
 // Wind as the dynamics sees it: the field's parameters and what it drags on.
 struct WindLoad {
   WindDesc field;
@@ -148,6 +171,7 @@ struct Model {
   SettlePhase settle;
   WindLoad wind;
   GroundContact ground;
+  ObjectContact contact;
 
   Index node_count() const { return static_cast<Index>(node_mass.size()); }
   Index bar_count() const { return static_cast<Index>(bar_rest_length.size()); }

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/contact_builder.hpp"
 #include "model/derived_checks.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
@@ -416,6 +417,7 @@ Model build_model(const SceneDescription& scene) {
   add_fields(scene, objects, model);
   add_wind(scene, model);
   add_ground(scene, model);
+  add_object_contact(scene, model);
   colour_all_springs(model);
   release_spare_capacity(model);
   check_derived_quantities(model, scene);

@@ -26,6 +26,16 @@ TimeProfile read_profile(YamlMap map);
 // given, the map may also hold `clamped: true/false` (pinned sets), which it receives.
 NodeSelection read_nodes(YamlMap map, std::size_t vertex_count, bool* clamped = nullptr);
 
+// `friction: {static, kinetic}` (and, where `stick` is given, `stick: true/false`): the
+// coefficients must be ≥ 0 and kinetic ≤ static; kinetic defaults to the lesser of its default and
+// static.
+void read_friction(YamlMap map, double& static_friction, double& kinetic_friction,
+                   bool* stick = nullptr);
+
+// The scene's `contact` map, and an object's (`contact: {objects, self, radius}`).
+ContactDesc read_contact(YamlMap map);
+ObjectContactDesc read_object_contact(YamlMap map);
+
 // One entry of `objects`, its mesh loaded.
 ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder);
 

@@ -392,6 +392,10 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
                      map.path("bending_pairs"), pairs);
   }
   object.torsion = map.boolean("torsion", object.torsion);
+  if (map.has("contact")) {
+    object.contact =
+        read_object_contact(YamlMap(map.get("contact"), map.file(), map.path("contact")));
+  }
   if (map.has("damping")) {
     YamlMap damping(map.get("damping"), map.file(), map.path("damping"));
     if (damping.has("axial") && damping.has("axial_ratio")) {

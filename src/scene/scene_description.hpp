@@ -108,6 +108,15 @@ struct MaterialPartDesc {
   FileLoc loc;
 };
 
+// An object's part in contact (docs/scene-format.md, `contact`): each unset field takes the
+// scene's `contact` value.
+struct ObjectContactDesc {
+  std::optional<bool> objects;   // touches other objects
+  std::optional<bool> self;      // touches itself
+  std::optional<double> radius;  // m, of its bars as capsules and its faces as shells; default:
+                                 // each bar's wire radius
+};
+
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
 enum class DrawStyle { kSurface, kWire, kBoth };
 
@@ -118,6 +127,7 @@ struct ObjectDesc {
   FileLoc mesh_loc;
   MaterialDesc material;
   std::vector<MaterialPartDesc> parts;  // bars of other materials
+  ObjectContactDesc contact;
   PinDesc pins;
   bool pins_clamped = false;  // the pinned nodes hold the direction of their bars as well
   PinMotionDesc pin_motion;   // none by default: pinned nodes stay where they are
@@ -199,6 +209,19 @@ struct GroundDesc {
   FileLoc loc;
 };
 
+// Contact between objects and within one (dynamics/object_contact.hpp): bars are capsules and
+// faces thin shells that push apart by a penalty, with Coulomb friction. Off unless asked for.
+struct ContactDesc {
+  bool objects = false;             // between different objects
+  bool self = false;                // within one object
+  std::optional<double> stiffness;  // N/m per contact; empty for auto (a contact frequency half
+                                    // the model's highest, like the ground's)
+  double damping_ratio = 0.3;       // of the contact oscillation; normal direction only
+  double static_friction = 0.5;     // μs
+  double kinetic_friction = 0.4;    // μk
+  FileLoc loc;
+};
+
 // A phase before t = 0 in which the structure comes to rest under gravity alone (no fields, no
 // wind, no initial velocities, by kinetic damping); its final shape is the start of the shown
 // motion. The paper's flag begins this way.
@@ -238,6 +261,7 @@ struct SceneDescription {
   WindDesc wind;
 
   GroundDesc ground;
+  ContactDesc contact;
   CameraDesc camera;
   int image_width = 1280;
   int image_height = 720;

@@ -107,20 +107,8 @@ GroundDesc read_ground(YamlMap map) {
     throw_user_error(map.loc("damping_ratio"), "'ground.damping_ratio' must be between 0 and 1");
   }
   if (map.has("friction")) {
-    YamlMap friction(map.get("friction"), map.file(), "ground.friction");
-    ground.stick = friction.boolean("stick", false);
-    ground.static_friction = friction.number("static", ground.static_friction);
-    ground.kinetic_friction =
-        friction.number("kinetic", std::min(ground.kinetic_friction, ground.static_friction));
-    if (ground.static_friction < 0.0 || ground.kinetic_friction < 0.0) {
-      throw_user_error(friction.loc(), "friction coefficients cannot be negative");
-    }
-    if (ground.kinetic_friction > ground.static_friction) {
-      throw_user_error(friction.loc("kinetic"),
-                       "'ground.friction.kinetic' ({}) must not exceed 'static' ({})",
-                       ground.kinetic_friction, ground.static_friction);
-    }
-    friction.finish();
+    read_friction(YamlMap(map.get("friction"), map.file(), "ground.friction"),
+                  ground.static_friction, ground.kinetic_friction, &ground.stick);
   }
   map.finish();
   return ground;
@@ -328,6 +316,9 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
 
   if (map.has("ground")) {
     scene.ground = read_ground(YamlMap(map.get("ground"), file, "ground"));
+  }
+  if (map.has("contact")) {
+    scene.contact = read_contact(YamlMap(map.get("contact"), file, "contact"));
   }
   if (map.has("camera")) {
     scene.camera = read_camera(map.get("camera"), file);

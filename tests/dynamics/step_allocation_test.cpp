@@ -98,6 +98,35 @@ TEST(StepAllocation, AStepAllocatesNothing) {
   EXPECT_EQ(allocations_in_steps(large, true, 5), 0);
 }
 
+// Contact between objects and within one: once the pair buffers have grown (in the warm-up
+// steps), steps that keep finding the same pairs allocate nothing. Two wires pressed across each
+// other in a cloth with self-contact, resting on a pinned sheet.
+TEST(StepAllocation, ContactAllocatesNothingOnceItsBuffersHaveGrown) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+gravity: [0, 0, -9.81]
+contact: {objects: true, self: true}
+objects:
+  - name: table
+    mesh: {grid: {width: 1, height: 1, columns: 4, rows: 4}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.003}
+    pinned: {all: true}
+  - name: sticks
+    mesh: {polyline: {points: [[0.2, 0.3, 0.0055], [0.7, 0.3, 0.0055]], segments: 5}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.0025}
+)"));
+  for (const bool track_energy : {false, true}) {
+    EXPECT_EQ(allocations_in_steps(model, track_energy, 50), 0);
+  }
+  // It did touch: the sticks rest on the table rather than falling through it.
+  const double dt = 0.8 * critical_timestep(model);
+  State state = initial_state(model, dt);
+  for (int s = 0; s < 50; ++s) {
+    step(model, dt, {}, state);
+  }
+  EXPECT_GT(state.object_contact.previous.size(), 3u);
+}
+
 // The counter itself works: a vector that grows is seen.
 TEST(StepAllocation, TheCounterSeesAnAllocation) {
   const long before = allocations.load();

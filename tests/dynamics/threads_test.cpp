@@ -4,15 +4,30 @@
 #include <omp.h>
 
 #include <cstring>
+#include <fstream>
 
 #include "dynamics/integrator.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "scene/scene_description.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
 namespace {
+
+// `steps` steps of the model at 0.8 × its limit on `threads` threads, the energy tracked.
+State run_on_threads(const Model& model, int threads, int steps) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  const double dt = 0.8 * critical_timestep(model);
+  State state = initial_state(model, dt, {}, true);
+  for (int s = 0; s < steps; ++s) {
+    step(model, dt, {}, state);
+  }
+  omp_set_num_threads(before);
+  return state;
+}
 
 // A falling, yielding cloth held at one edge, of 120 × 120 cells (about 43 000 bars, more bending
 // and torsion springs), big enough that every spring loop runs in parallel, with wind and ground
@@ -36,15 +51,7 @@ objects:
   EXPECT_GE(model.bar_count(), kMinParallelItems);
   EXPECT_GE(model.bend_count(), kMinParallelItems);
   EXPECT_GE(model.torsion_count(), kMinParallelItems);
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  const double dt = 0.8 * critical_timestep(model);
-  State state = initial_state(model, dt, {}, true);
-  for (int s = 0; s < steps; ++s) {
-    step(model, dt, {}, state);
-  }
-  omp_set_num_threads(before);
-  return state;
+  return run_on_threads(model, threads, steps);
 }
 
 template <class T>
@@ -78,6 +85,58 @@ TEST(Threads, TearingIsTheSameForAnyThreadCount) {
   EXPECT_TRUE(same_bits(one.v_half, two.v_half));
   EXPECT_TRUE(same_bits(one.bend_broken, two.bend_broken));
   EXPECT_TRUE(same_bits(one.torsion_broken, two.torsion_broken));
+  EXPECT_EQ(one.energy_workspace.last.total, two.energy_workspace.last.total);
+}
+
+// Self-contact too: one object of two 30 × 30 sheets 5 mm apart, with contact radii of 3 mm, so
+// that thousands of node–triangle and bar–bar pairs touch from the first step, pressed together.
+// The pairs are summed in key order, serially, so 1 and 2 threads give the same bits.
+State run_two_sheets(int threads, int steps) {
+  test::TemporaryFolder folder("sheets");
+  constexpr int kCells = 30;
+  std::string obj;
+  for (int sheet = 0; sheet < 2; ++sheet) {
+    for (int j = 0; j <= kCells; ++j) {
+      for (int i = 0; i <= kCells; ++i) {
+        obj += fmt::format("v {} {} {}\n", 0.01 * i, 0.01 * j, 0.5 + 0.005 * sheet);
+      }
+    }
+  }
+  const int per_sheet = (kCells + 1) * (kCells + 1);
+  for (int sheet = 0; sheet < 2; ++sheet) {
+    for (int j = 0; j < kCells; ++j) {
+      for (int i = 0; i < kCells; ++i) {
+        const int a = sheet * per_sheet + j * (kCells + 1) + i + 1;  // OBJ counts from 1
+        obj += fmt::format("f {} {} {}\nf {} {} {}\n", a, a + 1, a + kCells + 2, a, a + kCells + 2,
+                           a + kCells + 1);
+      }
+    }
+  }
+  std::ofstream(folder.path() / "sheets.obj") << obj;
+  const Model model = build_model(read_scene_text(R"(version: 1
+duration: 1
+gravity: [0, 0, 0]
+contact: {self: true}
+objects:
+  - name: sheets
+    mesh: {file: sheets.obj}
+    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001}
+    contact: {radius: 0.003}
+    velocity_groups:
+      - {nodes: {box: {min: [-1, -1, 0], max: [1, 1, 0.502]}}, velocity: [0.1, 0, 1]}
+      - {nodes: {box: {min: [-1, -1, 0.503], max: [1, 1, 1]}}, velocity: [-0.1, 0, -1]}
+)",
+                                                  folder.path() / "sheets.yaml"));
+  EXPECT_GE(model.bar_count(), kMinParallelItems);
+  return run_on_threads(model, threads, steps);
+}
+
+TEST(Threads, SelfContactIsTheSameForAnyThreadCount) {
+  const State one = run_two_sheets(1, 40);
+  const State two = run_two_sheets(2, 40);
+  EXPECT_GT(one.object_contact.previous.size(), 1000u);  // the sheets do touch
+  EXPECT_TRUE(same_bits(one.x, two.x));
+  EXPECT_TRUE(same_bits(one.v_half, two.v_half));
   EXPECT_EQ(one.energy_workspace.last.total, two.energy_workspace.last.total);
 }
 

@@ -1,0 +1,42 @@
+#pragma once
+// Contact between objects and within one (model.contact): bars are capsules of a contact radius,
+// faces (fanned into triangles) thin shells of one, and two of them touch when the closest points
+// of their middles are nearer than the sum of their radii. Two kinds of pair cover every way one
+// can pass through another: bar–bar (the closest points of two segments, which also covers a
+// node against a bar, at a segment's end) and node–triangle. Pairs that share a node never touch;
+// nor do two objects unless both take part in contact between objects, nor an object with itself
+// unless it takes part in self-contact; nor two primitives with no free node between them.
+//
+// Normal: at penetration δ = r_A + r_B − |p_A − p_B| the penalty k δ pushes the closest points
+// apart along n = (p_A − p_B)/|p_A − p_B|, damped by −c (v_rel·n) and clipped at zero, so contact
+// only pushes. k = ω_c² / (1/m_A + 1/m_B), with m_X the lightest free node of primitive X, so
+// that no contact oscillates faster than ω_c whatever the masses (auto), or the scene's stiffness;
+// c = 2 ζ √(k m), m = 1 / Σ w_j²/m_j the mass the contact point moves (a rigid bar struck at its
+// middle: the bar's mass), so that ζ is the contact's damping ratio.
+//
+// Tangential: Coulomb friction with a stick spring, as the ground's: the pair's relative
+// tangential motion since it touched stretches a spring of the same k; it holds while
+// |F_t| ≤ μs N and beyond that slides at μk N, the spring's stretch set to what that force needs.
+//
+// Every force acts at the closest points and is shared out to the primitives' nodes by the
+// points' weights, equal and opposite on the two sides, so momentum is conserved. Candidates come
+// from a hash grid rebuilt every step (contact_grid.hpp); pairs are summed in the order of their
+// kind and ids, so the motion does not depend on the thread count. Within the envelope
+// (relative speed × Δt below the smaller radius) no primitive passes through another; beyond it
+// a node can cross a shell's middle in one step, and is then pushed out on the far side.
+#include <vector>
+
+#include "dynamics/force_context.hpp"
+
+namespace dinam {
+
+// Adds the contact forces between objects and within them to context.force; while the energy
+// is tracked, the normal damping and the friction also go to their ledgers (both or neither).
+// The friction's stick springs stretch by the relative velocity times state.object_contact.dt.
+void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger = nullptr,
+                               std::vector<Vec3>* friction_ledger = nullptr);
+
+// Σ ½ k δ² over the pairs touching at the last force evaluation, J.
+double object_contact_energy(const State& state);
+
+}  // namespace dinam

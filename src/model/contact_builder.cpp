@@ -1,0 +1,86 @@
+#include "model/contact_builder.hpp"
+
+#include <algorithm>
+
+#include "model/frequency_bound.hpp"
+
+namespace dinam {
+
+void add_object_contact(const SceneDescription& scene, Model& model) {
+  ObjectContact& contact = model.contact;
+  const ContactDesc& desc = scene.contact;
+  const auto objects = static_cast<Index>(model.objects.size());
+  contact.object_between.assign(objects, 0);
+  contact.object_self.assign(objects, 0);
+  Index between = 0;
+  for (Index o = 0; o < objects; ++o) {
+    const ObjectContactDesc& own = scene.objects[o].contact;
+    contact.object_between[o] = own.objects.value_or(desc.objects) ? 1 : 0;
+    contact.object_self[o] = own.self.value_or(desc.self) ? 1 : 0;
+    between += contact.object_between[o];
+  }
+  auto takes_part = [&](Index object) {
+    return contact.object_self[object] != 0 || (between > 1 && contact.object_between[object] != 0);
+  };
+  contact.enabled = false;
+  for (Index o = 0; o < objects; ++o) {
+    contact.enabled = contact.enabled || takes_part(o);
+  }
+  if (!contact.enabled) {
+    contact = ObjectContact{};
+    return;
+  }
+
+  // Radii: the object's, else each bar's wire radius; a node takes the largest of its bars', a
+  // triangle the smallest of its corners'.
+  contact.bar_radius.assign(model.bar_count(), 0.0);
+  contact.point_radius.assign(model.node_count(), 0.0);
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index object = model.node_object[n0];
+    if (!takes_part(object)) {
+      continue;
+    }
+    const double radius = scene.objects[object].contact.radius.value_or(model.bar_radius[b]);
+    contact.bars.push_back(b);
+    contact.bar_radius[b] = radius;
+    for (const Index n : {n0, model.bar_nodes[2 * b + 1]}) {
+      contact.point_radius[n] = std::max(contact.point_radius[n], radius);
+    }
+  }
+  for (Index n = 0; n < model.node_count(); ++n) {
+    if (contact.point_radius[n] > 0.0) {
+      contact.points.push_back(n);
+    }
+  }
+  // Faces fan into triangles from their first corner (a quad gives two).
+  for (Index f = 0; f < model.face_count(); ++f) {
+    const Index first = model.face_offsets[f];
+    const Index size = model.face_offsets[f + 1] - first;
+    const Index* corners = &model.face_nodes[first];
+    if (!takes_part(model.node_object[corners[0]])) {
+      continue;
+    }
+    for (Index k = 1; k + 1 < size; ++k) {
+      contact.triangles.insert(contact.triangles.end(), {corners[0], corners[k], corners[k + 1]});
+      contact.triangle_face.push_back(f);
+      contact.triangle_radius.push_back(
+          std::min({contact.point_radius[corners[0]], contact.point_radius[corners[k]],
+                    contact.point_radius[corners[k + 1]]}));
+    }
+  }
+
+  // Auto: every contact oscillates at most at half the structure's highest frequency bound, as
+  // the ground's nodes do; the step's bound then counts two contacts on every node.
+  if (desc.stiffness) {
+    contact.stiffness = *desc.stiffness;
+  } else {
+    const double structure = max_frequency_squared_bound(model, false);
+    contact.omega_squared = structure > 0.0 ? 0.25 * structure : 1e4;
+  }
+  contact.damping_ratio = desc.damping_ratio;
+  contact.static_friction = desc.static_friction;
+  contact.kinetic_friction = desc.kinetic_friction;
+}
+
+}  // namespace dinam

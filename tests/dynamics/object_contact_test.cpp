@@ -1,0 +1,368 @@
+// Contact between objects and within one (dynamics/object_contact.hpp): the closest-point
+// kernels and the grid against brute force, then the contact law against closed forms and
+// conservation laws, and thrown wires that must not pass through.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <set>
+
+#include "dynamics/contact_geometry.hpp"
+#include "dynamics/contact_grid.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/stability.hpp"
+#include "model/model.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+Vec3 random_point(std::mt19937& rng) {
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  return {coordinate(rng), coordinate(rng), coordinate(rng)};
+}
+
+// The closest points of two segments against the least distance over 401 × 401 samples of each:
+// never farther than the samples' best, and within a sample spacing of it.
+TEST(ContactGeometry, SegmentClosestPointsMatchBruteForce) {
+  std::mt19937 rng(21);
+  for (int trial = 0; trial < 60; ++trial) {
+    const Vec3 p0 = random_point(rng);
+    Vec3 p1 = random_point(rng);
+    const Vec3 q0 = random_point(rng);
+    Vec3 q1 = random_point(rng);
+    if (trial % 4 == 1) {
+      q1 = q0 + 0.7 * (p1 - p0);  // parallel
+    } else if (trial % 4 == 2) {
+      p1 = p0;  // a point against a segment
+    } else if (trial % 4 == 3) {
+      q1 = q0 + (p1 - p0);  // parallel and overlapping in their span
+    }
+    const SegmentPair closest = closest_points_of_segments(p0, p1, q0, q1);
+    ASSERT_GE(closest.s, 0.0);
+    ASSERT_LE(closest.s, 1.0);
+    ASSERT_GE(closest.t, 0.0);
+    ASSERT_LE(closest.t, 1.0);
+    const double distance = ((p0 + closest.s * (p1 - p0)) - (q0 + closest.t * (q1 - q0))).norm();
+    double sampled = 1e9;
+    constexpr int kSamples = 400;
+    for (int i = 0; i <= kSamples; ++i) {
+      for (int j = 0; j <= kSamples; ++j) {
+        const Vec3 p = p0 + (static_cast<double>(i) / kSamples) * (p1 - p0);
+        const Vec3 q = q0 + (static_cast<double>(j) / kSamples) * (q1 - q0);
+        sampled = std::min(sampled, (p - q).norm());
+      }
+    }
+    EXPECT_LE(distance, sampled + 1e-12) << trial;
+    EXPECT_GE(distance, sampled - ((p1 - p0).norm() + (q1 - q0).norm()) / kSamples) << trial;
+  }
+}
+
+// The closest point of a triangle against 300 × 300 barycentric samples, points in front of,
+// beside and behind it, and a triangle of zero area.
+TEST(ContactGeometry, TriangleClosestPointMatchesBruteForce) {
+  std::mt19937 rng(22);
+  for (int trial = 0; trial < 60; ++trial) {
+    const Vec3 a = random_point(rng);
+    const Vec3 b = random_point(rng);
+    Vec3 c = random_point(rng);
+    if (trial % 10 == 9) {
+      c = a + 0.3 * (b - a);  // degenerate
+    }
+    const Vec3 p = 1.5 * random_point(rng);
+    const std::array<double, 3> w = closest_point_of_triangle(p, a, b, c);
+    EXPECT_NEAR(w[0] + w[1] + w[2], 1.0, 1e-12);
+    EXPECT_GE(std::min({w[0], w[1], w[2]}), -1e-12);
+    const double distance = (p - (w[0] * a + w[1] * b + w[2] * c)).norm();
+    double sampled = 1e9;
+    constexpr int kSamples = 300;
+    for (int i = 0; i <= kSamples; ++i) {
+      for (int j = 0; i + j <= kSamples; ++j) {
+        const double u = static_cast<double>(i) / kSamples;
+        const double v = static_cast<double>(j) / kSamples;
+        sampled = std::min(sampled, (p - ((1 - u - v) * a + u * b + v * c)).norm());
+      }
+    }
+    const double spacing = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()}) / kSamples;
+    EXPECT_LE(distance, sampled + 1e-12) << trial;
+    EXPECT_GE(distance, sampled - 2 * spacing) << trial;
+  }
+}
+
+// Every box that overlaps a query is visited once, and no other; boxes not filed are never
+// visited. Boxes of very different sizes, clustered so that cells hold many.
+TEST(ContactGrid, VisitsExactlyTheOverlappingBoxesOnce) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> size(0.001, 0.2);
+  std::vector<Box> boxes;
+  std::vector<std::uint8_t> use;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3 centre = (i % 3 == 0 ? 0.1 : 1.0) * random_point(rng);
+    const Vec3 half(size(rng), size(rng), size(rng));
+    boxes.push_back({centre - 0.5 * half, centre + 0.5 * half});
+    use.push_back(i % 7 == 0 ? 0 : 1);
+  }
+  ContactGrid grid;
+  grid.build(boxes, use, 0.2);
+  for (int q = 0; q < 300; ++q) {
+    const Box& query = boxes[static_cast<std::size_t>(q)];
+    std::multiset<Index> visited;
+    grid.visit_overlapping(query, [&](Index id) { visited.insert(id); });
+    std::multiset<Index> expected;
+    for (Index id = 0; id < static_cast<Index>(boxes.size()); ++id) {
+      if (use[id] != 0 && boxes[id].overlaps(query)) {
+        expected.insert(id);
+      }
+    }
+    EXPECT_EQ(visited, expected) << q;
+  }
+}
+
+constexpr double kG = 9.81;
+
+// A scene of `objects` (YAML list items, indented as under `objects:`) with contact between
+// objects, without gravity unless given.
+Model contact_scene(const std::string& objects, const std::string& contact,
+                    const std::string& extra = "gravity: [0, 0, 0]\n") {
+  return build_model(test::scene_from_yaml(fmt::format(
+      "version: 1\nduration: 1\n{}contact: {}\nobjects:\n{}", extra, contact, objects)));
+}
+
+// A pinned straight wire along y through the origin, 1 m long in 10 bars, and a free one of
+// `segments` bars and length `length` centred at `centre`, turned by `degrees` about z from x,
+// moving at `velocity`. Both of 5 mm radius.
+std::string wire_at_wire(double degrees, const Vec3& centre, const Vec3& velocity, int segments = 6,
+                         double length = 0.6) {
+  const double phi = degrees * std::numbers::pi / 180.0;
+  const Vec3 half = 0.5 * length * Vec3(std::cos(phi), std::sin(phi), 0.0);
+  const Vec3 a = centre - half;
+  const Vec3 b = centre + half;
+  return fmt::format(R"(  - name: fixed
+    mesh: {{polyline: {{points: [[0, -0.5, 0], [0, 0.5, 0]], segments: 10}}}}
+    material: {{density: 7850, youngs_modulus: 2.0e9, radius: 0.005}}
+    pinned: {{all: true}}
+  - name: thrown
+    mesh: {{polyline: {{points: [[{}, {}, {}], [{}, {}, {}]], segments: {}}}}}
+    material: {{density: 7850, youngs_modulus: 2.0e9, radius: 0.005}}
+    initial_velocity: [{}, {}, {}]
+)",
+                     a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), segments, velocity.x(), velocity.y(),
+                     velocity.z());
+}
+
+Vec3 sum_of(const std::vector<Vec3>& forces) {
+  Vec3 sum = Vec3::Zero();
+  for (const Vec3& f : forces) {
+    sum += f;
+  }
+  return sum;
+}
+
+// Momentum: two free wires pressed into each other, one sliding across the other, push with
+// forces that sum to zero (each pair's forces are equal and opposite), and push them apart.
+TEST(ObjectContact, ForcesConserveMomentum) {
+  const std::string objects = R"(  - name: a
+    mesh: {polyline: {points: [[-0.3, 0.05, 0], [0.3, -0.05, 0]], segments: 3}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.01}
+    initial_velocity: [0.2, 0.5, -1]
+  - name: b
+    mesh: {polyline: {points: [[0.02, -0.3, 0.012], [-0.02, 0.3, 0.015]], segments: 4}}
+    material: {density: 3000, youngs_modulus: 1.0e7, radius: 0.008}
+    initial_velocity: [0, -0.4, 1]
+)";
+  const Model model = contact_scene(objects, "{objects: true, damping_ratio: 0.4}");
+  ForceSwitches only_contact;
+  only_contact.axial_springs = only_contact.bending = only_contact.torsion = false;
+  only_contact.gravity = only_contact.fields = only_contact.wind = only_contact.ground = false;
+  only_contact.axial_dampers = only_contact.global_damping = false;
+  State state = initial_state(model, 1e-5, only_contact);
+  compute_forces(model, only_contact, state, false);
+  const Vec3 total = sum_of(state.force);
+  Vec3 on_a = Vec3::Zero();
+  for (Index i = 0; i < model.node_count(); ++i) {
+    on_a += model.node_object[i] == 0 ? state.force[i] : Vec3::Zero();
+  }
+  ASSERT_GT(on_a.norm(), 1.0);                   // N: they do touch
+  EXPECT_LT(total.norm(), 1e-12 * on_a.norm());  // and the forces cancel
+  EXPECT_LT(on_a.z(), 0.0);                      // wire a, below, is pushed down
+}
+
+// A short bar thrown at 3 m/s onto a pinned cloth (one 2 m cell) comes to rest on it at the
+// thickness: its nodes' height is r_bar + r_cloth − m_node g / k, each node held by its own
+// node–triangle contact of the automatic stiffness k = ω_c² m_node (the cloth is pinned). The
+// global damping brings it to rest.
+TEST(ObjectContact, NodeThrownOntoAPinnedClothRestsAtTheThickness) {
+  const Model model = contact_scene(R"(  - name: cloth
+    mesh: {grid: {width: 2, height: 2, columns: 1, rows: 1, diagonals: one}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.003}
+    pinned: {all: true}
+  - name: pebble
+    mesh: {polyline: {points: [[1.5, 0.3, 0.05], [1.51, 0.3, 0.05]]}}
+    material: {density: 8000, youngs_modulus: 1.0e8, radius: 0.002}
+    initial_velocity: [0, 0, -3]
+)",
+                                    "{objects: true}", "damping: {global: 8}\n");
+  const double dt = kAutoTimestepSafety * critical_timestep(model);
+  State state = initial_state(model, dt);
+  const Index node = model.node_count() - 1;
+  double lowest = 1.0;
+  while (state.time < 3.0) {
+    step(model, dt, {}, state);
+    lowest = std::min(lowest, state.x[node].z());
+  }
+  const double sag = kG / model.contact.omega_squared;  // m g / k
+  const double expected = 0.003 + 0.002 - sag;
+  EXPECT_GT(lowest, 0.0);                  // it never went through
+  EXPECT_LT(lowest, expected - 10 * sag);  // the impact did press in
+  EXPECT_NEAR(state.x[node].z(), expected, 1e-3 * sag);
+  EXPECT_NEAR(state.x[node - 1].z(), expected, 1e-3 * sag);
+}
+
+// The least distance between the axes of the two wires' bars, and the side of the fixed wire
+// the thrown one's middle node is on.
+struct WireWatch {
+  double closest = 1e9;  // m
+  double lowest_middle = 1e9;
+};
+
+void watch_wires(const Model& model, const State& state, WireWatch& watch) {
+  const ModelObject& fixed = model.objects[0];
+  const ModelObject& thrown = model.objects[1];
+  for (Index a = fixed.first_bar; a < fixed.first_bar + fixed.bar_count; ++a) {
+    for (Index b = thrown.first_bar; b < thrown.first_bar + thrown.bar_count; ++b) {
+      const Vec3& p0 = state.x[model.bar_nodes[2 * a]];
+      const Vec3& p1 = state.x[model.bar_nodes[2 * a + 1]];
+      const Vec3& q0 = state.x[model.bar_nodes[2 * b]];
+      const Vec3& q1 = state.x[model.bar_nodes[2 * b + 1]];
+      const SegmentPair c = closest_points_of_segments(p0, p1, q0, q1);
+      watch.closest =
+          std::min(watch.closest, ((p0 + c.s * (p1 - p0)) - (q0 + c.t * (q1 - q0))).norm());
+    }
+  }
+  const Index middle = thrown.first_node + thrown.node_count / 2;
+  watch.lowest_middle = std::min(watch.lowest_middle, state.x[middle].z());
+}
+
+// The envelope: relative speed × Δt below the smaller radius. A wire thrown at 10 m/s at a pinned
+// wire, crossing it at 90°, 45° and 15°, bounces off: the wires' axes never come nearer than a
+// radius and its middle stays above. Δt is the automatic step (here 10 m/s × Δt ≈ 0.1 mm against
+// 5 mm radii).
+TEST(ObjectContact, WireThrownAtAWireNeverPassesThrough) {
+  for (const double degrees : {90.0, 45.0, 15.0}) {
+    const Model model =
+        contact_scene(wire_at_wire(degrees, Vec3(0, 0, 0.03), Vec3(0, 0, -10)), "{objects: true}");
+    const double dt = kAutoTimestepSafety * critical_timestep(model);
+    ASSERT_LT(10.0 * dt, 0.005);
+    State state = initial_state(model, dt);
+    WireWatch watch;
+    while (state.time < 0.01) {
+      step(model, dt, {}, state);
+      watch_wires(model, state, watch);
+    }
+    EXPECT_GT(watch.closest, 0.005) << degrees;  // the axes stayed a radius apart at least
+    EXPECT_LT(watch.closest, 0.01) << degrees;   // and they did touch
+    EXPECT_GT(watch.lowest_middle, 0.0) << degrees;
+    std::printf(
+        "wire at %g°: axes at least %.4f m apart (radii 0.005 each), 10 m/s × Δt = %.2g m\n",
+        degrees, watch.closest, 10.0 * dt);
+    const Index middle = model.objects[1].first_node + model.objects[1].node_count / 2;
+    EXPECT_GT(state.v_half[middle].z(), 0.0) << degrees;  // on its way back up
+  }
+}
+
+// A wire thrown at 10 m/s onto a pinned cloth (10 × 10 cells of 0.1 m) at 90°, 60° and 30° to
+// its plane: no node of the wire ever reaches the cloth's plane.
+TEST(ObjectContact, WireThrownAtAPinnedClothNeverPassesThrough) {
+  for (const double degrees : {90.0, 60.0, 30.0}) {
+    const double angle = degrees * std::numbers::pi / 180.0;
+    const Vec3 velocity = 10.0 * Vec3(std::cos(angle), 0.0, -std::sin(angle));
+    const Model model = contact_scene(fmt::format(R"(  - name: cloth
+    mesh: {{grid: {{width: 1, height: 1, columns: 10, rows: 10, diagonals: one}}}}
+    material: {{density: 1000, youngs_modulus: 1.0e7, radius: 0.003}}
+    pinned: {{all: true}}
+  - name: thrown
+    mesh: {{polyline: {{points: [[0.33, 0.27, 0.03], [0.41, 0.55, 0.05]], segments: 5}}}}
+    material: {{density: 7850, youngs_modulus: 2.0e9, radius: 0.004}}
+    initial_velocity: [{}, 0, {}]
+)",
+                                                  velocity.x(), velocity.z()),
+                                      "{objects: true}");
+    const double dt = kAutoTimestepSafety * critical_timestep(model);
+    State state = initial_state(model, dt);
+    double lowest = 1.0;
+    const ModelObject& thrown = model.objects[1];
+    while (state.time < 0.02) {
+      step(model, dt, {}, state);
+      for (Index i = thrown.first_node; i < thrown.first_node + thrown.node_count; ++i) {
+        lowest = std::min(lowest, state.x[i].z());
+      }
+    }
+    EXPECT_GT(lowest, 0.0) << degrees;
+    EXPECT_LT(lowest, 0.007) << degrees;  // it did touch (0.003 + 0.004)
+  }
+}
+
+// Without contact damping or friction a collision gives back the energy it took: a wire thrown
+// at a pinned one keeps its energy balance through the impact to the integrator's error (at a
+// fifth of the automatic step, as for the ground: an impact at the automatic step is resolved
+// to a few percent).
+TEST(ObjectContact, ElasticCollisionKeepsTheEnergy) {
+  const Model model =
+      contact_scene(wire_at_wire(70.0, Vec3(0.05, 0, 0.02), Vec3(0, 0, -2)),
+                    "{objects: true, damping_ratio: 0, friction: {static: 0, kinetic: 0}}");
+  const double dt = 0.2 * kAutoTimestepSafety * critical_timestep(model);
+  State state = initial_state(model, dt, {}, true);
+  const double start = state.energy_workspace.last.total;
+  const double kinetic = state.energy_workspace.last.kinetic;
+  double largest_drift = 0.0;
+  double largest_contact = 0.0;
+  while (state.time < 0.03) {
+    step(model, dt, {}, state);
+    largest_drift = std::max(largest_drift, std::abs(state.energy_workspace.last.total - start));
+    largest_contact = std::max(largest_contact, state.energy_workspace.last.contact);
+  }
+  EXPECT_GT(largest_contact, 0.05 * kinetic);  // the contact did store energy
+  EXPECT_LT(largest_drift, 0.005 * kinetic);
+  std::printf("elastic collision: balance within %.3g of the kinetic energy\n",
+              largest_drift / kinetic);
+  const ModelObject& thrown = model.objects[1];
+  double momentum = 0.0;
+  for (Index i = thrown.first_node; i < thrown.first_node + thrown.node_count; ++i) {
+    momentum += model.node_mass[i] * state.v_half[i].z();
+  }
+  EXPECT_GT(momentum, 0.0);  // and it bounced
+}
+
+// A stiff bar dropped across a pinned wire at its middle rebounds with the restitution of the
+// contact's spring and damper, the force clipped at zero: the contact ends when k x + c ẋ = 0,
+// at ω_d t = π − atan(2ζ√(1−ζ²) / (1 − 2ζ²)), so e = exp(−ζ ω t) |cos ω_d t − ζ/√(1−ζ²) sin ω_d t|.
+TEST(ObjectContact, ReboundHasTheRestitutionOfTheDampingRatio) {
+  for (const double zeta : {0.1, 0.3, 0.5}) {
+    // Across the fixed wire between two of its nodes, so that one pair touches.
+    const Model model =
+        contact_scene(wire_at_wire(0.0, Vec3(0, 0.05, 0.011), Vec3(0, 0, -1), 1, 0.2),
+                      fmt::format("{{objects: true, damping_ratio: {}}}", zeta));
+    const double dt = 0.2 * kAutoTimestepSafety * critical_timestep(model);
+    State state = initial_state(model, dt);
+    while (state.time < 0.05) {
+      step(model, dt, {}, state);
+    }
+    const ModelObject& bar = model.objects[1];
+    const double rebound =
+        0.5 * (state.v_half[bar.first_node].z() + state.v_half[bar.first_node + 1].z());
+    const double root = std::sqrt(1.0 - zeta * zeta);
+    const double phase =
+        std::numbers::pi - std::atan(2.0 * zeta * root / (1.0 - 2.0 * zeta * zeta));
+    const double expected =
+        std::exp(-zeta * phase / root) * std::abs(std::cos(phase) - zeta / root * std::sin(phase));
+    EXPECT_NEAR(rebound / 1.0, expected, 0.02 * expected) << zeta;
+    std::printf("damping ratio %.1f: restitution %.4f, closed form %.4f\n", zeta, rebound,
+                expected);
+  }
+}
+
+}  // namespace
+}  // namespace dinam
