@@ -208,7 +208,9 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     if (trial_norm > limit) {
       friction = (contact.kinetic_friction * normal_force / trial_norm) * trial;
       slip = -friction / k;
-      point.sliding = true;
+      // A pair that touches without pressing (N = 0) holds nothing, but does not slide either:
+      // the next step, pressing, it sticks up to μs N again.
+      point.sliding = normal_force > 0.0;
     }
     point.slip = slip;
 

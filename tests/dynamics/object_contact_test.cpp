@@ -364,5 +364,78 @@ TEST(ObjectContact, ReboundHasTheRestitutionOfTheDampingRatio) {
   }
 }
 
+// A stiff 0.2 m square of cross-braced bars (radius 5 mm) lying on a pinned 4 m cloth (radius
+// 3 mm), just touching it (a square pressed in would be thrown off and land sliding), tilted by
+// `degrees` about y, both placed in the cloth's plane and turned together; the
+// slope descends towards +x along d = (cos θ, 0, −sin θ). Returns the square's centroid's
+// distance down the slope over time.
+std::vector<std::pair<double, double>> slide_on_cloth(double degrees, double duration) {
+  const double theta = degrees * std::numbers::pi / 180.0;
+  // Mesh placement turns about y, then translates: the square's offset in the cloth's plane,
+  // turned the same way.
+  const Vec3 offset(0.8 * std::cos(theta) + 0.008 * std::sin(theta), 2.6,
+                    -0.8 * std::sin(theta) + 0.008 * std::cos(theta));
+  const Model model =
+      contact_scene(fmt::format(R"(  - name: slope
+    mesh:
+      grid: {{width: 4, height: 4, columns: 1, rows: 1, diagonals: one}}
+      rotation: [0, {0}, 0]
+    material: {{density: 1000, youngs_modulus: 1.0e7, radius: 0.003}}
+    pinned: {{all: true}}
+  - name: block
+    mesh:
+      grid: {{width: 0.2, height: 0.2, columns: 2, rows: 2, diagonals: both}}
+      rotation: [0, {0}, 0]
+      translation: [{1}, {2}, {3}]
+    material: {{density: 1000, youngs_modulus: 1.0e8, radius: 0.005}}
+)",
+                                degrees, offset.x(), offset.y(), offset.z()),
+                    "{objects: true, friction: {static: 0.5, kinetic: 0.3}}",
+                    "gravity: [0, 0, -9.81]\nground: {contact: false, visible: false}\n");
+  const Vec3 downhill(std::cos(theta), 0, -std::sin(theta));
+  const double dt = kAutoTimestepSafety * critical_timestep(model);
+  State state = initial_state(model, dt);
+  const ModelObject& block = model.objects[1];
+  std::vector<std::pair<double, double>> track;
+  while (state.time < duration) {
+    step(model, dt, {}, state);
+    Vec3 centroid = Vec3::Zero();
+    for (Index i = block.first_node; i < block.first_node + block.node_count; ++i) {
+      centroid += state.x[i];
+    }
+    track.emplace_back(state.time, centroid.dot(downhill) / block.node_count);
+  }
+  return track;
+}
+
+// Below the friction angle (tan 20° = 0.36 < μs = 0.5) the block stays where it landed, but for
+// the stick springs' give (g sin θ / ω_c², micrometres).
+TEST(ObjectContact, BlockOnAPinnedClothBelowTheFrictionAngleSticks) {
+  const auto track = slide_on_cloth(20, 1.0);
+  EXPECT_LT(std::abs(track.back().second - track.front().second), 1e-4);
+}
+
+// Above it (tan 35° = 0.70 > μs) it slides with a = g (sin θ − μk cos θ), within 2 %: a least-
+// squares fit s = s0 + v0 t + ½ a t² over t ∈ [0.2, 0.8] s, after the landing.
+TEST(ObjectContact, BlockOnAPinnedClothAboveTheFrictionAngleSlidesWithKineticFriction) {
+  const double degrees = 35;
+  const double theta = degrees * std::numbers::pi / 180.0;
+  const auto track = slide_on_cloth(degrees, 0.8);
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (const auto& [t, s] : track) {
+    if (t >= 0.2) {
+      const Eigen::Vector3d basis(1.0, t, 0.5 * t * t);
+      normal += basis * basis.transpose();
+      rhs += basis * s;
+    }
+  }
+  const double acceleration = normal.ldlt().solve(rhs)[2];
+  const double expected = kG * (std::sin(theta) - 0.3 * std::cos(theta));
+  EXPECT_NEAR(acceleration / expected, 1.0, 0.02);
+  std::printf("block on a pinned cloth at 35°: a = %.4f m/s², closed form %.4f\n", acceleration,
+              expected);
+}
+
 }  // namespace
 }  // namespace dinam
