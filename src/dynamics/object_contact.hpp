@@ -19,9 +19,10 @@
 // |F_t| ≤ μs N and beyond that slides at μk N, the spring's stretch set to what that force needs.
 //
 // Every force acts at the closest points and is shared out to the primitives' nodes by the
-// points' weights, equal and opposite on the two sides, so momentum is conserved. Candidates come
-// from a hash grid rebuilt every step (contact_grid.hpp); pairs are summed in the order of their
-// kind and ids, so the motion does not depend on the thread count. Within the envelope
+// points' weights, equal and opposite on the two sides, so momentum is conserved. Pairs that name
+// the same features (a node over a vertex where six triangles meet) are one contact
+// (contact_pairs.hpp finds them); contacts are summed in the order of their features, so the
+// motion does not depend on the thread count. Within the envelope
 // (relative speed × Δt below the smaller radius) no primitive passes through another; beyond it
 // a node can cross a shell's middle in one step, and is then pushed out on the far side.
 #include <vector>

@@ -2,6 +2,7 @@
 // What contact between objects keeps from step to step (the friction's stick springs) and the
 // broad phase's arrays, reused so that a step allocates nothing once they have grown.
 #include <array>
+#include <compare>
 #include <cstdint>
 #include <vector>
 
@@ -10,9 +11,22 @@
 
 namespace dinam {
 
+// What a contact is between, whichever pair of primitives found it (contact_pairs.cpp): a node
+// and a node (a, b), a node and a bar's inside (node a, bar b–c), a node and a triangle's inside
+// (node a, triangle b), or the insides of two bars (a, b). Contacts are summed, and matched with
+// the step before, in this order.
+struct ContactFeatures {
+  enum Kind : std::int32_t { kNodeNode, kNodeEdge, kNodeTriangle, kEdgeEdge };
+  std::int32_t kind = kNodeNode;
+  Index a = 0, b = 0, c = 0;
+
+  auto operator<=>(const ContactFeatures&) const = default;
+};
+
 // One touching pair: side A (a bar, or a node) against side B (a bar, or a triangle).
 struct ContactPoint {
-  std::uint64_t key = 0;  // kind, A's id, B's id: contacts are summed and matched in this order
+  ContactFeatures features;
+  std::uint64_t key = 0;            // kind, A's id, B's id of the pair of primitives that found it
   std::array<Index, 4> nodes{};     // A's nodes, then B's (a node–triangle pair: 1 + 3)
   std::array<double, 4> weights{};  // the closest points' weights, A's ≥ 0, B's ≤ 0 (negated)
   Vec3 separation = Vec3::Zero();   // m, p_A − p_B between the closest points
@@ -21,9 +35,19 @@ struct ContactPoint {
   bool sliding = false;
 };
 
+// A pair near enough to touch before any of its nodes has moved by the skin (contact_pairs.hpp).
+struct ContactCandidate {
+  std::uint64_t key = 0;
+  std::array<Index, 4> nodes{};  // A's nodes, then B's, as in ContactPoint
+};
+
 struct ObjectContactWorkspace {
-  std::vector<ContactPoint> touching;       // at the last force evaluation, by key
-  std::vector<ContactPoint> previous;       // at the step before, by key (the friction's history)
+  std::vector<ContactCandidate> candidates;  // by key, found at `reference_x`
+  std::vector<Vec3> reference_x;             // (n_nodes) m, the positions they were found at
+  bool candidates_found = false;
+  std::int64_t searches = 0;                // how many times the candidates were found, in all
+  std::vector<ContactPoint> touching;       // at the last force evaluation, by features
+  std::vector<ContactPoint> previous;       // at the step before, by features (friction's history)
   std::vector<Box> bar_boxes;               // (n_bars) each bar's capsule box
   std::vector<Box> triangle_boxes;          // (n_triangles)
   std::vector<std::uint8_t> bar_used;       // (n_bars) 1 for an unbroken bar with contact

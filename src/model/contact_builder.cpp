@@ -70,6 +70,10 @@ void add_object_contact(const SceneDescription& scene, Model& model) {
     }
   }
 
+  // The skin of the candidate pairs: the largest radius. Wider, the pairs are found less often
+  // but more of them are checked every step.
+  contact.skin = *std::max_element(contact.bar_radius.begin(), contact.bar_radius.end());
+
   // Auto: every contact oscillates at most at half the structure's highest frequency bound, as
   // the ground's nodes do; the step's bound then counts two contacts on every node.
   if (desc.stiffness) {

@@ -82,6 +82,7 @@ struct ObjectContact {
   std::vector<Index> triangles;              // (n_triangles × 3) node ids
   std::vector<Index> triangle_face;          // (n_triangles) the face each was fanned from
   std::vector<double> triangle_radius;       // (n_triangles) m, half the shell's thickness
+  double skin = 0.0;  // m: the candidate pairs are those within reach + 2 skin
   // Each contact's stiffness: omega_squared / (1/m_A + 1/m_B), m_X the lightest free node of
   // primitive X, so that no contact oscillates faster than √omega_squared (auto); or `stiffness`.
   double omega_squared = 0.0;  // 1/s²; 0 when the stiffness is given

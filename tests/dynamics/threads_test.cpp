@@ -89,7 +89,7 @@ TEST(Threads, TearingIsTheSameForAnyThreadCount) {
 }
 
 // Self-contact too: one object of two 30 × 30 sheets 5 mm apart, with contact radii of 3 mm, so
-// that thousands of node–triangle and bar–bar pairs touch from the first step, pressed together.
+// that every node of one touches the other from the first step, pressed together.
 // The pairs are summed in key order, serially, so 1 and 2 threads give the same bits.
 State run_two_sheets(int threads, int steps) {
   test::TemporaryFolder folder("sheets");
@@ -134,7 +134,8 @@ objects:
 TEST(Threads, SelfContactIsTheSameForAnyThreadCount) {
   const State one = run_two_sheets(1, 40);
   const State two = run_two_sheets(2, 40);
-  EXPECT_GT(one.object_contact.previous.size(), 1000u);  // the sheets do touch
+  // The sheets did touch, hard: the contacts' dampers took energy.
+  EXPECT_LT(one.energy.contact_damping_work, -1e-3 * one.energy_workspace.last.kinetic);
   EXPECT_TRUE(same_bits(one.x, two.x));
   EXPECT_TRUE(same_bits(one.v_half, two.v_half));
   EXPECT_EQ(one.energy_workspace.last.total, two.energy_workspace.last.total);
