@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "dynamics/contact_geometry.hpp"
+#include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -115,7 +116,10 @@ void find_candidates(const Model& model, State& state) {
       const Index b1 = model.bar_nodes[2 * b + 1];
       if (b <= a || a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1 ||
           !objects_may_touch(contact, object_a, model.node_object[b0]) ||
-          (!a_free && model.pinned(b0) && model.pinned(b1))) {
+          (!a_free && model.pinned(b0) && model.pinned(b1)) ||
+          (object_a == model.node_object[b0] &&
+           (contact.joined(a0, b0) || contact.joined(a0, b1) || contact.joined(a1, b0) ||
+            contact.joined(a1, b1)))) {
         return;
       }
       add_if_near(contact, x, {pair_key(kBarBarContact, a, b), {a0, a1, b0, b1}}, work.candidates);
@@ -128,7 +132,9 @@ void find_candidates(const Model& model, State& state) {
       const Index* c = &contact.triangles[3 * t];
       if (p == c[0] || p == c[1] || p == c[2] ||
           !objects_may_touch(contact, object_p, model.node_object[c[0]]) ||
-          (model.pinned(p) && model.pinned(c[0]) && model.pinned(c[1]) && model.pinned(c[2]))) {
+          (model.pinned(p) && model.pinned(c[0]) && model.pinned(c[1]) && model.pinned(c[2])) ||
+          (object_p == model.node_object[c[0]] &&
+           (contact.joined(p, c[0]) || contact.joined(p, c[1]) || contact.joined(p, c[2])))) {
         return;
       }
       add_if_near(contact, x, {pair_key(kPointTriangleContact, p, t), {p, c[0], c[1], c[2]}},
@@ -206,26 +212,37 @@ void find_touching_pairs(const Model& model, State& state) {
   if (!work.candidates_found || moved_past_skin(model, state)) {
     find_candidates(model, state);
   }
+  // Each candidate's closest points, in parallel (each writes its own slot), then the touching
+  // ones in candidate order.
   const std::vector<Vec3>& x = state.x;
-  work.touching.clear();
-  for (const ContactCandidate& pair : work.candidates) {
+  const auto count = static_cast<Index>(work.candidates.size());
+  work.checked.resize(work.candidates.size());
+  for_each_index(count, [&](Index k) {
+    const ContactCandidate& pair = work.candidates[k];
+    ContactPoint& point = work.checked[k];
     const bool bar_pair = (pair.key >> 63) == kBarBarContact;
     const Index a = contact_side_a(pair.key);
     const Index b = contact_side_b(pair.key);
+    point.key = 0;  // not touching
     if (bar_pair ? bar_broken(state, a) || bar_broken(state, b)
                  : triangle_broken(contact, state, b)) {
-      continue;  // torn since the search
+      return;  // torn since the search
     }
     const std::array<double, 4> weights = closest_weights(pair, x);
     const Vec3 separation = separation_of(pair.nodes, weights, x);
     const double reach = contact_reach(contact, pair.key);
     if (separation.squaredNorm() < reach * reach) {
-      ContactPoint& point = work.touching.emplace_back();
       point.key = pair.key;
       point.features = features_of(pair, weights);
       point.nodes = pair.nodes;
       point.weights = weights;
       point.separation = separation;
+    }
+  });
+  work.touching.clear();
+  for (const ContactPoint& point : work.checked) {
+    if (point.key != 0) {
+      work.touching.push_back(point);
     }
   }
   // One contact per pair of features: the first pair (by key) that names them.

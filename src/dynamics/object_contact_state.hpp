@@ -20,6 +20,7 @@ struct ContactFeatures {
   std::int32_t kind = kNodeNode;
   Index a = 0, b = 0, c = 0;
 
+  // NOLINTNEXTLINE(modernize-use-nullptr): a false alarm on the defaulted comparison
   auto operator<=>(const ContactFeatures&) const = default;
 };
 
@@ -43,6 +44,7 @@ struct ContactCandidate {
 
 struct ObjectContactWorkspace {
   std::vector<ContactCandidate> candidates;  // by key, found at `reference_x`
+  std::vector<ContactPoint> checked;         // (n_candidates) scratch: key 0 when not touching
   std::vector<Vec3> reference_x;             // (n_nodes) m, the positions they were found at
   bool candidates_found = false;
   std::int64_t searches = 0;                // how many times the candidates were found, in all

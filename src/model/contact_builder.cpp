@@ -70,6 +70,21 @@ void add_object_contact(const SceneDescription& scene, Model& model) {
     }
   }
 
+  // Each node's neighbours along bars of the contact, as a sorted list per node.
+  std::vector<std::vector<Index>> joined(model.node_count());
+  for (const Index b : contact.bars) {
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    joined[n0].push_back(n1);
+    joined[n1].push_back(n0);
+  }
+  contact.neighbour_offsets.assign(1, 0);
+  for (std::vector<Index>& list : joined) {
+    std::sort(list.begin(), list.end());
+    contact.neighbours.insert(contact.neighbours.end(), list.begin(), list.end());
+    contact.neighbour_offsets.push_back(static_cast<Index>(contact.neighbours.size()));
+  }
+
   // The skin of the candidate pairs: the largest radius. Wider, the pairs are found less often
   // but more of them are checked every step.
   contact.skin = *std::max_element(contact.bar_radius.begin(), contact.bar_radius.end());

@@ -2,6 +2,7 @@
 // The physical model: built once from a scene, then only read (`const Model&`). Everything that
 // changes during a run lives in dynamics' State. Arrays are flat and indexed by element id; each
 // comment gives the shape and the unit.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -82,7 +83,17 @@ struct ObjectContact {
   std::vector<Index> triangles;              // (n_triangles × 3) node ids
   std::vector<Index> triangle_face;          // (n_triangles) the face each was fanned from
   std::vector<double> triangle_radius;       // (n_triangles) m, half the shell's thickness
+  // The nodes each node of the contact is joined to by a bar, increasing: pairs with a node of
+  // one joined to a node of the other are neighbours in the mesh, and never touch.
+  std::vector<Index> neighbour_offsets;  // (n_nodes + 1) into neighbours
+  std::vector<Index> neighbours;
   double skin = 0.0;  // m: the candidate pairs are those within reach + 2 skin
+
+  bool joined(Index u, Index v) const {
+    const auto first = neighbours.begin() + neighbour_offsets[u];
+    const auto last = neighbours.begin() + neighbour_offsets[u + 1];
+    return std::binary_search(first, last, v);
+  }
   // Each contact's stiffness: omega_squared / (1/m_A + 1/m_B), m_X the lightest free node of
   // primitive X, so that no contact oscillates faster than √omega_squared (auto); or `stiffness`.
   double omega_squared = 0.0;  // 1/s²; 0 when the stiffness is given

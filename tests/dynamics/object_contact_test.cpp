@@ -93,7 +93,8 @@ TEST(ContactGeometry, TriangleClosestPointMatchesBruteForce) {
 }
 
 // Every box that overlaps a query is visited once, and no other; boxes not filed are never
-// visited. Boxes of very different sizes, clustered so that cells hold many.
+// visited. Boxes of very different sizes, clustered so that cells hold many: most narrow, one in
+// twenty wide (filed in every cell it covers), one in a hundred wider still (kept aside).
 TEST(ContactGrid, VisitsExactlyTheOverlappingBoxesOnce) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> size(0.001, 0.2);
@@ -101,13 +102,14 @@ TEST(ContactGrid, VisitsExactlyTheOverlappingBoxesOnce) {
   std::vector<std::uint8_t> use;
   for (int i = 0; i < 2000; ++i) {
     const Vec3 centre = (i % 3 == 0 ? 0.1 : 1.0) * random_point(rng);
-    const Vec3 half(size(rng), size(rng), size(rng));
+    const double scale = i % 100 == 1 ? 12.0 : i % 20 == 2 ? 3.0 : 1.0;
+    const Vec3 half = scale * Vec3(size(rng), size(rng), size(rng));
     boxes.push_back({centre - 0.5 * half, centre + 0.5 * half});
     use.push_back(i % 7 == 0 ? 0 : 1);
   }
   ContactGrid grid;
-  grid.build(boxes, use, 0.2);
-  for (int q = 0; q < 300; ++q) {
+  grid.build(boxes, use, 0.0);
+  for (int q = 0; q < 400; ++q) {
     const Box& query = boxes[static_cast<std::size_t>(q)];
     std::multiset<Index> visited;
     grid.visit_overlapping(query, [&](Index id) { visited.insert(id); });
