@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <Eigen/Dense>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -159,6 +160,22 @@ inline std::string replaced(std::string text, const std::string& from, const std
   const std::size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << "no '" << from << "' to replace";
   return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// The acceleration a of the least-squares fit s = s0 + v0 t + ½ a t² to the samples (t, s) with
+// t ≥ from: how fast a body slides, after its landing transient.
+inline double fitted_acceleration(const std::vector<std::pair<double, double>>& track,
+                                  double from) {
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  for (const auto& [t, s] : track) {
+    if (t >= from) {
+      const Eigen::Vector3d basis(1.0, t, 0.5 * t * t);
+      normal += basis * basis.transpose();
+      rhs += basis * s;
+    }
+  }
+  return normal.ldlt().solve(rhs)[2];
 }
 
 }  // namespace dinam::test

@@ -68,16 +68,7 @@ TEST(Friction, BlockAboveTheFrictionAngleSlidesWithKineticFriction) {
   const Model model = block_on_incline(degrees, "{static: 0.5, kinetic: 0.3}");
   const auto track = slide(model, degrees, 0.8);
   // Least-squares fit s = s0 + v0 t + ½ a t² over t ∈ [0.2, 0.8] s, after the landing transient.
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-  for (const auto& [t, s] : track) {
-    if (t >= 0.2) {
-      const Eigen::Vector3d basis(1.0, t, 0.5 * t * t);
-      normal += basis * basis.transpose();
-      rhs += basis * s;
-    }
-  }
-  const double acceleration = normal.ldlt().solve(rhs)[2];
+  const double acceleration = test::fitted_acceleration(track, 0.2);
   const double expected = kG * (std::sin(theta) - 0.3 * std::cos(theta));
   EXPECT_NEAR(acceleration / expected, 1.0, 0.02);
 }
