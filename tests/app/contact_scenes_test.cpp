@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "app/frame_source.hpp"
+#include "app/shipped_scenes.hpp"
 #include "dynamics/contact_grid.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -13,14 +14,8 @@
 namespace dinam {
 namespace {
 
-SceneDescription shipped(const std::string& name) {
-  return read_scene(std::filesystem::path(DINAM_SOURCE_DIR) / "scenes" / (name + ".yaml"));
-}
-
-SimulatedFrames simulate_scene(const SceneDescription& scene, const Model& model) {
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  return simulate_frames(model, timestep, scene.frame_count(), false, {});
-}
+using test::shipped;
+using test::simulate_scene;
 
 // True when segment p–q passes through triangle a, b, c (Möller and Trumbore, 1997).
 bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b,

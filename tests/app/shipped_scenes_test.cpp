@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "app/frame_source.hpp"
+#include "app/shipped_scenes.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/settle.hpp"
 #include "dynamics/stability.hpp"
@@ -17,17 +18,8 @@
 namespace dinam {
 namespace {
 
-SceneDescription shipped(const std::string& name) {
-  return read_scene(std::filesystem::path(DINAM_SOURCE_DIR) / "scenes" / (name + ".yaml"));
-}
-
-// Every frame of a scene at its own time step.
-SimulatedFrames simulate_scene(const SceneDescription& scene, const Model& model,
-                               bool track_energy = false,
-                               const std::function<void(int, const State&)>& on_frame = {}) {
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  return simulate_frames(model, timestep, scene.frame_count(), track_energy, on_frame);
-}
+using test::shipped;
+using test::simulate_scene;
 
 // The lowest height any node reaches in frames first … last.
 double lowest_height(const SimulatedFrames& frames, std::size_t first = 0) {
