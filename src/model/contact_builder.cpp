@@ -53,12 +53,17 @@ void add_object_contact(const SceneDescription& scene, Model& model) {
       contact.points.push_back(n);
     }
   }
-  // Faces fan into triangles from their first corner (a quad gives two).
+  // Faces fan into triangles from their first corner (a quad gives two). An object drawn as
+  // wires (a net of cords, whose faces are the holes between them) has none unless it asks.
+  auto faces_take_part = [&](Index object) {
+    const ObjectDesc& desc_of = scene.objects[object];
+    return takes_part(object) && desc_of.contact.faces.value_or(desc_of.style != DrawStyle::kWire);
+  };
   for (Index f = 0; f < model.face_count(); ++f) {
     const Index first = model.face_offsets[f];
     const Index size = model.face_offsets[f + 1] - first;
     const Index* corners = &model.face_nodes[first];
-    if (!takes_part(model.node_object[corners[0]])) {
+    if (!faces_take_part(model.node_object[corners[0]])) {
       continue;
     }
     for (Index k = 1; k + 1 < size; ++k) {

@@ -59,6 +59,9 @@ ObjectContactDesc read_object_contact(YamlMap map) {
     contact.radius = map.number("radius", 0.0);
     require_positive(*contact.radius, map.loc("radius"), map.path("radius"), "m");
   }
+  if (map.has("faces")) {
+    contact.faces = map.boolean("faces", true);
+  }
   map.finish();
   return contact;
 }

@@ -115,6 +115,8 @@ struct ObjectContactDesc {
   std::optional<bool> self;      // touches itself
   std::optional<double> radius;  // m, of its bars as capsules and its faces as shells; default:
                                  // each bar's wire radius
+  std::optional<bool> faces;     // its faces are shells; default: unless drawn as wires (a net
+                                 // of cords has holes between them)
 };
 
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
