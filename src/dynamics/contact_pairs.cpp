@@ -1,5 +1,7 @@
 #include "dynamics/contact_pairs.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 
 #include "dynamics/contact_geometry.hpp"
@@ -51,11 +53,36 @@ Vec3 separation_of(const std::array<Index, 4>& nodes, const std::array<double, 4
   return separation;
 }
 
+// True when the boxes of the pair's two sides are `distance` or more apart along some axis: then
+// so are their closest points. Two layers of cloth lying one over the other are near enough to
+// be candidates but, mostly, apart by this cheap test.
+bool boxes_apart(const ContactCandidate& pair, const std::vector<Vec3>& x, double distance) {
+  const std::array<Index, 4>& n = pair.nodes;
+  const int a_nodes = (pair.key >> 63) == kBarBarContact ? 2 : 1;
+  Vec3 a_min = x[n[0]];
+  Vec3 a_max = a_min;
+  Vec3 b_min = x[n[a_nodes]];
+  Vec3 b_max = b_min;
+  for (int j = 1; j < 4; ++j) {
+    const Vec3& p = x[n[j]];
+    if (j < a_nodes) {
+      a_min = a_min.cwiseMin(p);
+      a_max = a_max.cwiseMax(p);
+    } else if (j > a_nodes) {
+      b_min = b_min.cwiseMin(p);
+      b_max = b_max.cwiseMax(p);
+    }
+  }
+  const Vec3 gap = (a_min - b_max).cwiseMax(b_min - a_max);
+  return gap.maxCoeff() >= distance;
+}
+
 // Appends the pair to the candidates when its closest points are within reach + 2 skin.
-void add_if_near(const ObjectContact& contact, const std::vector<Vec3>& x,
+void add_if_near(const ObjectContact& contact, double skin, const std::vector<Vec3>& x,
                  const ContactCandidate& pair, std::vector<ContactCandidate>& candidates) {
-  const double near = contact_reach(contact, pair.key) + 2.0 * contact.skin;
-  if (separation_of(pair.nodes, closest_weights(pair, x), x).squaredNorm() < near * near) {
+  const double near = contact_reach(contact, pair.key) + 2.0 * skin;
+  if (!boxes_apart(pair, x, near) &&
+      separation_of(pair.nodes, closest_weights(pair, x), x).squaredNorm() < near * near) {
     candidates.push_back(pair);
   }
 }
@@ -65,47 +92,117 @@ void file_boxes(const Model& model, State& state) {
   const ObjectContact& contact = model.contact;
   ObjectContactWorkspace& work = state.object_contact;
   const std::vector<Vec3>& x = state.x;
+  const double skin = work.skin;
   work.bar_boxes.resize(model.bar_count());
   work.bar_used.assign(model.bar_count(), 0);
-  for (const Index b : contact.bars) {
+  for_each_index(static_cast<Index>(contact.bars.size()), [&](Index k) {
+    const Index b = contact.bars[k];
     if (!bar_broken(state, b)) {
       work.bar_boxes[b] = box_of(x[model.bar_nodes[2 * b]], x[model.bar_nodes[2 * b + 1]],
-                                 contact.bar_radius[b] + contact.skin);
+                                 contact.bar_radius[b] + skin);
       work.bar_used[b] = 1;
     }
-  }
+  });
   const auto triangles = static_cast<Index>(contact.triangle_face.size());
   work.triangle_boxes.resize(triangles);
   work.triangle_used.assign(triangles, 0);
-  for (Index t = 0; t < triangles; ++t) {
+  for_each_index(triangles, [&](Index t) {
     if (!triangle_broken(contact, state, t)) {
       const Index* corners = &contact.triangles[3 * t];
-      const double grow = contact.triangle_radius[t] + contact.skin;
+      const double grow = contact.triangle_radius[t] + skin;
       Box box = box_of(x[corners[0]], x[corners[1]], grow);
       box.min = box.min.cwiseMin(x[corners[2]] - Vec3::Constant(grow));
       box.max = box.max.cwiseMax(x[corners[2]] + Vec3::Constant(grow));
       work.triangle_boxes[t] = box;
       work.triangle_used[t] = 1;
     }
-  }
+  });
   double widest_point = 0.0;
   for (const Index p : contact.points) {
-    widest_point = std::max(widest_point, 2.0 * (contact.point_radius[p] + contact.skin));
+    widest_point = std::max(widest_point, 2.0 * (contact.point_radius[p] + skin));
   }
   work.bar_grid.build(work.bar_boxes, work.bar_used, 0.0);
   work.triangle_grid.build(work.triangle_boxes, work.triangle_used, widest_point);
 }
 
-// Every pair within reach + 2 skin at the current positions, in key order.
+// gather(item, list) for every item in [0, count), appending what it finds to `list`; in
+// contiguous runs of items, one per thread, each into its own list of `per_thread`, which are
+// then appended to `out` in order: the same elements in the same order for any thread count.
+template <class Element, class Gather>
+void gather_in_parallel(Index count, std::vector<std::vector<Element>>& per_thread,
+                        std::vector<Element>& out, const Gather& gather) {
+  if (count < kMinParallelItems) {
+    for (Index i = 0; i < count; ++i) {
+      gather(i, out);
+    }
+    return;
+  }
+  const auto threads = static_cast<std::size_t>(omp_get_max_threads());
+  if (per_thread.size() < threads) {
+    per_thread.resize(threads);
+  }
+  for (std::vector<Element>& list : per_thread) {
+    list.clear();
+  }
+#pragma omp parallel
+  {
+    const auto thread = static_cast<Index>(omp_get_thread_num());
+    const auto team = static_cast<Index>(omp_get_num_threads());
+    std::vector<Element>& list = per_thread[thread];
+    for (Index i = count * thread / team; i < count * (thread + 1) / team; ++i) {
+      gather(i, list);
+    }
+  }
+  for (const std::vector<Element>& list : per_thread) {
+    out.insert(out.end(), list.begin(), list.end());
+  }
+}
+
+// The narrowest skin, as a fraction of the widest (the largest contact radius).
+constexpr double kNarrowestSkin = 0.05;
+
+// What a search costs, in candidate checks (contact_pairs.hpp).
+double search_cost(const ObjectContact& contact) {
+  return kSearchCostInChecks * static_cast<double>(contact.bars.size() + contact.points.size());
+}
+
+// The skin for the next search (contact_pairs.hpp): narrower while checking the candidates since
+// the last search cost more than a search, wider while it cost under a quarter of one.
+double next_skin(const Model& model, const State& state) {
+  const ObjectContact& contact = model.contact;
+  const ObjectContactWorkspace& work = state.object_contact;
+  if (!work.candidates_found) {
+    return contact.skin;
+  }
+  const double steps =
+      static_cast<double>(std::max<std::int64_t>(state.step - work.search_step, 1));
+  const double checks = steps * static_cast<double>(work.candidates.size());
+  const double search = search_cost(contact);
+  if (checks > search) {
+    return std::max(0.7 * work.skin, kNarrowestSkin * contact.skin);
+  }
+  if (checks < 0.25 * search) {
+    return std::min(1.4 * work.skin, contact.skin);
+  }
+  return work.skin;
+}
+
+// Every pair within reach + 2 skin at the current positions.
 void find_candidates(const Model& model, State& state) {
   const ObjectContact& contact = model.contact;
   ObjectContactWorkspace& work = state.object_contact;
   const std::vector<Vec3>& x = state.x;
+  work.skin = next_skin(model, state);
+  const double skin = work.skin;
   file_boxes(model, state);
   work.candidates.clear();
-  for (const Index a : contact.bars) {
+  auto search = [&](Index count, const auto& gather) {
+    gather_in_parallel(count, work.thread_candidates, work.candidates, gather);
+  };
+  search(static_cast<Index>(contact.bars.size()), [&](Index k, auto& list) {
+    const Index a = contact.bars[k];
     if (work.bar_used[a] == 0) {
-      continue;
+      return;
     }
     const Index a0 = model.bar_nodes[2 * a];
     const Index a1 = model.bar_nodes[2 * a + 1];
@@ -122,11 +219,12 @@ void find_candidates(const Model& model, State& state) {
             contact.joined(a1, b1)))) {
         return;
       }
-      add_if_near(contact, x, {pair_key(kBarBarContact, a, b), {a0, a1, b0, b1}}, work.candidates);
+      add_if_near(contact, skin, x, {pair_key(kBarBarContact, a, b), {a0, a1, b0, b1}}, list);
     });
-  }
-  for (const Index p : contact.points) {
-    const Box box = box_of(x[p], x[p], contact.point_radius[p] + contact.skin);
+  });
+  search(static_cast<Index>(contact.points.size()), [&](Index k, auto& list) {
+    const Index p = contact.points[k];
+    const Box box = box_of(x[p], x[p], contact.point_radius[p] + skin);
     const Index object_p = model.node_object[p];
     work.triangle_grid.visit_overlapping(box, [&](Index t) {
       const Index* c = &contact.triangles[3 * t];
@@ -137,21 +235,20 @@ void find_candidates(const Model& model, State& state) {
            (contact.joined(p, c[0]) || contact.joined(p, c[1]) || contact.joined(p, c[2])))) {
         return;
       }
-      add_if_near(contact, x, {pair_key(kPointTriangleContact, p, t), {p, c[0], c[1], c[2]}},
-                  work.candidates);
+      add_if_near(contact, skin, x, {pair_key(kPointTriangleContact, p, t), {p, c[0], c[1], c[2]}},
+                  list);
     });
-  }
-  std::sort(work.candidates.begin(), work.candidates.end(),
-            [](const ContactCandidate& a, const ContactCandidate& b) { return a.key < b.key; });
+  });
   work.reference_x = x;
   work.candidates_found = true;
+  work.search_step = state.step;
   ++work.searches;
 }
 
 // True once some node of the contact has moved by more than the skin since the search.
 bool moved_past_skin(const Model& model, const State& state) {
   const ObjectContactWorkspace& work = state.object_contact;
-  const double skin_squared = model.contact.skin * model.contact.skin;
+  const double skin_squared = work.skin * work.skin;
   for (const Index p : model.contact.points) {
     if ((state.x[p] - work.reference_x[p]).squaredNorm() > skin_squared) {
       return true;
@@ -209,42 +306,43 @@ double contact_reach(const ObjectContact& contact, std::uint64_t key) {
 void find_touching_pairs(const Model& model, State& state) {
   const ObjectContact& contact = model.contact;
   ObjectContactWorkspace& work = state.object_contact;
-  if (!work.candidates_found || moved_past_skin(model, state)) {
+  // Search again once a node has moved by the skin, or once checking the candidates has cost
+  // more than a search with a narrower skin would (contact_pairs.hpp).
+  const bool costly = work.candidates_found && work.skin > kNarrowestSkin * contact.skin &&
+                      static_cast<double>(state.step - work.search_step) *
+                              static_cast<double>(work.candidates.size()) >
+                          search_cost(contact);
+  if (!work.candidates_found || costly || moved_past_skin(model, state)) {
     find_candidates(model, state);
   }
-  // Each candidate's closest points, in parallel (each writes its own slot), then the touching
-  // ones in candidate order.
+  // Each candidate's closest points, in parallel; the touching ones in candidate order.
   const std::vector<Vec3>& x = state.x;
-  const auto count = static_cast<Index>(work.candidates.size());
-  work.checked.resize(work.candidates.size());
-  for_each_index(count, [&](Index k) {
-    const ContactCandidate& pair = work.candidates[k];
-    ContactPoint& point = work.checked[k];
-    const bool bar_pair = (pair.key >> 63) == kBarBarContact;
-    const Index a = contact_side_a(pair.key);
-    const Index b = contact_side_b(pair.key);
-    point.key = 0;  // not touching
-    if (bar_pair ? bar_broken(state, a) || bar_broken(state, b)
-                 : triangle_broken(contact, state, b)) {
-      return;  // torn since the search
-    }
-    const std::array<double, 4> weights = closest_weights(pair, x);
-    const Vec3 separation = separation_of(pair.nodes, weights, x);
-    const double reach = contact_reach(contact, pair.key);
-    if (separation.squaredNorm() < reach * reach) {
-      point.key = pair.key;
-      point.features = features_of(pair, weights);
-      point.nodes = pair.nodes;
-      point.weights = weights;
-      point.separation = separation;
-    }
-  });
   work.touching.clear();
-  for (const ContactPoint& point : work.checked) {
-    if (point.key != 0) {
-      work.touching.push_back(point);
-    }
-  }
+  gather_in_parallel(static_cast<Index>(work.candidates.size()), work.thread_touching,
+                     work.touching, [&](Index k, auto& list) {
+                       const ContactCandidate& pair = work.candidates[k];
+                       const bool bar_pair = (pair.key >> 63) == kBarBarContact;
+                       const Index a = contact_side_a(pair.key);
+                       const Index b = contact_side_b(pair.key);
+                       if (bar_pair ? bar_broken(state, a) || bar_broken(state, b)
+                                    : triangle_broken(contact, state, b)) {
+                         return;  // torn since the search
+                       }
+                       const double reach = contact_reach(contact, pair.key);
+                       if (boxes_apart(pair, x, reach)) {
+                         return;
+                       }
+                       const std::array<double, 4> weights = closest_weights(pair, x);
+                       const Vec3 separation = separation_of(pair.nodes, weights, x);
+                       if (separation.squaredNorm() < reach * reach) {
+                         ContactPoint& point = list.emplace_back();
+                         point.key = pair.key;
+                         point.features = features_of(pair, weights);
+                         point.nodes = pair.nodes;
+                         point.weights = weights;
+                         point.separation = separation;
+                       }
+                     });
   // One contact per pair of features: the first pair (by key) that names them.
   std::sort(work.touching.begin(), work.touching.end(),
             [](const ContactPoint& a, const ContactPoint& b) {

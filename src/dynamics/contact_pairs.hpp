@@ -6,7 +6,17 @@
 // the closest points of a pair are weighted means of its nodes, so a pair farther apart than
 // reach + 2s when the candidates were found cannot have come within reach before then. Most steps
 // check only the candidates; the search runs again once some node has moved by s. The pairs that
-// touch are the same whenever the search ran, so the motion does not depend on it.
+// touch are the same whenever the search ran and whatever the skin, so the motion depends on
+// neither.
+//
+// The skin trades the two costs: a wider one finds more candidates to check every step, a
+// narrower one searches more often. Each search sets it from the last interval, by counts alone
+// (so that it is the same for any thread count and machine): a search costs about as much as
+// checking kSearchCostInChecks candidates per primitive, and while the candidates checked since
+// the last search cost more than the search, the skin narrows (to 1/20 of the largest radius at
+// least); while they cost under a quarter of it, it widens again (to the largest radius at most).
+// Falling cloth with little touching keeps the widest skin; cloth lying on itself, where every
+// node has dozens of pairs within a radius, narrows it.
 #include <cstdint>
 
 #include "dynamics/state.hpp"
@@ -30,7 +40,11 @@ inline Index contact_side_b(std::uint64_t key) {
 // The sum of the pair's radii: it touches when its closest points are nearer.
 double contact_reach(const ObjectContact& contact, std::uint64_t key);
 
-// Fills state.object_contact.touching, in key order, with every pair nearer than the sum of its
+// Checking a candidate against searching again, per primitive (bar or node) of the contact;
+// measured with bench_contact (docs/performance.md).
+inline constexpr double kSearchCostInChecks = 80.0;
+
+// Fills state.object_contact.touching, by features, with every pair nearer than the sum of its
 // radii at state.x: its nodes, the closest points' weights and their separation.
 void find_touching_pairs(const Model& model, State& state);
 

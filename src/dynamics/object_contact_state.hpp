@@ -43,11 +43,15 @@ struct ContactCandidate {
 };
 
 struct ObjectContactWorkspace {
-  std::vector<ContactCandidate> candidates;  // by key, found at `reference_x`
-  std::vector<ContactPoint> checked;         // (n_candidates) scratch: key 0 when not touching
+  std::vector<ContactCandidate> candidates;  // in the search's order, found at `reference_x`
   std::vector<Vec3> reference_x;             // (n_nodes) m, the positions they were found at
   bool candidates_found = false;
-  std::int64_t searches = 0;                // how many times the candidates were found, in all
+  double skin = 0.0;             // m, of the candidates found last (0: none yet)
+  std::int64_t search_step = 0;  // the step they were found at
+  std::int64_t searches = 0;     // how many times the candidates were found, in all
+  // (n_threads) scratch: each thread's candidates and touching pairs, joined in thread order.
+  std::vector<std::vector<ContactCandidate>> thread_candidates;
+  std::vector<std::vector<ContactPoint>> thread_touching;
   std::vector<ContactPoint> touching;       // at the last force evaluation, by features
   std::vector<ContactPoint> previous;       // at the step before, by features (friction's history)
   std::vector<Box> bar_boxes;               // (n_bars) each bar's capsule box
