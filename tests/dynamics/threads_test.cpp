@@ -88,12 +88,14 @@ TEST(Threads, TearingIsTheSameForAnyThreadCount) {
   EXPECT_EQ(one.energy_workspace.last.total, two.energy_workspace.last.total);
 }
 
-// Self-contact too: one object of two 30 × 30 sheets 5 mm apart, with contact radii of 3 mm, so
-// that every node of one touches the other from the first step, pressed together.
-// The pairs are summed in key order, serially, so 1 and 2 threads give the same bits.
+// Self-contact too: one object of two 46 × 46 sheets 5 mm apart, with contact radii of 3 mm, so
+// that every node of one touches the other from the first step, pressed together. The sheets
+// have more bars, nodes and candidate pairs than kMinParallelItems, so the search and the check
+// run on both threads, each into its own list, joined in order; the pairs are summed serially in
+// their features' order, so 1 and 2 threads give the same bits.
 State run_two_sheets(int threads, int steps) {
   test::TemporaryFolder folder("sheets");
-  constexpr int kCells = 30;
+  constexpr int kCells = 46;
   std::string obj;
   for (int sheet = 0; sheet < 2; ++sheet) {
     for (int j = 0; j <= kCells; ++j) {
