@@ -176,6 +176,23 @@ int wire_crossings(const Model& model, const std::vector<Vec3>& before,
   return count;
 }
 
+// Counts wire crossings (above) between consecutive samples of a motion, within 3 cm, by the
+// contact rule of `judge`.
+struct CrossingCounter {
+  explicit CrossingCounter(const Model& model) : judge(model) {}
+
+  const Model& judge;
+  std::vector<Vec3> before;
+  int crossed = 0;
+
+  void sample(const std::vector<Vec3>& x) {
+    if (!before.empty()) {
+      crossed += wire_crossings(judge, before, x, 0.03);
+    }
+    before = x;
+  }
+};
+
 // Steps a shipped scene from rest to its last frame, calling `sample` with the positions every
 // `interval` seconds (to the nearest step) and `on_frame` with the state at every frame.
 void run_sampled(const SceneDescription& scene, const Model& model, double interval,
@@ -267,14 +284,11 @@ TEST(ShippedScenes, BallThrownIntoTheNetIsCaughtAndThrownBackWithNoWirePassingAC
     const Model model = build_model(variant);
     const ModelObject& ball = model.objects[1];
     Track track;
-    std::vector<Vec3> before;
+    CrossingCounter counter(judge);
     run_sampled(
         variant, model, 2e-4,
         [&](const std::vector<Vec3>& x) {
-          if (!before.empty()) {
-            track.crossed += wire_crossings(judge, before, x, 0.03);
-          }
-          before = x;
+          counter.sample(x);
           for (Index i = ball.first_node; i < ball.first_node + ball.node_count; ++i) {
             track.lowest = std::min(track.lowest, x[i].z());
           }
@@ -286,6 +300,7 @@ TEST(ShippedScenes, BallThrownIntoTheNetIsCaughtAndThrownBackWithNoWirePassingAC
           }
           track.centre.push_back(height / ball.node_count);
         });
+    track.crossed = counter.crossed;
     return track;
   };
   const Track caught = run(scene);
@@ -325,15 +340,9 @@ TEST(ShippedScenes, RopeDroppedOnTheFloorCoilsIntoAHeapWithoutPassingThroughItse
   auto run = [&judge](const SceneDescription& variant) {
     const Model model = build_model(variant);
     Heap heap;
-    std::vector<Vec3> before;
+    CrossingCounter counter(judge);
     run_sampled(
-        variant, model, 2e-4,
-        [&](const std::vector<Vec3>& x) {
-          if (!before.empty()) {
-            heap.crossed += wire_crossings(judge, before, x, 0.03);
-          }
-          before = x;
-        },
+        variant, model, 2e-4, [&](const std::vector<Vec3>& x) { counter.sample(x); },
         [&](const State& state) {
           Vec3 low = Vec3::Constant(1e9);
           Vec3 high = Vec3::Constant(-1e9);
@@ -349,6 +358,7 @@ TEST(ShippedScenes, RopeDroppedOnTheFloorCoilsIntoAHeapWithoutPassingThroughItse
           heap.on_top /= static_cast<double>(state.x.size());
           heap.spread = std::max(high.x() - low.x(), high.y() - low.y());
         });
+    heap.crossed = counter.crossed;
     return heap;
   };
   const Heap heap = run(scene);
