@@ -134,8 +134,8 @@ objects:
 }
 
 TEST(Threads, SelfContactIsTheSameForAnyThreadCount) {
-  const State one = run_two_sheets(1, 40);
-  const State two = run_two_sheets(2, 40);
+  const State one = run_two_sheets(1, 25);
+  const State two = run_two_sheets(2, 25);
   // The sheets did touch, hard: the contacts' dampers took energy.
   EXPECT_LT(one.energy.contact_damping_work, -1e-3 * one.energy_workspace.last.kinetic);
   EXPECT_TRUE(same_bits(one.x, two.x));
