@@ -9,6 +9,15 @@
 #include "core/error.hpp"
 
 namespace dinam {
+
+Model build_model_telling_warnings(const SceneDescription& scene) {
+  Model model = build_model(scene);
+  for (const std::string& warning : model.warnings) {
+    fmt::print(stderr, "{}\n", warning);
+  }
+  return model;
+}
+
 namespace {
 
 volatile std::sig_atomic_t stop_signal_received = 0;

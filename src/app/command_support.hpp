@@ -6,9 +6,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
+
+// The scene's model, its warnings (a mesh's degenerate faces, dropped) printed to stderr.
+Model build_model_telling_warnings(const SceneDescription& scene);
 
 using Clock = std::chrono::steady_clock;
 

@@ -74,7 +74,7 @@ int run_render(const RenderOptions& options) {
     cache.emplace(*options.cache);
     cache->check_scene(scene);
   }
-  const Model model = build_model(scene);
+  const Model model = build_model_telling_warnings(scene);
   if (cache) {
     cache->check_model(model);
   }
@@ -207,7 +207,7 @@ int run_snapshot(const SnapshotOptions& options) {
   const int count = scene.frame_count();
   const std::vector<int> chosen = options.frames ? parse_frame_list(*options.frames, count)
                                                  : std::vector<int>{1, (count + 1) / 2, count};
-  const Model model = build_model(scene);
+  const Model model = build_model_telling_warnings(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   std::vector<Image> textures = read_textures(scene);
   const std::filesystem::path output =

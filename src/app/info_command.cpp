@@ -136,7 +136,7 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
 
 int run_info(const std::filesystem::path& scene_path, bool json) {
   const SceneDescription scene = read_scene(scene_path);
-  const Model model = build_model(scene);
+  const Model model = build_model_telling_warnings(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {

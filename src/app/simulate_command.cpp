@@ -49,7 +49,7 @@ void parse_formats(const std::string& text, CacheRequest& request) {
 int run_simulate(const SimulateOptions& options) {
   // Everything that can be wrong with the input is found before the first file is written.
   const SceneDescription scene = read_scene(options.scene);
-  const Model model = build_model(scene);
+  const Model model = build_model_telling_warnings(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   CacheRequest request;
   parse_formats(options.formats, request);

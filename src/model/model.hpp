@@ -111,6 +111,10 @@ struct WindLoad {
 };
 
 struct Model {
+  // What building it found worth telling the user, who may want to fix the input (a mesh's
+  // degenerate faces, dropped): one line each, "file:line:column: warning: …" as errors read.
+  std::vector<std::string> warnings;
+
   // Nodes: point masses without rotational inertia.
   std::vector<Vec3> node_initial_x;      // (n_nodes) m
   std::vector<Vec3> node_initial_v;      // (n_nodes) m/s

@@ -4,6 +4,7 @@
 #include "model/contact_builder.hpp"
 #include "model/derived_checks.hpp"
 #include "model/frequency_bound.hpp"
+#include "model/mesh_cleaning.hpp"
 #include "model/model.hpp"
 #include "model/spring_builders.hpp"
 #include "model/vertex_welding.hpp"
@@ -14,29 +15,22 @@ namespace {
 
 using Edge = std::pair<Index, Index>;  // welded ids, first < second
 
-// Collects the unique edges of an object's faces and lines in welded ids. A face contributes its
-// closed loop, a line its open chain; an edge shared by two faces appears once.
-std::vector<Edge> unique_edges(const ObjectDesc& object, const WeldResult& weld) {
+// Collects the unique edges of an object's cleaned faces and lines in welded ids. A face
+// contributes its closed loop, a line its open chain; an edge shared by two faces appears once.
+std::vector<Edge> unique_edges(const CleanedMesh& mesh, const WeldResult& weld) {
   std::vector<Edge> edges;
   auto add = [&](Index va, Index vb) {
     const Index a = weld.node_of_vertex[va];
     const Index b = weld.node_of_vertex[vb];
-    if (a == b) {
-      const Vec3& p = object.mesh.vertices[va];
-      throw_user_error(object.mesh_loc,
-                       "object '{}': the mesh edge between vertices {} and {} has zero length "
-                       "(both at ({:g}, {:g}, {:g})); a bar needs two distinct ends, so remove the "
-                       "degenerate face or line from the mesh",
-                       object.name, va, vb, p.x(), p.y(), p.z());
-    }
+    DINAM_CHECK(a != b);  // cleaning took zero-length sides out
     edges.emplace_back(std::min(a, b), std::max(a, b));
   };
-  for (const auto& face : object.mesh.faces) {
+  for (const auto& face : mesh.faces) {
     for (std::size_t i = 0; i < face.size(); ++i) {
       add(face[i], face[(i + 1) % face.size()]);
     }
   }
-  for (const auto& line : object.mesh.lines) {
+  for (const auto& line : mesh.lines) {
     for (std::size_t i = 0; i + 1 < line.size(); ++i) {
       add(line[i], line[i + 1]);
     }
@@ -89,8 +83,8 @@ std::vector<Index> select_nodes(const NodeSelection& selection, const ObjectNode
 
 // The part each edge belongs to (the last that holds it), or −1. A node selection holds the edges
 // whose two ends it holds; a mesh material or group, the sides of its faces and lines.
-std::vector<int> edge_parts(const ObjectDesc& object, const WeldResult& weld,
-                            const std::vector<Edge>& edges,
+std::vector<int> edge_parts(const ObjectDesc& object, const CleanedMesh& clean,
+                            const WeldResult& weld, const std::vector<Edge>& edges,
                             const std::vector<Index>& node_of_welded, const ObjectNodes& nodes,
                             const Model& model) {
   std::vector<int> part_of_edge(edges.size(), -1);
@@ -123,10 +117,14 @@ std::vector<int> edge_parts(const ObjectDesc& object, const WeldResult& weld,
       }
     };
     for (const Index f : part.mesh_faces) {
-      mark(object.mesh.faces[f], true);
+      if (clean.kept_face[f] >= 0) {
+        mark(clean.faces[clean.kept_face[f]], true);
+      }
     }
     for (const Index l : part.mesh_lines) {
-      mark(object.mesh.lines[l], false);
+      if (clean.kept_line[l] >= 0) {
+        mark(clean.lines[clean.kept_line[l]], false);
+      }
     }
   }
   return part_of_edge;
@@ -134,10 +132,17 @@ std::vector<int> edge_parts(const ObjectDesc& object, const WeldResult& weld,
 
 ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) {
   const WeldResult weld = weld_vertices(object.mesh.vertices, weld_tolerance(object.mesh.vertices));
-  const std::vector<Edge> edges = unique_edges(object, weld);
+  const CleanedMesh clean = clean_mesh(object.mesh, weld.node_of_vertex);
+  const std::vector<Edge> edges = unique_edges(clean, weld);
   if (edges.empty()) {
-    throw_user_error(object.mesh_loc, "object '{}': the mesh has no edges, so no bars",
-                     object.name);
+    throw_user_error(object.mesh_loc, "object '{}': the mesh has no edges, so no bars{}",
+                     object.name, clean.changed() ? " (" + clean.summary() + ")" : "");
+  }
+  if (clean.changed()) {
+    model.warnings.push_back(
+        fmt::format("{}: warning: object '{}': {}",
+                    object.mesh_loc.known() ? object.mesh_loc.to_string() : "dinam", object.name,
+                    clean.summary()));
   }
 
   // Only welded vertices that end a bar become nodes; ids stay in first-occurrence order.
@@ -188,7 +193,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) 
   // Each bar's material: the last part holding it, else the object's. Each bar's mass ρ A L0 goes
   // half to each end.
   const std::vector<int> part_of_edge =
-      edge_parts(object, weld, edges, node_of_welded, nodes, model);
+      edge_parts(object, clean, weld, edges, node_of_welded, nodes, model);
   for (std::size_t e = 0; e < edges.size(); ++e) {
     const Index n0 = node_of_welded[edges[e].first];
     const Index n1 = node_of_welded[edges[e].second];
@@ -208,7 +213,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) 
     model.node_mass[n1] += half_mass;
   }
 
-  for (const auto& face : object.mesh.faces) {
+  for (const auto& face : clean.faces) {
     for (const Index vertex : face) {
       model.face_nodes.push_back(node_of_welded[weld.node_of_vertex[vertex]]);
     }

@@ -124,9 +124,28 @@ objects:
   EXPECT_EQ(scene.objects[0].style, DrawStyle::kSurface);
 }
 
-TEST(MeshLoader, ZeroLengthEdgeIsAnErrorNamingTheVertices) {
+// A mesh left with no bar once its degenerate faces are dropped is an error that says so.
+TEST(MeshLoader, MeshWithOnlyADegenerateFaceIsAnError) {
   test::expect_user_error([] { model_of_file("degenerate.obj"); }, 4,
-                          {"zero length", "vertices 1 and 2"});
+                          {"no edges", "1 degenerate face", "faces 0"});
+}
+
+// Real files carry faces with a repeated corner, corners that weld together and faces listed
+// twice: they are dropped, counted in a warning, and the rest of the mesh loads (tests/data/
+// untidy.obj: a unit square of two triangles, with one of each kind of flaw beside them).
+TEST(MeshLoader, DegenerateAndDuplicateFacesAreDroppedWithAWarning) {
+  const Model model = model_of_file("untidy.obj");
+  EXPECT_EQ(model.node_count(), 6);  // the square's corners, the line's end, the corner below
+  EXPECT_EQ(model.bar_count(), 8);   // four sides, the diagonal, the line, two below the square
+  EXPECT_EQ(model.face_count(), 3);  // the two triangles and the quad with a repeated corner
+  ASSERT_EQ(model.warnings.size(), 1U);
+  const std::string& warning = model.warnings[0];
+  // (assimp splits the line into segments: 2–2, a line of a single point, and 2–6.)
+  for (const char* part : {"warning: object", "2 degenerate faces", "1 duplicate face",
+                           "1 zero-length side", "1 line of a single point", "faces 2, 3, 4)"}) {
+    EXPECT_NE(warning.find(part), std::string::npos) << part << " in: " << warning;
+  }
+  EXPECT_TRUE(model_of_file("cube.obj").warnings.empty());
 }
 
 TEST(MeshLoader, UnreadableFileIsAnError) {
