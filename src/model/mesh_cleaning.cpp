@@ -55,8 +55,9 @@ CleanedMesh clean_mesh(const RawMesh& mesh, const std::vector<Index>& welded) {
   // Duplicates: faces with the same welded corners as an earlier one (by id), in any order.
   std::vector<Index> order(mesh.faces.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](Index a, Index b) { return corners[a] < corners[b]; });
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+    return corners[a] != corners[b] ? corners[a] < corners[b] : a < b;
+  });
   std::vector<bool> duplicate(mesh.faces.size(), false);
   for (std::size_t k = 1; k < order.size(); ++k) {
     duplicate[order[k]] = usable[order[k]] && corners[order[k]] == corners[order[k - 1]];
