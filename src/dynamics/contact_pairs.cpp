@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "dynamics/contact_geometry.hpp"
 #include "dynamics/parallel_loops.hpp"
@@ -77,12 +78,28 @@ bool boxes_apart(const ContactCandidate& pair, const std::vector<Vec3>& x, doubl
   return gap.maxCoeff() >= distance;
 }
 
+// The pair's closest points' weights and separation when they are nearer than `distance`.
+struct Closest {
+  std::array<double, 4> weights;
+  Vec3 separation;
+};
+std::optional<Closest> closest_within(const ContactCandidate& pair, const std::vector<Vec3>& x,
+                                      double distance) {
+  if (boxes_apart(pair, x, distance)) {
+    return std::nullopt;
+  }
+  const std::array<double, 4> weights = closest_weights(pair, x);
+  const Vec3 separation = separation_of(pair.nodes, weights, x);
+  if (separation.squaredNorm() >= distance * distance) {
+    return std::nullopt;
+  }
+  return Closest{weights, separation};
+}
+
 // Appends the pair to the candidates when its closest points are within reach + 2 skin.
 void add_if_near(const ObjectContact& contact, double skin, const std::vector<Vec3>& x,
                  const ContactCandidate& pair, std::vector<ContactCandidate>& candidates) {
-  const double near = contact_reach(contact, pair.key) + 2.0 * skin;
-  if (!boxes_apart(pair, x, near) &&
-      separation_of(pair.nodes, closest_weights(pair, x), x).squaredNorm() < near * near) {
+  if (closest_within(pair, x, contact_reach(contact, pair.key) + 2.0 * skin)) {
     candidates.push_back(pair);
   }
 }
@@ -166,6 +183,13 @@ double search_cost(const ObjectContact& contact) {
   return kSearchCostInChecks * static_cast<double>(contact.bars.size() + contact.points.size());
 }
 
+// The candidate checks made since the last search: its candidates, every step since.
+double checks_since_search(const State& state) {
+  const ObjectContactWorkspace& work = state.object_contact;
+  const auto steps = std::max<std::int64_t>(state.step - work.search_step, 1);
+  return static_cast<double>(steps) * static_cast<double>(work.candidates.size());
+}
+
 // The skin for the next search (contact_pairs.hpp): narrower while checking the candidates since
 // the last search cost more than a search, wider while it cost under a quarter of one.
 double next_skin(const Model& model, const State& state) {
@@ -174,9 +198,7 @@ double next_skin(const Model& model, const State& state) {
   if (!work.candidates_found) {
     return contact.skin;
   }
-  const double steps =
-      static_cast<double>(std::max<std::int64_t>(state.step - work.search_step, 1));
-  const double checks = steps * static_cast<double>(work.candidates.size());
+  const double checks = checks_since_search(state);
   const double search = search_cost(contact);
   if (checks > search) {
     return std::max(0.7 * work.skin, kNarrowestSkin * contact.skin);
@@ -309,40 +331,33 @@ void find_touching_pairs(const Model& model, State& state) {
   // Search again once a node has moved by the skin, or once checking the candidates has cost
   // more than a search with a narrower skin would (contact_pairs.hpp).
   const bool costly = work.candidates_found && work.skin > kNarrowestSkin * contact.skin &&
-                      static_cast<double>(state.step - work.search_step) *
-                              static_cast<double>(work.candidates.size()) >
-                          search_cost(contact);
+                      checks_since_search(state) > search_cost(contact);
   if (!work.candidates_found || costly || moved_past_skin(model, state)) {
     find_candidates(model, state);
   }
   // Each candidate's closest points, in parallel; the touching ones in candidate order.
   const std::vector<Vec3>& x = state.x;
+  auto check = [&](Index k, std::vector<ContactPoint>& list) {
+    const ContactCandidate& pair = work.candidates[k];
+    const Index a = contact_side_a(pair.key);
+    const Index b = contact_side_b(pair.key);
+    if ((pair.key >> 63) == kBarBarContact ? bar_broken(state, a) || bar_broken(state, b)
+                                           : triangle_broken(contact, state, b)) {
+      return;  // torn since the search
+    }
+    if (const std::optional<Closest> closest =
+            closest_within(pair, x, contact_reach(contact, pair.key))) {
+      ContactPoint& point = list.emplace_back();
+      point.key = pair.key;
+      point.features = features_of(pair, closest->weights);
+      point.nodes = pair.nodes;
+      point.weights = closest->weights;
+      point.separation = closest->separation;
+    }
+  };
   work.touching.clear();
   gather_in_parallel(static_cast<Index>(work.candidates.size()), work.thread_touching,
-                     work.touching, [&](Index k, auto& list) {
-                       const ContactCandidate& pair = work.candidates[k];
-                       const bool bar_pair = (pair.key >> 63) == kBarBarContact;
-                       const Index a = contact_side_a(pair.key);
-                       const Index b = contact_side_b(pair.key);
-                       if (bar_pair ? bar_broken(state, a) || bar_broken(state, b)
-                                    : triangle_broken(contact, state, b)) {
-                         return;  // torn since the search
-                       }
-                       const double reach = contact_reach(contact, pair.key);
-                       if (boxes_apart(pair, x, reach)) {
-                         return;
-                       }
-                       const std::array<double, 4> weights = closest_weights(pair, x);
-                       const Vec3 separation = separation_of(pair.nodes, weights, x);
-                       if (separation.squaredNorm() < reach * reach) {
-                         ContactPoint& point = list.emplace_back();
-                         point.key = pair.key;
-                         point.features = features_of(pair, weights);
-                         point.nodes = pair.nodes;
-                         point.weights = weights;
-                         point.separation = separation;
-                       }
-                     });
+                     work.touching, check);
   // One contact per pair of features: the first pair (by key) that names them.
   std::sort(work.touching.begin(), work.touching.end(),
             [](const ContactPoint& a, const ContactPoint& b) {

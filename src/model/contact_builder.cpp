@@ -56,8 +56,9 @@ void add_object_contact(const SceneDescription& scene, Model& model) {
   // Faces fan into triangles from their first corner (a quad gives two). An object drawn as
   // wires (a net of cords, whose faces are the holes between them) has none unless it asks.
   auto faces_take_part = [&](Index object) {
-    const ObjectDesc& desc_of = scene.objects[object];
-    return takes_part(object) && desc_of.contact.faces.value_or(desc_of.style != DrawStyle::kWire);
+    const ObjectDesc& object_desc = scene.objects[object];
+    return takes_part(object) &&
+           object_desc.contact.faces.value_or(object_desc.style != DrawStyle::kWire);
   };
   for (Index f = 0; f < model.face_count(); ++f) {
     const Index first = model.face_offsets[f];

@@ -41,7 +41,6 @@ CleanedMesh clean_mesh(const RawMesh& mesh, const std::vector<Index>& welded) {
   std::vector<std::vector<Index>> loops(mesh.faces.size());
   std::vector<std::vector<Index>> corners(mesh.faces.size());
   std::vector<bool> usable(mesh.faces.size(), false);
-  Index collapsed_in_kept = 0;
   std::vector<Index> collapsed_of(mesh.faces.size(), 0);
   for (Index f = 0; f < face_count; ++f) {
     loops[f] = without_repeats(mesh.faces[f], true, welded, collapsed_of[f]);
@@ -70,12 +69,10 @@ CleanedMesh clean_mesh(const RawMesh& mesh, const std::vector<Index>& welded) {
       }
       continue;
     }
-    collapsed_in_kept += collapsed_of[f];
+    clean.collapsed_sides += collapsed_of[f];
     clean.kept_face[f] = static_cast<Index>(clean.faces.size());
     clean.faces.push_back(std::move(loops[f]));
-    clean.face_source.push_back(f);
   }
-  clean.collapsed_sides = collapsed_in_kept;
   clean.kept_line.assign(mesh.lines.size(), -1);
   for (std::size_t l = 0; l < mesh.lines.size(); ++l) {
     Index collapsed = 0;

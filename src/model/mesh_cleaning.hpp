@@ -14,8 +14,7 @@ namespace dinam {
 struct CleanedMesh {
   // The faces kept: vertex ids as in the mesh, consecutive corners on different welded vertices.
   std::vector<std::vector<Index>> faces;
-  std::vector<Index> face_source;  // (kept faces) the mesh's id of each
-  std::vector<Index> kept_face;    // (mesh faces) its index among the kept, or −1
+  std::vector<Index> kept_face;  // (mesh faces) its index among the kept, or −1
   // The lines kept, with the segments whose ends welded together taken out.
   std::vector<std::vector<Index>> lines;
   std::vector<Index> kept_line;  // (mesh lines) its index among the kept, or −1
