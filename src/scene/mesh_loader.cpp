@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -14,9 +15,12 @@
 #include <assimp/Importer.hpp>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string_view>
 #include <system_error>
 
@@ -85,6 +89,28 @@ void add_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& paren
   }
 }
 
+// The length of the file's unit in metres, where the file states it: FBX gives its unit in
+// centimetres ("UnitScaleFactor", 1 for a file in cm, 100 for one in m), and assimp leaves the
+// coordinates in that unit. glTF is in metres by definition and Collada's <unit> is applied by
+// assimp itself, so neither needs a factor here; formats without units give none.
+std::optional<double> metres_per_file_unit(const aiScene& scene) {
+  if (scene.mMetaData == nullptr) {
+    return std::nullopt;
+  }
+  double as_double = 0.0;
+  float as_float = 0.0f;
+  double centimetres = 0.0;
+  if (scene.mMetaData->Get("UnitScaleFactor", as_double)) {
+    centimetres = as_double;
+  } else if (scene.mMetaData->Get("UnitScaleFactor", as_float)) {
+    centimetres = as_float;
+  }
+  if (!(centimetres > 0.0) || !std::isfinite(centimetres)) {
+    return std::nullopt;
+  }
+  return 0.01 * centimetres;
+}
+
 // The mesh a file's scene holds; a diffuse texture named by the first material that has one, as
 // a PNG file in `folder` (none when `folder` is empty).
 RawMesh mesh_from_scene(const aiScene& scene, const std::filesystem::path& folder) {
@@ -103,6 +129,7 @@ RawMesh mesh_from_scene(const aiScene& scene, const std::filesystem::path& folde
   if (scene.mRootNode != nullptr) {
     add_node(scene, *scene.mRootNode, aiMatrix4x4(), {}, mesh);
   }
+  mesh.metres_per_unit = metres_per_file_unit(scene);
   return mesh;
 }
 
@@ -162,6 +189,8 @@ std::string serialize(const RawMesh& mesh) {
   }
   put_array(out, group_counts.data(), group_counts.size());
   put_array(out, names.data(), names.size());
+  const std::vector<double> unit(mesh.metres_per_unit ? 1 : 0, mesh.metres_per_unit.value_or(0.0));
+  put_array(out, unit.data(), unit.size());
   return out;
 }
 
@@ -198,11 +227,16 @@ bool deserialize(std::string_view in, RawMesh& mesh) {
   std::vector<char> texture;
   std::vector<Index> group_counts;
   std::vector<char> names;
+  std::vector<double> unit;
   if (!get_array(in, mesh.vertices) || !get_array(in, mesh.uvs) || !get_array(in, flat[0]) ||
       !get_array(in, flat[1]) || !get_array(in, texture) || !get_array(in, mesh.face_origin) ||
       !get_array(in, mesh.line_origin) || !get_array(in, group_counts) || !get_array(in, names) ||
-      !in.empty() || !get_origins(group_counts, names, mesh)) {
+      !get_array(in, unit) || !in.empty() || unit.size() > 1 ||
+      !get_origins(group_counts, names, mesh)) {
     return false;
+  }
+  if (!unit.empty()) {
+    mesh.metres_per_unit = unit.front();
   }
   auto* loops = &mesh.faces;
   for (const std::vector<Index>& ids : flat) {
@@ -244,6 +278,40 @@ double import_time_limit() {
   return seconds > 0.0 ? seconds : 60.0;
 }
 
+// A malformed header can make assimp reserve memory for 10⁹ vertices and then touch it page by
+// page (invalid/OutOfMemory.off of assimp's test files took a minute of system time): the child
+// may grow by 2 GiB plus 64 bytes per byte of the file (assimp's own structures for a sound file
+// take a few times its size), and never beyond the machine's memory, so such an allocation fails
+// at once and assimp reports it. Left out under the sanitizers, whose shadow memory needs
+// terabytes of address space.
+void limit_address_space(std::uintmax_t file_bytes) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  (void)file_bytes;
+#elif defined(__has_feature) && \
+    (__has_feature(address_sanitizer) || __has_feature(memory_sanitizer))
+  (void)file_bytes;
+#else
+  const long page = sysconf(_SC_PAGESIZE);
+  const long physical_pages = sysconf(_SC_PHYS_PAGES);
+  unsigned long mapped_pages = 0;
+  if (FILE* statm = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(statm, "%lu", &mapped_pages) != 1) {
+      mapped_pages = 0;
+    }
+    std::fclose(statm);
+  }
+  if (page <= 0 || physical_pages <= 0) {
+    return;
+  }
+  const double growth = std::min(2.0 * 1024 * 1024 * 1024 + 64.0 * static_cast<double>(file_bytes),
+                                 static_cast<double>(page) * static_cast<double>(physical_pages));
+  const auto bytes =
+      static_cast<rlim_t>(static_cast<double>(page) * static_cast<double>(mapped_pages) + growth);
+  const rlimit limit{bytes, bytes};
+  setrlimit(RLIMIT_AS, &limit);  // best effort: without it the time limit still holds
+#endif
+}
+
 // Imports `path` in a child process. The child sends 'M' and the mesh, or 'E' and assimp's error.
 RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where) {
   int ends[2] = {-1, -1};
@@ -261,6 +329,8 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
   }
   if (pid == 0) {
     close(ends[0]);
+    std::error_code size_error;
+    limit_address_space(std::filesystem::file_size(path, size_error));
     Assimp::Importer importer;
     // No post-processing at all: triangulating would add diagonals that are not edges of the
     // model, and model/ welds coincident vertices itself. Node transforms are applied here.
@@ -322,7 +392,12 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
   }
   RawMesh mesh;
   if (!reply.empty() && reply.front() == 'E') {
-    throw_user_error(where, "cannot read mesh file '{}': {}", path.string(), reply.substr(1));
+    const std::string error = reply.substr(1);
+    throw_user_error(where, "cannot read mesh file '{}': {}{}", path.string(), error,
+                     error.find("bad_alloc") != std::string::npos
+                         ? " (the file asks for far more memory than its size needs: its counts "
+                           "of vertices or faces are wrong; mend it or convert it to OBJ)"
+                         : "");
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || reply.empty() || reply.front() != 'M' ||
       !deserialize(std::string_view(reply).substr(1), mesh)) {
