@@ -187,8 +187,40 @@ PolylineSpec read_polyline(YamlMap map) {
   return polyline;
 }
 
-// Exactly one of `file`, `grid` or `polyline`, then the placement. Returns the mesh in world space.
-RawMesh read_mesh(YamlMap map, const std::filesystem::path& scene_folder) {
+// The length of one of the mesh's units in metres: `units` when given, else what the file states
+// (FBX), else 1 (the file is taken to be in metres).
+double read_units(YamlMap& map, const RawMesh& mesh) {
+  if (!map.has("units")) {
+    map.get("units");  // known, absent
+    return mesh.metres_per_unit.value_or(1.0);
+  }
+  static constexpr std::array<std::pair<const char*, double>, 5> kUnits = {
+      {{"mm", 1e-3}, {"cm", 1e-2}, {"m", 1.0}, {"in", 0.0254}, {"ft", 0.3048}}};
+  const std::string units = map.string("units", "");
+  for (const auto& [name, metres] : kUnits) {
+    if (units == name) {
+      return metres;
+    }
+  }
+  throw_user_error(map.loc("units"), "'{}' must be mm, cm, m, in or ft; got '{}'",
+                   map.path("units"), units);
+}
+
+// Reads `weld`: the fraction of the object's median bar length below which a bar is collapsed.
+void read_weld(YamlMap& map, ObjectDesc& object) {
+  object.weld_loc = map.has("weld") ? map.loc("weld") : map.loc();
+  if (map.has("weld") && map.string("weld", "") == "off") {
+    object.weld_fraction = 0.0;
+    return;
+  }
+  object.weld_fraction = map.number("weld", object.weld_fraction);
+  require_in_range(object.weld_fraction, 0.0, 0.5, map.loc("weld"), map.path("weld"),
+                   "(a fraction of the median bar length)");
+}
+
+// Exactly one of `file`, `grid` or `polyline`, then the units and placement. Fills the object's
+// mesh, in world space, and its `weld`.
+void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDesc& object) {
   const int sources = int{map.has("file")} + int{map.has("grid")} + int{map.has("polyline")};
   if (sources != 1) {
     throw_user_error(map.loc(),
@@ -196,7 +228,7 @@ RawMesh read_mesh(YamlMap map, const std::filesystem::path& scene_folder) {
                      "'polyline'",
                      map.name());
   }
-  RawMesh mesh;
+  RawMesh& mesh = object.mesh;
   if (map.has("file")) {
     const std::filesystem::path file = map.string("file", "");
     mesh = load_mesh_file(file.is_absolute() ? file : scene_folder / file, map.loc("file"));
@@ -206,12 +238,31 @@ RawMesh read_mesh(YamlMap map, const std::filesystem::path& scene_folder) {
     mesh = make_polyline(
         read_polyline(YamlMap(map.get("polyline"), map.file(), map.path("polyline"))));
   }
-  apply_transform(read_transform(map), mesh);
+  if (map.has("fit") && (map.has("scale") || map.has("units"))) {
+    throw_user_error(map.loc("fit"),
+                     "'{}' sets the size itself: give it, or 'scale' and 'units', not both",
+                     map.path("fit"));
+  }
+  Transform transform = read_transform(map);
+  transform.scale *= read_units(map, mesh);
+  if (map.has("fit")) {
+    YamlMap fit(map.get("fit"), map.file(), map.path("fit"));
+    const double size = fit.required_number("size");
+    require_in_range(size, 1e-6, 1e5, fit.loc("size"), fit.path("size"), "m");
+    fit.finish();
+    const Vec3 translation = transform.translation;
+    transform.translation.setZero();
+    apply_transform(transform, mesh);
+    fit_to_size(size, mesh);
+    apply_transform({Vec3::Ones(), Vec3::Zero(), translation}, mesh);
+  } else {
+    apply_transform(transform, mesh);
+  }
+  read_weld(map, object);
   map.finish();
   check_mesh_values(mesh, map.has("file") ? map.loc("file") : map.loc(),
                     map.has("file") ? fmt::format("mesh file '{}'", map.string("file", ""))
                                     : std::string("the generated mesh"));
-  return mesh;
 }
 
 BoxDesc read_box(YamlMap map) {
@@ -325,8 +376,7 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   object.loc = map.loc();
   object.name = map.string("name", fmt::format("object{}", index));
   object.mesh_loc = map.loc("mesh");
-  object.mesh =
-      read_mesh(YamlMap(map.required("mesh"), map.file(), map.path("mesh")), scene_folder);
+  read_mesh(YamlMap(map.required("mesh"), map.file(), map.path("mesh")), scene_folder, object);
   object.material =
       read_material(YamlMap(map.required("material"), map.file(), map.path("material")));
   if (map.has("pinned")) {

@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/error.hpp"
@@ -142,6 +144,35 @@ void apply_transform(const Transform& transform, RawMesh& mesh) {
   const Mat3 r = transform.rotation();
   for (Vec3& p : mesh.vertices) {
     p = r * p.cwiseProduct(transform.scale) + transform.translation;
+  }
+}
+
+void fit_to_size(double size, RawMesh& mesh) {
+  // The box of the vertices that some face or line uses: a file's stray points do not count.
+  std::vector<bool> used(mesh.vertices.size(), false);
+  for (const auto* loops : {&mesh.faces, &mesh.lines}) {
+    for (const auto& loop : *loops) {
+      for (const Index v : loop) {
+        used[static_cast<std::size_t>(v)] = true;
+      }
+    }
+  }
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (used[v]) {
+      lo = lo.cwiseMin(mesh.vertices[v]);
+      hi = hi.cwiseMax(mesh.vertices[v]);
+    }
+  }
+  const double extent = (hi - lo).maxCoeff();
+  if (!(extent > 0.0) || !std::isfinite(extent)) {
+    return;  // no edge, or a single point: the mesh checks say so
+  }
+  const double factor = size / extent;
+  const Vec3 bottom_centre{0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()), lo.z()};
+  for (Vec3& p : mesh.vertices) {
+    p = (p - bottom_centre) * factor;
   }
 }
 

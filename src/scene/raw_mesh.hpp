@@ -3,6 +3,7 @@
 // closed polygon faces and open polylines. Vertices are not yet welded, so a triangle soup may
 // hold the same point many times; model/ welds them and extracts the unique edges.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ struct RawMesh {
   std::vector<MeshElementOrigin> origins;
   std::vector<Index> face_origin;  // (n_faces) into origins, or empty
   std::vector<Index> line_origin;  // (n_lines) into origins, or empty
+  // The length of the file's unit in metres where the file states it (FBX); empty otherwise.
+  std::optional<double> metres_per_unit;
 
   bool has_edges() const;
 };
@@ -61,6 +64,11 @@ struct Transform {
 };
 
 void apply_transform(const Transform& transform, RawMesh& mesh);
+
+// Scales the mesh so that the largest side of its bounding box is `size` (m) and moves it so that
+// the box's bottom centre (lowest along world z) is at the origin: a downloaded model, whatever
+// its units and origin, then stands on the ground at the origin, `size` across.
+void fit_to_size(double size, RawMesh& mesh);
 
 // Throws UserError at `where` unless every face and line refers to vertices the mesh has, every
 // vertex is finite and within 10⁶ m of the origin, and there are at most 50 million: a NaN in a

@@ -122,11 +122,22 @@ struct ObjectContactDesc {
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
 enum class DrawStyle { kSurface, kWire, kBoth };
 
+// The default `mesh: {weld}`: bars shorter than a tenth of the object's median bar are collapsed.
+// Such a bar, a sliver left by a modelling tool, would alone set a time step hundreds of times
+// shorter than the rest of the mesh needs: the bending and torsion springs at its ends vibrate as
+// (L_median / L)³ faster, over node masses that the long bars set. Collapsing it moves a corner by
+// at most a tenth of a typical bar, below what the motion shows.
+inline constexpr double kDefaultWeldFraction = 0.1;
+
 struct ObjectDesc {
   std::string name;
   FileLoc loc;
   RawMesh mesh;  // in world space
   FileLoc mesh_loc;
+  // Bars shorter than this fraction of the object's median bar length are collapsed before the
+  // model is built (`mesh: {weld}`); 0 keeps every bar.
+  double weld_fraction = kDefaultWeldFraction;
+  FileLoc weld_loc;
   MaterialDesc material;
   std::vector<MaterialPartDesc> parts;  // bars of other materials
   ObjectContactDesc contact;
@@ -245,6 +256,23 @@ struct MotionSetting {
   bool operator==(const MotionSetting&) const = default;
 };
 
+// What `timestep` as a map asks of the automatic step. By default (and with `timestep: auto`) the
+// few nodes that would set a much shorter step than the rest get a little mass (mass scaling, at
+// most kDefaultMaxAddedMass of the total). A `target` step, or `max_steps` over the duration,
+// is reached by mass scaling within `max_added_mass`, collapsing ever longer short bars where
+// that is not enough; a target no such means can reach is an error.
+inline constexpr double kDefaultMaxAddedMass = 0.02;
+
+struct StepTargetDesc {
+  std::optional<double> target;                  // s
+  std::optional<double> max_steps;               // over the duration
+  double max_added_mass = kDefaultMaxAddedMass;  // a fraction of the total mass
+  bool mass_scaling = true;                      // false: the default adds no mass
+  FileLoc loc;
+
+  bool aims() const { return target.has_value() || max_steps.has_value(); }
+};
+
 struct SceneDescription {
   std::filesystem::path source;                // the scene file
   std::string source_sha256;                   // of the scene file's bytes, as sha256sum prints it
@@ -255,6 +283,7 @@ struct SceneDescription {
   double duration = 0.0;           // s
   double fps = 0.0;                // frames per second
   std::optional<double> timestep;  // s; empty for `auto`
+  StepTargetDesc step_target;      // what an automatic step aims at
   FileLoc timestep_loc;
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
   double global_damping = 0.0;    // 1/s, viscous friction −α m v on every node

@@ -231,6 +231,67 @@ FieldForceDesc read_field(YamlMap map, const std::vector<ObjectDesc>& objects) {
   return field;
 }
 
+// `timestep`: `auto`, a step in seconds, or a map that aims the automatic step (`target` or
+// `max_steps`, with mass scaling and edge collapse) or turns the default mass scaling off.
+void read_timestep(YamlMap& map, SceneDescription& scene) {
+  const YAML::Node timestep = map.get("timestep");
+  scene.timestep_loc = map.loc("timestep");
+  if (!timestep || (timestep.IsScalar() && timestep.Scalar() == "auto")) {
+    return;
+  }
+  if (timestep.IsMap()) {
+    YamlMap aim(timestep, map.file(), "timestep");
+    StepTargetDesc& target = scene.step_target;
+    target.loc = aim.loc();
+    if (aim.has("target") && aim.has("max_steps")) {
+      throw_user_error(aim.loc("max_steps"),
+                       "'timestep' takes 'target' (a step, s) or 'max_steps', not both");
+    }
+    if (aim.has("target")) {
+      target.target = aim.number("target", 0.0);
+      require_positive(*target.target, aim.loc("target"), "timestep.target", "s");
+      if (*target.target > 1.0 / scene.fps) {
+        throw_user_error(aim.loc("target"),
+                         "'timestep.target' {} s is longer than one frame ({} s at {} fps)",
+                         *target.target, 1.0 / scene.fps, scene.fps);
+      }
+      target.loc = aim.loc("target");
+    }
+    if (aim.has("max_steps")) {
+      target.max_steps = aim.number("max_steps", 0.0);
+      require_in_range(*target.max_steps, 1.0, 1e12, aim.loc("max_steps"), "timestep.max_steps",
+                       "steps");
+      target.loc = aim.loc("max_steps");
+    }
+    target.max_added_mass = aim.number("max_added_mass", target.max_added_mass);
+    require_in_range(target.max_added_mass, 0.0, 10.0, aim.loc("max_added_mass"),
+                     "timestep.max_added_mass", "(a fraction of the mass)");
+    target.mass_scaling = aim.boolean("mass_scaling", target.mass_scaling);
+    if (!target.mass_scaling && (target.target || target.max_steps)) {
+      throw_user_error(aim.loc("mass_scaling"),
+                       "'timestep.mass_scaling: false' leaves nothing to reach a 'target' or "
+                       "'max_steps' with; drop one of them");
+    }
+    aim.finish();
+    return;
+  }
+  double dt = 0.0;
+  if (!timestep.IsScalar() || !YAML::convert<double>::decode(timestep, dt)) {
+    throw_user_error(scene.timestep_loc,
+                     "'timestep' must be 'auto', a time in seconds, or a map such as "
+                     "{{target: 1e-4}} or {{max_steps: 1e6}}; got '{}'",
+                     timestep.IsScalar() ? timestep.Scalar() : "a non-scalar");
+  }
+  require_positive(dt, scene.timestep_loc, "timestep", "s");
+  if (dt > 1.0 / scene.fps) {
+    throw_user_error(scene.timestep_loc,
+                     "'timestep' {} s is longer than one frame ({} s at {} fps); use a smaller "
+                     "step or 'auto'",
+                     dt, 1.0 / scene.fps, scene.fps);
+  }
+  scene.timestep = dt;
+}
+
 SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& source) {
   const std::string file = source.string();
   YamlMap map(root, file, "");
@@ -264,24 +325,7 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
                      scene.duration, scene.fps);
   }
 
-  const YAML::Node timestep = map.get("timestep");
-  scene.timestep_loc = map.loc("timestep");
-  if (timestep && !(timestep.IsScalar() && timestep.Scalar() == "auto")) {
-    double dt = 0.0;
-    if (!timestep.IsScalar() || !YAML::convert<double>::decode(timestep, dt)) {
-      throw_user_error(scene.timestep_loc,
-                       "'timestep' must be 'auto' or a time in seconds, got '{}'",
-                       timestep.IsScalar() ? timestep.Scalar() : "a non-scalar");
-    }
-    require_positive(dt, scene.timestep_loc, "timestep", "s");
-    if (dt > 1.0 / scene.fps) {
-      throw_user_error(scene.timestep_loc,
-                       "'timestep' {} s is longer than one frame ({} s at {} fps); use a smaller "
-                       "step or 'auto'",
-                       dt, 1.0 / scene.fps, scene.fps);
-    }
-    scene.timestep = dt;
-  }
+  read_timestep(map, scene);
   scene.gravity = map.vec3("gravity", scene.gravity);
   if (map.has("damping")) {
     YamlMap damping(map.get("damping"), file, "damping");

@@ -53,7 +53,8 @@ objects:
 // A cantilever along +x from the origin in `segments` bars. The clamp is two pinned nodes: the
 // root and one a thousandth of a segment behind it, so the root's bending spring spans half a
 // segment of beam as a clamped end should (k = 2EI / (ε + h) → 2EI / h).
-// Node ids: 0 behind, 1 root, segments + 1 tip. `extra` is appended to the material.
+// Node ids: 0 behind, 1 root, segments + 1 tip. `extra` is appended to the material. The short
+// bar behind the root is meant: `weld: off` keeps it from being collapsed.
 std::string cantilever_yaml(int segments, const std::string& extra, const std::string& scene) {
   const double h = kLength / segments;
   std::string points = fmt::format("[[{}, 0, 0]", -1e-3 * h);
@@ -61,8 +62,8 @@ std::string cantilever_yaml(int segments, const std::string& extra, const std::s
     points += fmt::format(", [{}, 0, 0]", k * h);
   }
   points += "]";
-  return beam_scene_yaml(fmt::format("{{polyline: {{points: {}}}}}", points), "{indices: [0, 1]}",
-                         extra, "", scene);
+  return beam_scene_yaml(fmt::format("{{polyline: {{points: {}}}, weld: off}}", points),
+                         "{indices: [0, 1]}", extra, "", scene);
 }
 
 // Runs the model for `duration` at its automatic step, calling `watch(state)` after each step.
