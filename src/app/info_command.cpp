@@ -3,11 +3,15 @@
 #include <fmt/ranges.h>
 
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "app/memory_estimate.hpp"
+#include "app/run_estimate.hpp"
+#include "app/step_limits.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
@@ -28,16 +32,25 @@ MemoryFigures memory_figures(const SceneDescription& scene, const Model& model) 
           estimate_memory(scene, model, {2, false, 0, 0}), available_memory()};
 }
 
-long long steps_in_all(const SceneDescription& scene, const Model& model,
-                       const TimeStep& timestep) {
-  const long long settling =
-      model.settle.enabled ? std::llround(model.settle.duration / timestep.dt) : 0;
-  return static_cast<long long>(scene.frame_count()) * timestep.steps_per_frame + settling;
+// The box of the nodes at rest, m.
+std::pair<Vec3, Vec3> bounding_box(const Model& model) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (const Vec3& x : model.node_initial_x) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  return {lo, hi};
+}
+
+nlohmann::ordered_json json_vec3(const Vec3& v) {
+  return {v.x(), v.y(), v.z()};
 }
 
 void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
-                Index pinned) {
+                Index pinned, const RunEstimate& run) {
   const MemoryFigures memory = memory_figures(scene, model);
+  const StepLimits limits = find_step_limits(model);
   nlohmann::ordered_json objects = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < model.objects.size(); ++k) {
     const ModelObject& object = model.objects[k];
@@ -58,6 +71,13 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"bending_springs", model.bend_count()},
       {"torsion_springs", model.torsion_count()},
       {"total_mass_kg", model.total_mass()},
+      {"bounding_box_m",
+       {json_vec3(bounding_box(model).first), json_vec3(bounding_box(model).second)}},
+      {"added_mass_kg", model.mass_scaling.added_mass},
+      {"added_mass_fraction", model.mass_scaling.added_fraction()},
+      {"mass_scaled_nodes", model.mass_scaling.nodes},
+      {"shortest_bar_m", limits.shortest.empty() ? 0.0 : limits.shortest.front().length},
+      {"median_bar_m", limits.median_length},
       {"stability_limit_s", timestep.critical},
       {"timestep_s", timestep.dt},
       {"steps_per_frame", timestep.steps_per_frame},
@@ -66,7 +86,9 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"duration_s", scene.duration},
       {"settle_s", model.settle.enabled ? model.settle.duration : 0.0},
       {"settle_residual", model.settle.enabled ? model.settle.residual : 0.0},
-      {"steps", steps_in_all(scene, model, timestep)},
+      {"steps", run.steps},
+      {"seconds_per_step", run.seconds_per_step},
+      {"estimated_run_s", run.seconds},
       {"memory_render_bytes", memory.render.peak()},
       {"memory_simulate_bytes", memory.simulate.peak()},
       {"memory_available_bytes", memory.available.bytes},
@@ -76,8 +98,36 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
   fmt::print("{}\n", json.dump(1));
 }
 
+// The shortest bars, what sets the step and any mass added to lengthen it.
+void print_step_limits(const Model& model) {
+  const StepLimits limits = find_step_limits(model);
+  std::vector<std::string> shortest;
+  for (const BarLength& bar : limits.shortest) {
+    shortest.push_back(fmt::format("{:.3g}", bar.length));
+  }
+  fmt::print("shortest bars    {} m (median {:.3g} m)\n", fmt::join(shortest, ", "),
+             limits.median_length);
+  if (limits.fastest_node >= 0) {
+    fmt::print("step set by      {}: {}\n", describe_node(model, limits.fastest_node),
+               limits.contact_dominates
+                   ? std::string("its contact penalty")
+                   : fmt::format("its springs, shortest bar {:.3g} m", limits.shortest_at_fastest));
+  }
+  const MassScaling& scaling = model.mass_scaling;
+  if (scaling.nodes > 0) {
+    fmt::print(
+        "mass scaling     +{:.3g} kg ({:.2f} % of {:.6g} kg) on {} nodes: the springs' stable "
+        "step {:.2f}× longer{}\n",
+        scaling.added_mass, 100.0 * scaling.added_fraction(), scaling.mass_before, scaling.nodes,
+        scaling.step_gain,
+        scaling.target_step > 0.0
+            ? fmt::format(", aiming at {:.3g} s", scaling.target_step)
+            : (scaling.capped ? std::string(", stopped at the added-mass limit") : std::string()));
+  }
+}
+
 void print_text(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
-                Index pinned) {
+                Index pinned, const RunEstimate& run) {
   const int frames = scene.frame_count();
   fmt::print("scene            {} ('{}')\n", scene.source.string(), scene.name);
   fmt::print("objects          {}\n", model.objects.size());
@@ -100,7 +150,14 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
              model.bend_count(), model.torsion_count());
   fmt::print("no torsion       {} bars (torsion off, or no usable reference neighbour)\n",
              model.bars_without_torsion);
+  const auto [lo, hi] = bounding_box(model);
+  fmt::print(
+      "bounding box     {:.4g} × {:.4g} × {:.4g} m, from ({:.4g}, {:.4g}, {:.4g}) to "
+      "({:.4g}, {:.4g}, {:.4g}) m\n",
+      hi.x() - lo.x(), hi.y() - lo.y(), hi.z() - lo.z(), lo.x(), lo.y(), lo.z(), hi.x(), hi.y(),
+      hi.z());
   fmt::print("total mass       {:.6g} kg\n", model.total_mass());
+  print_step_limits(model);
   fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
              timestep.critical);
   fmt::print("time step        {:.6g} s ({})\n", timestep.dt,
@@ -120,8 +177,16 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
         model.settle.residual, model.settle.duration,
         std::llround(model.settle.duration / timestep.dt));
   }
-  fmt::print("steps in all     {}{}\n", steps_in_all(scene, model, timestep),
+  fmt::print("steps in all     {}{}\n", run.steps,
              model.settle.enabled ? " at most (settling stops once it has converged)" : "");
+  fmt::print(
+      "run time         about {} to simulate on this machine ({:.3g} ms a step, from {} "
+      "steps measured; drawing comes on top){}\n",
+      duration_text(run.seconds), 1e3 * run.seconds_per_step, run.probe_steps,
+      run.long_run() ? fmt::format("; over {}, so render and simulate refuse it without "
+                                   "--force",
+                                   duration_text(kLongRunSeconds))
+                     : "");
   const MemoryFigures memory = memory_figures(scene, model);
   fmt::print("memory, render   about {} at {}×{}\n", memory.render.summary(), scene.image_width,
              scene.image_height);
@@ -138,14 +203,15 @@ int run_info(const std::filesystem::path& scene_path, bool json) {
   const SceneDescription scene = read_scene(scene_path);
   const Model model = build_model_telling_warnings(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  const RunEstimate run = estimate_run_time(scene, model, timestep);
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     pinned += model.pinned(i) ? 1 : 0;
   }
   if (json) {
-    print_json(scene, model, timestep, pinned);
+    print_json(scene, model, timestep, pinned, run);
   } else {
-    print_text(scene, model, timestep, pinned);
+    print_text(scene, model, timestep, pinned, run);
   }
   return kExitOk;
 }

@@ -11,34 +11,6 @@
 
 namespace dinam {
 
-double max_damping_rate_bound(const Model& model) {
-  const Index n = model.node_count();
-  std::vector<double> rate(n, model.global_damping);  // α m / m
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    const double c = model.bar_damping[b];
-    if (c == 0.0) {
-      continue;
-    }
-    const Index n0 = model.bar_nodes[2 * b];
-    const Index n1 = model.bar_nodes[2 * b + 1];
-    const double coupling = c * std::sqrt(model.node_inv_mass[n0] * model.node_inv_mass[n1]);
-    rate[n0] += c * model.node_inv_mass[n0] + coupling;
-    rate[n1] += c * model.node_inv_mass[n1] + coupling;
-  }
-  if (model.ground.enabled) {
-    for (Index i = 0; i < n; ++i) {
-      rate[i] += model.ground.node_damping[i] * model.node_inv_mass[i];
-    }
-  }
-  double bound = 0.0;
-  for (Index i = 0; i < n; ++i) {
-    if (!model.pinned(i)) {
-      bound = std::max(bound, rate[i]);
-    }
-  }
-  return bound;
-}
-
 double critical_timestep(const Model& model) {
   const double omega_squared = max_frequency_squared_bound(model);
   const double gamma = max_damping_rate_bound(model);

@@ -11,10 +11,6 @@ namespace dinam {
 
 struct Model;
 
-// An upper bound of the damping rates, 1/s: λ_max(M⁻¹C) by the same Gershgorin argument as the
-// frequency bound, over the global friction α, the axial dampers and the ground's normal damping.
-double max_damping_rate_bound(const Model& model);
-
 // The stability limit, s: with ω from the frequency bound and ζ = γ / (2ω) from the damping
 // bound, the central-difference limit with damping evaluated at the half step,
 //   Δt ≤ (2/ω) (√(1 + ζ²) − ζ)   (Belytschko, Liu and Moran, 2000, §6.4),
@@ -27,10 +23,6 @@ struct TimeStep {
   double critical = 0.0;    // s, the stability limit
   bool automatic = false;
 };
-
-// The fraction of the critical step that `timestep: auto` uses, leaving room for the stiffening
-// that large rotations and tension add beyond the rest-state bound.
-inline constexpr double kAutoTimestepSafety = 0.8;
 
 // Chooses the step: `auto` (empty `requested`) takes kAutoTimestepSafety × critical; an explicit
 // step above the critical one is refused with both numbers, naming `where`. Either way the step

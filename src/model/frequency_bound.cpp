@@ -34,7 +34,7 @@ struct GershgorinSums {
 
 }  // namespace
 
-double max_frequency_squared_bound(const Model& model, bool include_contact) {
+NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact) {
   const Index n = model.node_count();
   GershgorinSums sums(n);
   const auto& x = model.node_initial_x;
@@ -104,15 +104,54 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
     }
   }
 
-  double bound = 0.0;
+  NodeFrequencyRows rows;
+  rows.own.assign(n, 0.0);
+  rows.coupling.assign(n, 0.0);
   for (Index i = 0; i < n; ++i) {
     if (model.pinned(i)) {
       continue;
     }
     Eigen::SelfAdjointEigenSolver<Mat3> solver;
     solver.computeDirect(sums.diagonal[i], Eigen::EigenvaluesOnly);
-    bound = std::max(bound,
-                     solver.eigenvalues().maxCoeff() * model.node_inv_mass[i] + sums.coupling[i]);
+    rows.own[i] = solver.eigenvalues().maxCoeff() * model.node_inv_mass[i];
+    rows.coupling[i] = sums.coupling[i];
+  }
+  return rows;
+}
+
+double max_frequency_squared_bound(const Model& model, bool include_contact) {
+  const NodeFrequencyRows rows = node_frequency_rows(model, include_contact);
+  double bound = 0.0;
+  for (std::size_t i = 0; i < rows.own.size(); ++i) {
+    bound = std::max(bound, rows.own[i] + rows.coupling[i]);
+  }
+  return bound;
+}
+
+double max_damping_rate_bound(const Model& model) {
+  const Index n = model.node_count();
+  std::vector<double> rate(n, model.global_damping);  // α m / m
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const double c = model.bar_damping[b];
+    if (c == 0.0) {
+      continue;
+    }
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    const double coupling = c * std::sqrt(model.node_inv_mass[n0] * model.node_inv_mass[n1]);
+    rate[n0] += c * model.node_inv_mass[n0] + coupling;
+    rate[n1] += c * model.node_inv_mass[n1] + coupling;
+  }
+  if (model.ground.enabled) {
+    for (Index i = 0; i < n; ++i) {
+      rate[i] += model.ground.node_damping[i] * model.node_inv_mass[i];
+    }
+  }
+  double bound = 0.0;
+  for (Index i = 0; i < n; ++i) {
+    if (!model.pinned(i)) {
+      bound = std::max(bound, rate[i]);
+    }
   }
   return bound;
 }

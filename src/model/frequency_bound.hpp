@@ -1,5 +1,8 @@
 #pragma once
-// An upper bound of the model's highest natural frequency at rest, without any eigen-solve.
+// Upper bounds of the model's highest natural frequency and damping rate at rest, without any
+// eigen-solve: they set the stable time step.
+#include <vector>
+
 namespace dinam {
 
 struct Model;
@@ -16,5 +19,24 @@ struct Model;
 // It is exact for one mass on a spring and for the top mode of a uniform chain. Stiffening by
 // tension and large rotations is not included: the automatic step keeps a margin for it.
 double max_frequency_squared_bound(const Model& model, bool include_contact = true);
+
+// The bound's row of every node, 1/s²: `own` = λ_max(Σ k g_i g_iᵀ) / m_i and `coupling` = the
+// sum over the other free nodes; both 0 for a pinned node. The bound is the largest own +
+// coupling; a node's row says how fast the springs at that node alone let it vibrate, so the
+// rows show which nodes limit the step (`dinam info`) and how much mass would free it
+// (mass scaling).
+struct NodeFrequencyRows {
+  std::vector<double> own;       // (n_nodes)
+  std::vector<double> coupling;  // (n_nodes)
+};
+NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact = true);
+
+// An upper bound of the damping rates, 1/s: λ_max(M⁻¹C) by the same Gershgorin argument as the
+// frequency bound, over the global friction α, the axial dampers and the ground's normal damping.
+double max_damping_rate_bound(const Model& model);
+
+// The fraction of the critical step that `timestep: auto` uses, leaving room for the stiffening
+// that large rotations and tension add beyond the rest-state bound.
+inline constexpr double kAutoTimestepSafety = 0.8;
 
 }  // namespace dinam

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/mass_scaling.hpp"
 #include "model/spring_colouring.hpp"
 #include "scene/scene_description.hpp"
 
@@ -114,6 +115,9 @@ struct Model {
   // What building it found worth telling the user, who may want to fix the input (a mesh's
   // degenerate faces, dropped): one line each, "file:line:column: warning: …" as errors read.
   std::vector<std::string> warnings;
+  // The mass added so that a few short stiff bars do not set the step (`timestep`); nothing when
+  // added_mass is 0. node_mass includes it.
+  MassScaling mass_scaling;
 
   // Nodes: point masses without rotational inertia.
   std::vector<Vec3> node_initial_x;      // (n_nodes) m

@@ -1,9 +1,13 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include "model/contact_builder.hpp"
 #include "model/derived_checks.hpp"
+#include "model/edge_collapse.hpp"
 #include "model/frequency_bound.hpp"
+#include "model/mass_scaling.hpp"
 #include "model/mesh_cleaning.hpp"
 #include "model/model.hpp"
 #include "model/spring_builders.hpp"
@@ -14,6 +18,10 @@ namespace dinam {
 namespace {
 
 using Edge = std::pair<Index, Index>;  // welded ids, first < second
+
+// The least `weld` fractions a `timestep: {target}` tries in turn, from each object's own, while
+// mass scaling alone would add more than its limit.
+constexpr std::array<double, 5> kWeldFloors = {0.0, 0.05, 0.1, 0.2, 0.3};
 
 // Collects the unique edges of an object's cleaned faces and lines in welded ids. A face
 // contributes its closed loop, a line its open chain; an edge shared by two faces appears once.
@@ -130,19 +138,41 @@ std::vector<int> edge_parts(const ObjectDesc& object, const CleanedMesh& clean,
   return part_of_edge;
 }
 
-ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) {
-  const WeldResult weld = weld_vertices(object.mesh.vertices, weld_tolerance(object.mesh.vertices));
-  const CleanedMesh clean = clean_mesh(object.mesh, weld.node_of_vertex);
-  const std::vector<Edge> edges = unique_edges(clean, weld);
+std::string where_in_file(const ObjectDesc& object) {
+  return object.mesh_loc.known() ? object.mesh_loc.to_string() : "dinam";
+}
+
+// How this build treats short bars: the least `weld` of every object, and the step that mass
+// scaling aims at (none: the default's choice).
+struct ShortBarPlan {
+  double weld_floor = 0.0;
+  std::optional<double> target_step;  // s
+};
+
+ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fraction,
+                       Model& model) {
+  WeldResult weld = weld_vertices(object.mesh.vertices, weld_tolerance(object.mesh.vertices));
+  CleanedMesh clean = clean_mesh(object.mesh, weld.node_of_vertex);
+  std::vector<Edge> edges = unique_edges(clean, weld);
+  const EdgeCollapse collapse = collapse_short_edges(weld, edges, weld_fraction);
+  if (collapse.merged_nodes > 0) {
+    const std::size_t bars_before = edges.size();
+    weld = collapse.weld;
+    clean = clean_mesh(object.mesh, weld.node_of_vertex);
+    edges = unique_edges(clean, weld);
+    model.warnings.push_back(fmt::format(
+        "{}: note: object '{}': collapsed {} bars shorter than {:g} of the median bar ({:.3g} m, "
+        "`weld`), merging {} nodes into their neighbours",
+        where_in_file(object), object.name, bars_before - edges.size(), weld_fraction,
+        collapse.tolerance, collapse.merged_nodes));
+  }
   if (edges.empty()) {
     throw_user_error(object.mesh_loc, "object '{}': the mesh has no edges, so no bars{}",
                      object.name, clean.changed() ? " (" + clean.summary() + ")" : "");
   }
   if (clean.changed()) {
-    model.warnings.push_back(
-        fmt::format("{}: warning: object '{}': {}",
-                    object.mesh_loc.known() ? object.mesh_loc.to_string() : "dinam", object.name,
-                    clean.summary()));
+    model.warnings.push_back(fmt::format("{}: warning: object '{}': {}", where_in_file(object),
+                                         object.name, clean.summary()));
   }
 
   // Only welded vertices that end a bar become nodes; ids stay in first-occurrence order.
@@ -222,7 +252,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, Model& model) 
   return nodes;
 }
 
-// Pins, initial velocities and axial dampers: everything that needs the node masses.
+// Pins and initial velocities.
 void add_object_conditions(const ObjectNodes& object, Model& model) {
   const ObjectDesc& desc = *object.desc;
   const ModelObject& info = model.objects[object.object_id];
@@ -245,7 +275,13 @@ void add_object_conditions(const ObjectNodes& object, Model& model) {
   if (desc.pin_motion.moving()) {
     model.pin_motions.push_back({pinned, desc.pin_motion.displacement, desc.pin_motion.profile});
   }
-  // c = 2ζ √(k μ), μ the reduced mass of the two ends: ζ of the bar's own axial vibration.
+}
+
+// The axial dampers, from the node masses (after any mass scaling): c = 2ζ √(k μ), μ the reduced
+// mass of the two ends, gives ζ of the bar's own axial vibration.
+void add_axial_damping(const ObjectNodes& object, Model& model) {
+  const ObjectDesc& desc = *object.desc;
+  const ModelObject& info = model.objects[object.object_id];
   for (Index b = info.first_bar; b < info.first_bar + info.bar_count; ++b) {
     const double m0 = model.node_mass[model.bar_nodes[2 * b]];
     const double m1 = model.node_mass[model.bar_nodes[2 * b + 1]];
@@ -376,17 +412,47 @@ void release_spare_capacity(Model& model) {
   shrink(model.face_offsets, model.face_nodes, model.wind.faces, model.wind.bars);
 }
 
-}  // namespace
-
-double Model::total_mass() const {
-  double mass = 0.0;
-  for (const double m : node_mass) {
-    mass += m;
-  }
-  return mass;
+// The springs alone may vibrate at most this ω² for the finished model's limit, with the ground's
+// and the contacts' penalties (each ¼ of the springs' bound, contact on two sides) and every
+// damper, to allow `step` / kAutoTimestepSafety: ω²Δt²/4 + γΔt/2 ≤ 1 is the damped
+// central-difference limit, the ground's damping rate at most 2ζ_g ω_g ≤ ζ_g ω.
+double springs_frequency_for_step(const SceneDescription& scene, const Model& model, double step) {
+  const double limit = step / kAutoTimestepSafety;
+  const double allowance = 1.0 + (scene.ground.contact ? 0.25 : 0.0) +
+                           (scene.contact.objects || scene.contact.self ? 0.5 : 0.0);
+  const double ground_zeta = scene.ground.contact ? scene.ground.damping_ratio : 0.0;
+  const double gamma = max_damping_rate_bound(model);
+  // allowance ω² + (2ζ_g/Δt) ω − (4/Δt²)(1 − γΔt/2) ≤ 0, at its positive root.
+  const double a = allowance;
+  const double b = 2.0 * ground_zeta / limit;
+  const double c = -4.0 / (limit * limit) * std::max(0.0, 1.0 - 0.5 * gamma * limit);
+  const double omega = (-b + std::sqrt(b * b - 4.0 * a * c)) / (2.0 * a);
+  return omega * omega;
 }
 
-Model build_model(const SceneDescription& scene) {
+// Adds mass where the plan (or the default) asks, before the contact penalties are sized from the
+// springs' frequency.
+void scale_masses(const SceneDescription& scene, const ShortBarPlan& plan, Model& model) {
+  // A step given as a number is the user's choice: nothing to lengthen it for.
+  if (!scene.step_target.mass_scaling || (scene.timestep && !plan.target_step)) {
+    return;
+  }
+  const NodeFrequencyRows rows = node_frequency_rows(model, false);
+  if (plan.target_step) {
+    model.mass_scaling =
+        scale_masses_to(model, rows, springs_frequency_for_step(scene, model, *plan.target_step));
+    model.mass_scaling.target_step = *plan.target_step;
+    return;
+  }
+  const std::optional<DefaultScaling> chosen =
+      default_scaling_frequency(model, rows, scene.step_target.max_added_mass);
+  if (chosen) {
+    model.mass_scaling = scale_masses_to(model, rows, chosen->omega_squared);
+    model.mass_scaling.capped = chosen->capped;
+  }
+}
+
+Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) {
   Model model;
   model.gravity = scene.gravity;
   model.global_damping = scene.global_damping;
@@ -395,7 +461,9 @@ Model build_model(const SceneDescription& scene) {
   model.face_offsets.push_back(0);
   std::vector<ObjectNodes> objects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    objects.push_back(add_object(scene.objects[i], static_cast<Index>(i), model));
+    const ObjectDesc& object = scene.objects[i];
+    objects.push_back(add_object(object, static_cast<Index>(i),
+                                 std::max(object.weld_fraction, plan.weld_floor), model));
   }
   mark_bars_on_faces(model);  // before the bending springs, which pair bars by it
   for (const ObjectNodes& object : objects) {
@@ -413,6 +481,10 @@ Model build_model(const SceneDescription& scene) {
       model.bars_without_torsion += info.bar_count;
     }
   }
+  scale_masses(scene, plan, model);
+  for (const ObjectNodes& object : objects) {
+    add_axial_damping(object, model);
+  }
   std::vector<BarMaterials> bar_materials;
   bar_materials.reserve(objects.size());
   for (const ObjectNodes& object : objects) {
@@ -427,6 +499,62 @@ Model build_model(const SceneDescription& scene) {
   release_spare_capacity(model);
   check_derived_quantities(model, scene);
   return model;
+}
+
+// The step `timestep: {target}` or `{max_steps}` asks for: with max_steps, the longest step that
+// fills every frame with whole steps and takes at most that many over the frames.
+double aimed_step(const SceneDescription& scene) {
+  const StepTargetDesc& aim = scene.step_target;
+  if (aim.target) {
+    return *aim.target;
+  }
+  const double frames = scene.frame_count();
+  const double per_frame = std::floor(*aim.max_steps / frames);
+  if (per_frame < 1.0) {
+    throw_user_error(aim.loc,
+                     "'timestep.max_steps' {:g} is fewer than the {:g} frames, and every frame "
+                     "needs at least one step; allow at least {:g}",
+                     *aim.max_steps, frames, frames);
+  }
+  return 1.0 / (scene.fps * per_frame);
+}
+
+}  // namespace
+
+double Model::total_mass() const {
+  double mass = 0.0;
+  for (const double m : node_mass) {
+    mass += m;
+  }
+  return mass;
+}
+
+Model build_model(const SceneDescription& scene) {
+  const StepTargetDesc& aim = scene.step_target;
+  if (!aim.aims()) {
+    return build_model_once(scene, {});
+  }
+  // Mass scaling first; where it would add too much, the shortest bars are collapsed, ever longer
+  // ones, until what is left can be scaled within the limit.
+  const double step = aimed_step(scene);
+  std::vector<double> added;  // the fraction each weld floor needed
+  for (const double weld : kWeldFloors) {
+    Model model = build_model_once(scene, {weld, step});
+    if (model.mass_scaling.added_fraction() <= aim.max_added_mass) {
+      return model;
+    }
+    added.push_back(model.mass_scaling.added_fraction());
+  }
+  const Model plain = build_model_once(scene, {0.0, std::nullopt});
+  throw_user_error(aim.loc,
+                   "a step of {:.3g} s would need {:.1f} % more mass even with the bars shorter "
+                   "than {:g} of the median collapsed ({:.1f} % without collapsing), above "
+                   "'max_added_mass' {:g} %; the bars are stiff throughout, not only a few short "
+                   "ones. Aim at a shorter step, raise 'max_added_mass', or soften the material "
+                   "(this model alone allows about {:.3g} s)",
+                   step, 100.0 * added.back(), kWeldFloors.back(), 100.0 * added.front(),
+                   100.0 * aim.max_added_mass,
+                   kAutoTimestepSafety * 2.0 / std::sqrt(max_frequency_squared_bound(plain)));
 }
 
 }  // namespace dinam
