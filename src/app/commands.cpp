@@ -18,6 +18,7 @@
 #include "app/frame_writer.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
+#include "app/run_estimate.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/error.hpp"
 #include "dynamics/stability.hpp"
@@ -88,6 +89,9 @@ int run_render(const RenderOptions& options) {
       estimate_memory(scene, model,
                       {frames_held, options.energy_csv, scene.image_width, scene.image_height}),
       available_memory(), options.force);
+  if (timestep) {
+    refuse_long_run(options.scene, scene, model, *timestep, options.force);
+  }
   std::vector<Image> textures = read_textures(scene);
   const std::filesystem::path folder = options.output.value_or(scene.output);
   create_folder(folder);

@@ -22,7 +22,8 @@ struct RenderOptions {
   std::optional<std::filesystem::path> cache;   // draw from this motion cache, simulating nothing
   bool quiet = false;
   bool energy_csv = false;  // write DIR/energy.csv, one row per frame
-  bool force = false;       // run even when the memory estimate passes what is available
+  bool force = false;       // run even when the memory estimate passes what is available, or the
+                            // run-time estimate an hour
 };
 
 // Simulates the scene (or reads its motion from a cache), writes DIR/frame_NNNN.png, DIR/
@@ -38,7 +39,7 @@ struct SimulateOptions {
   std::string formats = "pc2";                  // "pc2", "mdd" or "pc2,mdd"
   bool quiet = false;
   bool energy = false;  // the energy report in the manifest and as energy.csv
-  bool force = false;   // run even when the memory estimate passes what is available
+  bool force = false;   // run even past the memory or run-time estimate's limits
 };
 
 // Simulates the scene once and writes its motion cache: a rest mesh (OBJ) and point caches (PC2,

@@ -64,7 +64,7 @@ int run(int argc, char** argv) {
                              "simulating; refused when the scene's motion has changed since");
   render_command->add_flag("--force", render.force,
                            "Run even when the memory the run needs (see 'dinam info') passes "
-                           "what the machine has available");
+                           "what the machine has available, or its run time an hour");
 
   SimulateOptions simulate;
   std::string simulate_output;
@@ -86,7 +86,7 @@ int run(int argc, char** argv) {
                              "manifest.json and energy.csv");
   simulate_command->add_flag("--force", simulate.force,
                              "Run even when the memory the run needs (see 'dinam info') passes "
-                             "what the machine has available");
+                             "what the machine has available, or its run time an hour");
 
   MovieOptions movie;
   CLI::App* movie_command = app.add_subcommand(

@@ -13,6 +13,12 @@
 #include "scene/scene_description.hpp"
 
 namespace dinam {
+namespace {
+
+// Steps timed before a quick probe may decide; a fourfold margin covers their noise.
+constexpr int kFewSteps = 5;
+
+}  // namespace
 
 long long steps_in_all(const SceneDescription& scene, const Model& model,
                        const TimeStep& timestep) {
@@ -22,7 +28,8 @@ long long steps_in_all(const SceneDescription& scene, const Model& model,
 }
 
 RunEstimate estimate_run_time(const SceneDescription& scene, const Model& model,
-                              const TimeStep& timestep, double probe_seconds, int max_probe_steps) {
+                              const TimeStep& timestep, double probe_seconds, int max_probe_steps,
+                              double enough_below) {
   RunEstimate estimate;
   estimate.steps = steps_in_all(scene, model, timestep);
   State state = initial_state(model, timestep.dt);
@@ -34,7 +41,10 @@ RunEstimate estimate_run_time(const SceneDescription& scene, const Model& model,
     step(model, timestep.dt, {}, state);
     ++estimate.probe_steps;
     elapsed = seconds_since(start);
-    if (elapsed >= probe_seconds) {
+    const bool sure_below =
+        enough_below > 0.0 && estimate.probe_steps >= kFewSteps &&
+        elapsed / estimate.probe_steps * static_cast<double>(estimate.steps) < 0.25 * enough_below;
+    if (elapsed >= probe_seconds || sure_below) {
       break;
     }
   }
@@ -85,6 +95,15 @@ void refuse_if_too_long(const std::filesystem::path& scene_path, const Model& mo
                    scene_path.string(), estimate.steps, timestep.dt, cause,
                    duration_text(estimate.seconds), 1e3 * estimate.seconds_per_step,
                    duration_text(kLongRunSeconds), max_steps);
+}
+
+void refuse_long_run(const std::filesystem::path& scene_path, const SceneDescription& scene,
+                     const Model& model, const TimeStep& timestep, bool force) {
+  if (force) {
+    return;
+  }
+  refuse_if_too_long(scene_path, model, timestep,
+                     estimate_run_time(scene, model, timestep, 0.2, 2000, kLongRunSeconds), force);
 }
 
 }  // namespace dinam

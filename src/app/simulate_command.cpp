@@ -11,6 +11,7 @@
 #include "app/frame_source.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
+#include "app/run_estimate.hpp"
 #include "app/torn_drawing.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
@@ -59,6 +60,7 @@ int run_simulate(const SimulateOptions& options) {
   // One frame's positions at a time: each goes to the files as soon as it is simulated.
   refuse_if_over_budget(options.scene, estimate_memory(scene, model, {2, options.energy, 0, 0}),
                         available_memory(), options.force);
+  refuse_long_run(options.scene, scene, model, timestep, options.force);
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
   SettleOutcome settled;

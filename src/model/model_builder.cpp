@@ -545,16 +545,17 @@ Model build_model(const SceneDescription& scene) {
     }
     added.push_back(model.mass_scaling.added_fraction());
   }
-  const Model plain = build_model_once(scene, {0.0, std::nullopt});
+  // What the strongest collapse with the default's mass scaling reaches, as a step to aim at.
+  const Model best = build_model_once(scene, {kWeldFloors.back(), std::nullopt});
   throw_user_error(aim.loc,
-                   "a step of {:.3g} s would need {:.1f} % more mass even with the bars shorter "
-                   "than {:g} of the median collapsed ({:.1f} % without collapsing), above "
-                   "'max_added_mass' {:g} %; the bars are stiff throughout, not only a few short "
-                   "ones. Aim at a shorter step, raise 'max_added_mass', or soften the material "
-                   "(this model alone allows about {:.3g} s)",
+                   "a step of {:.3g} s would need {:.3g} % more mass even with the bars shorter "
+                   "than {:g} of the median collapsed ({:.3g} % without collapsing), above "
+                   "'max_added_mass' {:g} %: the bars are too stiff throughout, not only a few "
+                   "short ones. Aim at a step of at most about {:.3g} s (what that collapse "
+                   "allows), raise 'max_added_mass', or soften the material",
                    step, 100.0 * added.back(), kWeldFloors.back(), 100.0 * added.front(),
                    100.0 * aim.max_added_mass,
-                   kAutoTimestepSafety * 2.0 / std::sqrt(max_frequency_squared_bound(plain)));
+                   kAutoTimestepSafety * 2.0 / std::sqrt(max_frequency_squared_bound(best)));
 }
 
 }  // namespace dinam

@@ -86,12 +86,22 @@ std::vector<double> low_frequencies(const Model& model, int count) {
   return omega;
 }
 
+// Checks each frequency and records the largest relative change (in the XML report).
 void expect_within(const std::vector<double>& actual, const std::vector<double>& expected,
                    double relative) {
   ASSERT_EQ(actual.size(), expected.size());
+  double largest = 0.0;
   for (std::size_t k = 0; k < actual.size(); ++k) {
     EXPECT_NEAR(actual[k], expected[k], relative * expected[k]) << "mode " << k + 1;
+    largest = std::max(largest, std::abs(actual[k] / expected[k] - 1.0));
   }
+  testing::Test::RecordProperty("largest_frequency_change", fmt::format("{:.3g}", largest));
+}
+
+// Records a step against the reference's, for the report.
+void record_step_ratio(const char* name, const Model& model, const Model& reference) {
+  testing::Test::RecordProperty(
+      name, fmt::format("{:.3g}", critical_timestep(model) / critical_timestep(reference)));
 }
 
 const std::vector<std::pair<int, int>> kSplitCells = {{3, 5}, {11, 9}, {7, 13}, {12, 3}};
@@ -105,6 +115,8 @@ TEST(ShortEdges, TinyEdgesAreCollapsedSoTheStepAndLowFrequenciesAreThoseOfTheCle
   const Model treated = plate_model(tiny, "", "auto");
   const Model untreated = plate_model(tiny, ", weld: off", "{mass_scaling: false}");
 
+  record_step_ratio("untreated_step_ratio", untreated, reference);
+  record_step_ratio("treated_step_ratio", treated, reference);
   // Without treatment the four tiny edges set a step hundreds of times shorter.
   EXPECT_LT(stable_step(untreated), 0.01 * stable_step(reference));
   // With it: within 2× of the clean mesh's step, and its low frequencies within 1 %.
@@ -123,6 +135,10 @@ TEST(ShortEdges, ShortEdgesAboveTheCollapseTakeALittleMassAndKeepTheirLowFrequen
   const Model scaled = plate_model(with_short, "", "auto");
   const Model unscaled = plate_model(with_short, "", "{mass_scaling: false}");
 
+  record_step_ratio("unscaled_step_ratio", unscaled, reference);
+  record_step_ratio("scaled_step_ratio", scaled, reference);
+  testing::Test::RecordProperty("added_mass_fraction",
+                                fmt::format("{:.3g}", scaled.mass_scaling.added_fraction()));
   // The short bars (0.3 of a cell, above the collapse's tenth) are kept, and they shorten the
   // step; the default mass scaling takes it back to within 2× of the clean mesh's...
   EXPECT_LT(stable_step(unscaled), 0.5 * stable_step(reference));
@@ -134,6 +150,45 @@ TEST(ShortEdges, ShortEdgesAboveTheCollapseTakeALittleMassAndKeepTheirLowFrequen
   // ...so the low frequencies move by less than 1 %.
   expect_within(low_frequencies(scaled, kModesCompared), low_frequencies(unscaled, kModesCompared),
                 0.01);
+}
+
+// The plate with short bars (0.15 of a cell) aimed at `max_steps` over its 1 s at 10 fps.
+Model aimed_plate(const std::filesystem::path& obj, double max_steps) {
+  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+fps: 10
+gravity: [0, 0, 0]
+ground: {{contact: false}}
+timestep: {{max_steps: {}}}
+objects:
+  - mesh: {{file: "{}"}}
+    material: {{density: 1100, youngs_modulus: 5.0e7, radius: 0.004}}
+    pinned: {{box: {{min: [-1, -1, -1], max: [2, 0.001, 1]}}}}
+)",
+                                                       max_steps, obj.string())));
+}
+
+bool collapsed_some(const Model& model) {
+  return std::any_of(model.warnings.begin(), model.warnings.end(),
+                     [](const std::string& w) { return w.find("collapsed") != std::string::npos; });
+}
+
+TEST(ShortEdges, MaxStepsIsMetByMassScalingOrElseByCollapsingWithinTheLimit) {
+  const test::TemporaryFolder folder("max-steps");
+  const std::filesystem::path with_short = write_plate(folder.path(), kSplitCells, 0.15);
+  const Model unaided = plate_model(with_short, "", "{mass_scaling: false}");
+  const double unaided_steps = 10.0 * std::ceil(0.1 / (kAutoTimestepSafety * stable_step(unaided)));
+  for (const double fewer : {1.5, 3.0}) {
+    SCOPED_TRACE(fmt::format("{}× fewer steps", fewer));
+    const double max_steps = std::floor(unaided_steps / fewer);
+    const Model aimed = aimed_plate(with_short, max_steps);
+    const TimeStep step = choose_timestep(aimed, std::nullopt, 10.0, {});
+    EXPECT_LE(10.0 * step.steps_per_frame, max_steps);
+    EXPECT_LE(aimed.mass_scaling.added_fraction(), kDefaultMaxAddedMass + 1e-12);
+    // A modest aim is met by mass alone; three times fewer steps would take more than 2 % of
+    // the mass, so the short bars are collapsed first.
+    EXPECT_EQ(collapsed_some(aimed), fewer > 2.0);
+  }
 }
 
 }  // namespace

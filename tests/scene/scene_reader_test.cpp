@@ -87,6 +87,69 @@ TEST(SceneReader, ReadsEveryKeyOfAValidScene) {
   EXPECT_DOUBLE_EQ(cube.material.area_moment, 1.0e-8 / (4 * std::numbers::pi));
 }
 
+// The box of a mesh's vertices.
+std::pair<Vec3, Vec3> vertex_box(const RawMesh& mesh) {
+  Vec3 lo = mesh.vertices.front();
+  Vec3 hi = lo;
+  for (const Vec3& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return {lo, hi};
+}
+
+TEST(SceneReader, MeshUnitsAndFitGiveMetres) {
+  const SceneDescription scene = scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - mesh: {file: cube.obj, units: cm}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
+  - mesh: {file: cube.obj, units: in, translation: [1, 0, 0]}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
+  - mesh: {file: cube.obj, fit: {size: 1.5}, rotation: [0, 0, 45], translation: [0, 0, 2]}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
+  - mesh: {grid: {width: 4, height: 1, columns: 4, rows: 1}, fit: {size: 2}}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
+)");
+  // The unit cube in centimetres and in inches.
+  EXPECT_TRUE(vertex_box(scene.objects[0].mesh).second.isApprox(Vec3(0.01, 0.01, 0.01)));
+  const auto [inch_lo, inch_hi] = vertex_box(scene.objects[1].mesh);
+  EXPECT_TRUE(inch_lo.isApprox(Vec3(1, 0, 0)));
+  EXPECT_TRUE(inch_hi.isApprox(Vec3(1.0254, 0.0254, 0.0254)));
+  // Turned by 45° the cube is √2 wide across x and y: fitted, that side is 1.5 m, its bottom centre
+  // at the origin, then moved up 2 m.
+  const auto [fit_lo, fit_hi] = vertex_box(scene.objects[2].mesh);
+  EXPECT_NEAR((fit_hi - fit_lo).maxCoeff(), 1.5, 1e-12);
+  EXPECT_NEAR(fit_hi.z() - fit_lo.z(), 1.5 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(fit_lo.z(), 2.0, 1e-12);
+  EXPECT_NEAR(fit_lo.x() + fit_hi.x(), 0.0, 1e-12);
+  EXPECT_NEAR(fit_lo.y() + fit_hi.y(), 0.0, 1e-12);
+  // A flat grid 4 m long becomes 2 m long and 0.5 m wide.
+  const auto [grid_lo, grid_hi] = vertex_box(scene.objects[3].mesh);
+  EXPECT_TRUE((grid_hi - grid_lo).isApprox(Vec3(2, 0.5, 0)));
+}
+
+TEST(SceneReader, TimestepAsAMapAimsTheAutomaticStep) {
+  const std::string objects = R"(
+objects:
+  - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]], segments: 10}, weld: 0.2}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
+)";
+  const SceneDescription target = scene_from_yaml(
+      "version: 1\nduration: 1\ntimestep: {target: 1e-4, max_added_mass: 0.05}" + objects);
+  EXPECT_EQ(target.step_target.target, 1e-4);
+  EXPECT_EQ(target.step_target.max_added_mass, 0.05);
+  EXPECT_FALSE(target.timestep.has_value());
+  EXPECT_DOUBLE_EQ(target.objects[0].weld_fraction, 0.2);
+  const SceneDescription steps =
+      scene_from_yaml("version: 1\nduration: 1\ntimestep: {max_steps: 1e6}" + objects);
+  EXPECT_EQ(steps.step_target.max_steps, 1e6);
+  const SceneDescription off =
+      scene_from_yaml("version: 1\nduration: 1\ntimestep: {mass_scaling: false}" + objects);
+  EXPECT_FALSE(off.step_target.mass_scaling);
+  EXPECT_FALSE(off.step_target.aims());
+}
+
 TEST(SceneReader, ReadsThePhysicalModelKeys) {
   const SceneDescription scene = scene_from_yaml(R"(version: 1
 duration: 1
