@@ -95,7 +95,9 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"output", scene.output.string()},
       {"movie", movie_format_name(scene.movie)},
   };
-  fmt::print("{}\n", json.dump(1));
+  // A mesh file's material and group names are bytes in any encoding: what is not UTF-8 is shown
+  // as U+FFFD rather than failing the whole summary.
+  fmt::print("{}\n", json.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
 }
 
 // The shortest bars, what sets the step and any mass added to lengthen it.

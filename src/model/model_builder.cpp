@@ -167,8 +167,9 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
         collapse.tolerance, collapse.merged_nodes));
   }
   if (edges.empty()) {
-    throw_user_error(object.mesh_loc, "object '{}': the mesh has no edges, so no bars{}",
-                     object.name, clean.changed() ? " (" + clean.summary() + ")" : "");
+    throw_user_error(object.mesh_loc, "object '{}': {} has no edges left, so no bars{}",
+                     object.name, object.mesh_source,
+                     clean.changed() ? " (" + clean.summary() + ")" : "");
   }
   if (clean.changed()) {
     model.warnings.push_back(fmt::format("{}: warning: object '{}': {}", where_in_file(object),

@@ -260,9 +260,9 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
   }
   read_weld(map, object);
   map.finish();
-  check_mesh_values(mesh, map.has("file") ? map.loc("file") : map.loc(),
-                    map.has("file") ? fmt::format("mesh file '{}'", map.string("file", ""))
-                                    : std::string("the generated mesh"));
+  object.mesh_source = map.has("file") ? fmt::format("mesh file '{}'", map.string("file", ""))
+                                       : std::string("the generated mesh");
+  check_mesh_values(mesh, map.has("file") ? map.loc("file") : map.loc(), object.mesh_source);
 }
 
 BoxDesc read_box(YamlMap map) {

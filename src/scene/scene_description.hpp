@@ -134,6 +134,7 @@ struct ObjectDesc {
   FileLoc loc;
   RawMesh mesh;  // in world space
   FileLoc mesh_loc;
+  std::string mesh_source = "the mesh";  // for messages: "mesh file '…'" or "the generated mesh"
   // Bars shorter than this fraction of the object's median bar length are collapsed before the
   // model is built (`mesh: {weld}`); 0 keeps every bar.
   double weld_fraction = kDefaultWeldFraction;
