@@ -6,6 +6,7 @@
 #include "app/draw_list_from_model.hpp"
 #include "app/torn_drawing.hpp"
 #include "cache/motion_cache.hpp"
+#include "core/subject_box.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -44,6 +45,13 @@ SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, in
     }
   });
   frames.motion = motion_bounds(frames.positions);
+  for (const std::vector<Vec3f>& positions : frames.positions) {
+    Vec3f lo;
+    Vec3f hi;
+    subject_box(positions, lo, hi);
+    frames.subject.add(lo);
+    frames.subject.add(hi);
+  }
   frames.seconds = seconds_since(start);
   return frames;
 }
@@ -70,6 +78,8 @@ SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {
   for (const FrameBounds& bounds : cache.manifest().frame_bounds) {
     frames.motion.add(bounds.min);
     frames.motion.add(bounds.max);
+    frames.subject.add(bounds.subject_min);
+    frames.subject.add(bounds.subject_max);
   }
   frames.seconds = seconds_since(start);
   return frames;
@@ -92,7 +102,7 @@ std::vector<RenderCamera> frame_cameras(const SceneDescription& scene, const Mod
       const float aspect =
           static_cast<float>(scene.image_width) / static_cast<float>(scene.image_height);
       cameras.assign(frames.positions.size(),
-                     frame_bounds(frames.motion, desc.direction.cast<float>(), up, fov, aspect));
+                     frame_box(frames.subject, desc.direction.cast<float>(), up, fov, aspect));
       break;
     }
     case CameraDesc::Mode::kFollow: {

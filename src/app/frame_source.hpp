@@ -26,6 +26,7 @@ struct SimulatedFrames {
   int first_frame = 1;
   std::vector<std::vector<Vec3f>> positions;  // (frames held) × (n_nodes)
   Bounds motion;                              // every position of every frame of the motion
+  Bounds subject;  // every frame's subject box (core/subject_box.hpp): what camera: auto frames
   double seconds = 0.0;                       // wall time spent simulating or reading
   SettleOutcome settled;                      // how the settling phase ended (simulated only)
   std::vector<TornBar> tears;                 // in the order they broke

@@ -15,16 +15,28 @@ namespace {
 // Keys keep the order they are written in, so the file reads top-down like this struct.
 using Json = nlohmann::ordered_json;
 
+// A frame's box and its subject's: 12 numbers (a cache from before the subject had only the box's
+// 6, and its subject is the whole box).
 Json bounds_json(const FrameBounds& b) {
-  return Json::array({b.min.x(), b.min.y(), b.min.z(), b.max.x(), b.max.y(), b.max.z()});
+  Json j = Json::array();
+  for (const Vec3f* corner : {&b.min, &b.max, &b.subject_min, &b.subject_max}) {
+    for (int c = 0; c < 3; ++c) {
+      j.push_back((*corner)[c]);
+    }
+  }
+  return j;
 }
 
 FrameBounds bounds_from(const Json& j) {
   // Floats go to JSON as doubles, which print exactly, and come back to the same float.
   FrameBounds b;
-  for (std::size_t c = 0; c < 3; ++c) {
-    b.min[static_cast<Eigen::Index>(c)] = j.at(c).get<float>();
-    b.max[static_cast<Eigen::Index>(c)] = j.at(c + 3).get<float>();
+  const bool has_subject = j.size() >= 12;
+  for (int c = 0; c < 3; ++c) {
+    const auto at = static_cast<std::size_t>(c);
+    b.min[c] = j.at(at).get<float>();
+    b.max[c] = j.at(at + 3).get<float>();
+    b.subject_min[c] = has_subject ? j.at(at + 6).get<float>() : b.min[c];
+    b.subject_max[c] = has_subject ? j.at(at + 9).get<float>() : b.max[c];
   }
   return b;
 }

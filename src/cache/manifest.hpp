@@ -12,10 +12,13 @@
 
 namespace dinam {
 
-// The box around one frame's node positions (all objects), in the renderer's single precision.
+// The box around one frame's node positions (all objects), in the renderer's single precision,
+// and the box of its subject (core/subject_box.hpp), which the automatic camera frames.
 struct FrameBounds {
-  Vec3f min = Vec3f::Zero();  // m
-  Vec3f max = Vec3f::Zero();  // m
+  Vec3f min = Vec3f::Zero();          // m
+  Vec3f max = Vec3f::Zero();          // m
+  Vec3f subject_min = Vec3f::Zero();  // m
+  Vec3f subject_max = Vec3f::Zero();  // m
 };
 
 // One object's files, each a name inside the cache folder; pc2 or mdd is empty when that format

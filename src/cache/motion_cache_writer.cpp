@@ -16,6 +16,7 @@
 
 #include "cache/obj_file.hpp"
 #include "core/error.hpp"
+#include "core/subject_box.hpp"
 #include "core/version.hpp"
 #include "model/model.hpp"
 
@@ -203,6 +204,7 @@ void MotionCacheWriter::add_frame(const std::vector<Vec3f>& positions) {
     bounds.min = bounds.min.cwiseMin(p);
     bounds.max = bounds.max.cwiseMax(p);
   }
+  subject_box(positions, bounds.subject_min, bounds.subject_max);
   frame_bounds_.push_back(bounds);
   for (ObjectFiles& files : files_) {
     for (PointCacheWriter& cache : files.caches) {

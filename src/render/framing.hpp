@@ -27,6 +27,12 @@ struct Bounds {
 RenderCamera frame_bounds(const Bounds& bounds, const Vec3f& view_direction, const Vec3f& up,
                           float fov_degrees, float aspect, float margin = 1.1f);
 
+// A camera looking along `view_direction` at the centre of `box`, just far enough that each of
+// the box's eight corners projects inside the picture (`aspect` = width / height) with `margin`
+// (1.08 = 8 % room): tighter than the bounding sphere, which leaves a flat or long subject small.
+RenderCamera frame_box(const Bounds& box, const Vec3f& view_direction, const Vec3f& up,
+                       float fov_degrees, float aspect, float margin = 1.08f);
+
 // A camera that keeps `offset` (eye minus target) from the centroid of `points` in `positions`.
 RenderCamera follow_points(const std::vector<Vec3f>& positions, const std::vector<Index>& points,
                            const Vec3f& offset, const Vec3f& up, float fov_degrees);

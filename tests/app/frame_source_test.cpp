@@ -128,6 +128,64 @@ TEST(FrameSource, AutoCameraKeepsStillAndSeesEveryPointOfEveryFrame) {
   }
 }
 
+// A 20 × 20 plate of 1 m dropped tilted from 0.3 m onto the ground, and (with `fragment`) a short
+// wire 20 m away: 2 of its 443 nodes, the kind of stray piece a downloaded file carries.
+Pipeline dropped_plate(bool fragment) {
+  std::string text = R"(version: 1
+duration: 1.5
+fps: 10
+image: {width: 320, height: 180}
+objects:
+  - name: plate
+    mesh: {grid: {width: 2, height: 2, columns: 20, rows: 20}, fit: {size: 1}, rotation: [30, 0, 0],
+           translation: [0, 0, 0.3]}
+    material: {density: 1100, youngs_modulus: 5.0e7, radius: 0.004}
+)";
+  if (fragment) {
+    text += R"(  - name: fragment
+    mesh: {polyline: {points: [[20, 0, 1], [20.05, 0, 1]]}}
+    material: {density: 1100, youngs_modulus: 5.0e7, radius: 0.004}
+)";
+  }
+  Pipeline p{test::scene_from_yaml(text), {}, {}, {}};
+  p.model = build_model(p.scene);
+  const TimeStep timestep = choose_timestep(p.model, std::nullopt, p.scene.fps, {});
+  p.frames = simulate_frames(p.model, timestep, p.scene.frame_count(), false);
+  p.cameras = frame_cameras(p.scene, p.model, p.frames);
+  return p;
+}
+
+TEST(FrameSource, AutoCameraFramesADroppedModelTightlyIgnoringAFarFragment) {
+  for (const bool fragment : {false, true}) {
+    SCOPED_TRACE(fragment ? "with a fragment 20 m away" : "alone");
+    const Pipeline p = dropped_plate(fragment);
+    const ModelObject& plate = p.model.objects[0];
+    const int width = p.scene.image_width;
+    const int height = p.scene.image_height;
+    double smallest_span = 1.0;
+    for (std::size_t f = 0; f < p.frames.positions.size(); ++f) {
+      Eigen::Vector2f lo = Eigen::Vector2f::Constant(1e30f);
+      Eigen::Vector2f hi = -lo;
+      for (Index i = plate.first_node; i < plate.first_node + plate.node_count; ++i) {
+        const Eigen::Vector2f pixel =
+            pixel_from_world(p.cameras[f], width, height, p.frames.positions[f][i]);
+        lo = lo.cwiseMin(pixel);
+        hi = hi.cwiseMax(pixel);
+      }
+      // All of the plate is in the picture, and it spans half its width or height at least.
+      EXPECT_GE(lo.minCoeff(), 0.0f) << "frame " << f + 1;
+      EXPECT_LE(hi.x(), static_cast<float>(width)) << "frame " << f + 1;
+      EXPECT_LE(hi.y(), static_cast<float>(height)) << "frame " << f + 1;
+      const double span = std::max(static_cast<double>(hi.x() - lo.x()) / width,
+                                   static_cast<double>(hi.y() - lo.y()) / height);
+      smallest_span = std::min(smallest_span, span);
+    }
+    EXPECT_GE(smallest_span, 0.5);
+    testing::Test::RecordProperty(fragment ? "smallest_span_with_fragment" : "smallest_span",
+                                  fmt::format("{:.3f}", smallest_span));
+  }
+}
+
 TEST(FrameSource, FollowCameraKeepsItsOffsetFromTheObject) {
   const Pipeline p = run("camera: {follow: cloth, offset: [2, -3, 1]}");
   for (std::size_t k = 0; k < p.cameras.size(); ++k) {
