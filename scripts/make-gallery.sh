@@ -18,3 +18,12 @@ for scene in scenes/*.yaml; do
   rm -rf "$work"
   echo "docs/gallery/$name.png (frame $n)"
 done
+# Downloaded models (assimp-testmodels), dropped: frame 20, just after they land.
+for scene in scenes/real_meshes/*.yaml; do
+  name=real_$(basename "$scene" .yaml)
+  work=$(mktemp -d)
+  "$dinam" render "$scene" -o "$work" --frames 20-20 --size 480x270 --movie none -q
+  cp "$work/frame_0020.png" "docs/gallery/$name.png"
+  rm -rf "$work"
+  echo "docs/gallery/$name.png (frame 20)"
+done
