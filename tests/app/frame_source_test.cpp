@@ -55,14 +55,17 @@ struct Pipeline {
   std::vector<RenderCamera> cameras;
 };
 
-Pipeline run(const std::string& camera) {
-  Pipeline p{test::scene_from_yaml(scene_text(camera)), {}, {}, {}};
+// Simulates the scene and decides its cameras.
+Pipeline run_scene(const std::string& text) {
+  Pipeline p{test::scene_from_yaml(text), {}, {}, {}};
   p.model = build_model(p.scene);
   const TimeStep timestep = choose_timestep(p.model, std::nullopt, p.scene.fps, {});
   p.frames = simulate_frames(p.model, timestep, p.scene.frame_count(), false);
   p.cameras = frame_cameras(p.scene, p.model, p.frames);
   return p;
 }
+
+Pipeline run(const std::string& camera) { return run_scene(scene_text(camera)); }
 
 TEST(FrameSource, DrawsEachChosenFrameOnceWithItsPositions) {
   const Pipeline p = run("camera: auto");
@@ -147,12 +150,7 @@ objects:
     material: {density: 1100, youngs_modulus: 5.0e7, radius: 0.004}
 )";
   }
-  Pipeline p{test::scene_from_yaml(text), {}, {}, {}};
-  p.model = build_model(p.scene);
-  const TimeStep timestep = choose_timestep(p.model, std::nullopt, p.scene.fps, {});
-  p.frames = simulate_frames(p.model, timestep, p.scene.frame_count(), false);
-  p.cameras = frame_cameras(p.scene, p.model, p.frames);
-  return p;
+  return run_scene(text);
 }
 
 TEST(FrameSource, AutoCameraFramesADroppedModelTightlyIgnoringAFarFragment) {
