@@ -85,6 +85,22 @@ CleanedMesh clean_mesh(const RawMesh& mesh, const std::vector<Index>& welded) {
     clean.kept_line[l] = static_cast<Index>(clean.lines.size());
     clean.lines.push_back(std::move(chain));
   }
+  // Welded vertices on no kept face or line: points of the file that are no node.
+  std::vector<char> listed(mesh.vertices.size(), 0);
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const Index w : welded) {
+    listed[static_cast<std::size_t>(w)] = 1;
+  }
+  for (const auto* elements : {&clean.faces, &clean.lines}) {
+    for (const auto& element : *elements) {
+      for (const Index v : element) {
+        used[static_cast<std::size_t>(welded[v])] = 1;
+      }
+    }
+  }
+  for (std::size_t w = 0; w < listed.size(); ++w) {
+    clean.isolated_vertices += listed[w] != 0 && used[w] == 0 ? 1 : 0;
+  }
   return clean;
 }
 
@@ -107,6 +123,10 @@ std::string CleanedMesh::summary() const {
   if (degenerate_lines > 0) {
     parts.push_back(fmt::format("{} line{} of a single point", degenerate_lines,
                                 degenerate_lines == 1 ? "" : "s"));
+  }
+  if (isolated_vertices > 0) {
+    parts.push_back(fmt::format("{} vertex{} on no face or line", isolated_vertices,
+                                isolated_vertices == 1 ? "" : "es"));
   }
   std::string text = "dropped " + fmt::format("{}", fmt::join(parts, ", "));
   if (!dropped_examples.empty()) {

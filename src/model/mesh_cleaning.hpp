@@ -23,10 +23,13 @@ struct CleanedMesh {
   Index duplicate_faces = 0;            // the same welded corners as an earlier face
   Index collapsed_sides = 0;            // sides of kept faces and segments of lines of zero length
   Index degenerate_lines = 0;           // lines left with fewer than two distinct welded vertices
+  Index isolated_vertices = 0;          // welded vertices on no kept face or line
   std::vector<Index> dropped_examples;  // the first few dropped faces' mesh ids
 
   bool changed() const {
-    return degenerate_faces + duplicate_faces + collapsed_sides + degenerate_lines > 0;
+    return degenerate_faces + duplicate_faces + collapsed_sides + degenerate_lines +
+               isolated_vertices >
+           0;
   }
   // "dropped 2 degenerate faces (fewer than three distinct corners), …", for a warning.
   std::string summary() const;

@@ -146,6 +146,12 @@ TEST(MeshLoader, DegenerateAndDuplicateFacesAreDroppedWithAWarning) {
     EXPECT_NE(warning.find(part), std::string::npos) << part << " in: " << warning;
   }
   EXPECT_TRUE(model_of_file("cube.obj").warnings.empty());
+  // PLY keeps a file's vertices as they are (assimp's OBJ reader leaves out unused ones).
+  const Model stray = model_of_file("stray_point.ply");
+  EXPECT_EQ(stray.node_count(), 3);
+  ASSERT_EQ(stray.warnings.size(), 1U);
+  EXPECT_NE(stray.warnings[0].find("dropped 1 vertex on no face or line"), std::string::npos)
+      << stray.warnings[0];
 }
 
 TEST(MeshLoader, UnreadableFileIsAnError) {
