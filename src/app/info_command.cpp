@@ -51,6 +51,7 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
                 Index pinned, const RunEstimate& run) {
   const MemoryFigures memory = memory_figures(scene, model);
   const StepLimits limits = find_step_limits(model);
+  const std::pair<Vec3, Vec3> box = bounding_box(model);
   nlohmann::ordered_json objects = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < model.objects.size(); ++k) {
     const ModelObject& object = model.objects[k];
@@ -71,8 +72,7 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"bending_springs", model.bend_count()},
       {"torsion_springs", model.torsion_count()},
       {"total_mass_kg", model.total_mass()},
-      {"bounding_box_m",
-       {json_vec3(bounding_box(model).first), json_vec3(bounding_box(model).second)}},
+      {"bounding_box_m", {json_vec3(box.first), json_vec3(box.second)}},
       {"added_mass_kg", model.mass_scaling.added_mass},
       {"added_mass_fraction", model.mass_scaling.added_fraction()},
       {"mass_scaled_nodes", model.mass_scaling.nodes},

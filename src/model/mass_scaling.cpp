@@ -38,7 +38,10 @@ double mass_needed_for(const Model& model, const NodeFrequencyRows& rows, double
 MassScaling scale_masses_to(Model& model, const NodeFrequencyRows& rows, double omega_squared) {
   MassScaling scaling;
   scaling.mass_before = model.total_mass();
-  const double omega_squared_before = max_frequency_squared_bound(model, false);
+  double omega_squared_before = 0.0;  // the bound itself, from the rows already at hand
+  for (std::size_t i = 0; i < rows.own.size(); ++i) {
+    omega_squared_before = std::max(omega_squared_before, rows.own[i] + rows.coupling[i]);
+  }
   const std::vector<double> mass = masses_for_frequency(model, rows, omega_squared);
   for (std::size_t i = 0; i < mass.size(); ++i) {
     if (mass[i] > model.node_mass[i]) {

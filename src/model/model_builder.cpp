@@ -539,7 +539,15 @@ Model build_model(const SceneDescription& scene) {
   // ones, until what is left can be scaled within the limit.
   const double step = aimed_step(scene);
   std::vector<double> added;  // the fraction each weld floor needed
+  // A floor no higher than every object's own weld builds the same model as the first try.
+  double least_weld = 1.0;
+  for (const ObjectDesc& object : scene.objects) {
+    least_weld = std::min(least_weld, object.weld_fraction);
+  }
   for (const double weld : kWeldFloors) {
+    if (weld != kWeldFloors.front() && weld <= least_weld) {
+      continue;
+    }
     Model model = build_model_once(scene, {weld, step});
     if (model.mass_scaling.added_fraction() <= aim.max_added_mass) {
       return model;
