@@ -84,7 +84,8 @@ std::uint64_t model_bytes(const Model& model) {
   for (const PinMotion& motion : model.pin_motions) {
     bytes += bytes_of(motion.nodes);
   }
-  bytes += bytes_of(model.wind.faces) + bytes_of(model.wind.bars);
+  bytes += bytes_of(model.wind.faces) + bytes_of(model.wind.bars) + bytes_of(model.wind.nodes) +
+           bytes_of(model.wind.node_item_offsets) + bytes_of(model.wind.node_items);
   bytes += bytes_of(model.ground.node_stiffness) + bytes_of(model.ground.node_damping);
   return bytes;
 }
@@ -95,8 +96,13 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
   const auto springs = static_cast<std::uint64_t>(model.bar_count()) +
                        static_cast<std::uint64_t>(model.bend_count()) +
                        static_cast<std::uint64_t>(model.torsion_count());
-  std::uint64_t bytes = nodes * 3 * sizeof(Vec3);  // x, v_half, force
-  bytes += springs * 2 * sizeof(double);           // plastic sets and each one's last flow
+  std::uint64_t bytes = nodes * 3 * sizeof(Vec3);        // x, v_half, force
+  bytes += springs * sizeof(double);                     // plastic sets
+  bytes += springs / kSpringBlockSize * sizeof(double);  // each block's last flow (at most)
+  if (model.wind.field.enabled) {  // each face's and bar's drag, and the wind at each node
+    bytes += (model.wind.faces.size() + model.wind.bars.size()) * sizeof(Vec3);
+    bytes += model.wind.field.turbulence != 0.0 ? nodes * sizeof(Vec3) : 0;
+  }
   if (model.ground.enabled) {
     bytes += nodes * (sizeof(Vec3) + 2 * sizeof(std::uint8_t));  // anchors, touching, sliding
   }

@@ -14,6 +14,9 @@ namespace dinam {
 inline double dot3(const Vec3& a, const Vec3& b) {
   return a.x() * b.x() + a.y() * b.y() + a.z() * b.z();
 }
+inline double norm3(const Vec3& a) {
+  return std::sqrt(dot3(a, a));
+}
 inline Vec3 cross3(const Vec3& a, const Vec3& b) {
   return {a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
           a.x() * b.y() - a.y() * b.x()};

@@ -1,15 +1,14 @@
 #include "dynamics/field_forces.hpp"
 
+#include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
 
 void add_gravity_forces(ForceContext& context) {
   const Model& model = context.model;
-  const Index n = model.node_count();
-  for (Index i = 0; i < n; ++i) {
-    context.force[i] += model.node_mass[i] * model.gravity;
-  }
+  for_each_index(model.node_count(),
+                 [&](Index i) { context.force[i] += model.node_mass[i] * model.gravity; });
 }
 
 void add_field_forces(ForceContext& context) {

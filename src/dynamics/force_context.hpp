@@ -30,23 +30,23 @@ struct ForceContext {
     }
   }
 
-  // An elastoplastic spring's new plastic set and the work its flow dissipated, kept only when
-  // the context advances history. Safe from parallel loops: each spring writes its own slots.
-  void record_plastic_flow(Index spring, double& plastic_set, double new_plastic_set,
-                           double dissipated) {
+  // The work that the plastic flow of one block of springs dissipated in this evaluation (J),
+  // kept only when the context advances history. Safe from parallel loops: each block writes its
+  // own slot.
+  void record_plastic_flow(Index block, double dissipated) {
     if (update_history) {
-      plastic_set = new_plastic_set;
-      state.plastic_flow[static_cast<std::size_t>(spring)] = dissipated;
+      state.plastic_flow[static_cast<std::size_t>(block)] = dissipated;
     }
   }
 
-  // After a loop over the springs of one kind: books the dissipation of their flow, summed in
-  // spring order so that the total does not depend on the threads. Nothing to do for a kind
-  // that cannot yield.
+  // After a loop over the springs of one kind: books the dissipation of their flow, summed block
+  // by block in spring order, so that the total does not depend on the threads. Nothing to do
+  // for a kind that cannot yield.
   void book_plastic_flow(const SpringColouring& springs) {
     if (update_history && springs.any_yield) {
-      for (Index s = 0; s < springs.spring_count; ++s) {
-        state.energy.plastic_dissipation += state.plastic_flow[s];
+      const Index blocks = (springs.spring_count + kSpringBlockSize - 1) / kSpringBlockSize;
+      for (Index b = 0; b < blocks; ++b) {
+        state.energy.plastic_dissipation += state.plastic_flow[static_cast<std::size_t>(b)];
       }
     }
   }

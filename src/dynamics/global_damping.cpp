@@ -1,5 +1,6 @@
 #include "dynamics/global_damping.hpp"
 
+#include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -10,9 +11,9 @@ void add_global_damping_forces(ForceContext& context) {
   if (alpha == 0.0) {
     return;
   }
-  for (Index i = 0; i < model.node_count(); ++i) {
+  for_each_index(model.node_count(), [&](Index i) {
     context.add(i, -(alpha * model.node_mass[i]) * context.state.v_half[i]);
-  }
+  });
 }
 
 }  // namespace dinam

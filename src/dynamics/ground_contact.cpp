@@ -1,42 +1,42 @@
 #include "dynamics/ground_contact.hpp"
 
-#include <algorithm>
-
-#include "model/model.hpp"
+#include "dynamics/parallel_loops.hpp"
 
 namespace dinam {
 
-ContactForces ground_contact(const GroundContact& ground, double stiffness, double damping,
-                             const Vec3& x, const Vec3& v, const Vec3& anchor, bool sliding) {
-  ContactForces result;
-  const Vec3& n = ground.normal;
-  const double distance = (x - ground.point).dot(n);
-  const double penetration = -distance;
-  const double elastic = stiffness * penetration;
-  const double normal_force = std::max(0.0, elastic - damping * v.dot(n));
-  result.normal_elastic = elastic * n;
-  result.normal_damping = (normal_force - elastic) * n;
-  result.energy = 0.5 * elastic * penetration;
+namespace {
 
-  // Tangential: the stick spring from the anchor to the node's foot on the plane, with the same
-  // damper as the normal direction, so that landing on a slope loads both directions alike.
-  const Vec3 foot = x + penetration * n;
-  const Vec3 tangential_velocity = v - v.dot(n) * n;
-  const Vec3 trial = -stiffness * (foot - anchor) - damping * tangential_velocity;
-  const double trial_norm = trial.norm();
-  const double limit = (sliding ? ground.kinetic_friction : ground.static_friction) * normal_force;
-  if (ground.stick || trial_norm <= limit) {
-    result.friction = trial;
-    result.anchor = anchor;
-    result.sliding = false;
-  } else {
-    const double kinetic = ground.kinetic_friction * normal_force;
-    result.friction = (kinetic / trial_norm) * trial;
-    result.anchor = foot + result.friction / stiffness;  // dragged along, at the kinetic force
-    result.sliding = true;
+// Nodes go through the loop below in blocks of this many: gathered into arrays by coordinate,
+// computed one node per SIMD lane, then added to the nodes that touch.
+constexpr Index kGroundBlock = 64;
+
+struct GroundBlock {
+  // Inputs: each touching node's position, velocity, stick anchor (kept, or the foot of a new
+  // touch), whether it slid last step (1 or 0), and its penalty's stiffness and damping.
+  double x[3][kGroundBlock];
+  double v[3][kGroundBlock];
+  double anchor[3][kGroundBlock];
+  double sliding[kGroundBlock];
+  double stiffness[kGroundBlock];
+  double damping[kGroundBlock];
+  // Outputs: ContactForces, by coordinate.
+  double elastic[3][kGroundBlock];
+  double normal_damping[3][kGroundBlock];
+  double friction[3][kGroundBlock];
+  double new_anchor[3][kGroundBlock];
+  double new_sliding[kGroundBlock];
+
+  static Vec3 get(const double (&array)[3][kGroundBlock], Index k) {
+    return {array[0][k], array[1][k], array[2][k]};
   }
-  return result;
-}
+  static void set(double (&array)[3][kGroundBlock], Index k, const Vec3& value) {
+    array[0][k] = value.x();
+    array[1][k] = value.y();
+    array[2][k] = value.z();
+  }
+};
+
+}  // namespace
 
 void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger,
                                std::vector<Vec3>* friction_ledger) {
@@ -46,35 +46,70 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     return;
   }
   State& state = context.state;
-  for (Index i = 0; i < model.node_count(); ++i) {
-    const double distance = (state.x[i] - ground.point).dot(ground.normal);
-    if (distance >= 0.0 || model.pinned(i)) {
-      if (context.update_history) {
+  auto below = [&](Index i) {
+    return dot3(state.x[i] - ground.point, ground.normal) < 0.0 && !model.pinned(i);
+  };
+  for_each_block(model.node_count(), kGroundBlock, [&](Index first, Index size) {
+    // 1. Gather the nodes below the plane, packed; a block above it (the usual case) ends here.
+    Index touching[kGroundBlock];
+    Index count = 0;
+    for (Index i = first; i < first + size; ++i) {
+      if (below(i)) {
+        touching[count++] = i;
+      } else if (context.update_history) {
         state.contact_touching[i] = 0;
         state.contact_sliding[i] = 0;
       }
-      continue;
     }
-    // A node that has just touched is anchored at its foot on the plane.
-    const Vec3 anchor = state.contact_touching[i] != 0
-                            ? state.contact_anchor[i]
-                            : Vec3(state.x[i] - distance * ground.normal);
-    const ContactForces f =
-        ground_contact(ground, ground.node_stiffness[i], ground.node_damping[i], state.x[i],
-                       state.v_half[i], anchor, state.contact_sliding[i] != 0);
-    context.force[i] += f.normal_elastic;
-    context.force[i] += f.normal_damping;
-    context.force[i] += f.friction;
-    if (damping_ledger != nullptr) {
-      (*damping_ledger)[i] += f.normal_damping;
-      (*friction_ledger)[i] += f.friction;
+    if (count == 0) {
+      return;
     }
-    if (context.update_history) {
-      state.contact_touching[i] = 1;
-      state.contact_anchor[i] = f.anchor;
-      state.contact_sliding[i] = f.sliding ? 1 : 0;
+    GroundBlock block;
+    for (Index k = 0; k < count; ++k) {
+      const Index i = touching[k];
+      const double distance = dot3(state.x[i] - ground.point, ground.normal);
+      GroundBlock::set(block.x, k, state.x[i]);
+      GroundBlock::set(block.v, k, state.v_half[i]);
+      // A node that has just touched is anchored at its foot on the plane.
+      GroundBlock::set(block.anchor, k,
+                       state.contact_touching[i] != 0
+                           ? state.contact_anchor[i]
+                           : Vec3(state.x[i] - distance * ground.normal));
+      block.sliding[k] = state.contact_sliding[i] != 0 ? 1.0 : 0.0;
+      block.stiffness[k] = ground.node_stiffness[i];
+      block.damping[k] = ground.node_damping[i];
     }
-  }
+    // 2. The contact forces, one node per lane (vectorised by GCC without `omp simd`, which would
+    //    put the Vec3 temporaries in per-lane arrays in memory and keep it from vectorising).
+    for (Index k = 0; k < count; ++k) {
+      const ContactForces f = ground_contact(
+          ground, block.stiffness[k], block.damping[k], GroundBlock::get(block.x, k),
+          GroundBlock::get(block.v, k), GroundBlock::get(block.anchor, k), block.sliding[k] != 0.0);
+      GroundBlock::set(block.elastic, k, f.normal_elastic);
+      GroundBlock::set(block.normal_damping, k, f.normal_damping);
+      GroundBlock::set(block.friction, k, f.friction);
+      GroundBlock::set(block.new_anchor, k, f.anchor);
+      block.new_sliding[k] = f.sliding ? 1.0 : 0.0;
+    }
+    // 3. The elastic push, the normal damping and the friction, in that order; the history.
+    for (Index k = 0; k < count; ++k) {
+      const Index i = touching[k];
+      const Vec3 damping = GroundBlock::get(block.normal_damping, k);
+      const Vec3 friction = GroundBlock::get(block.friction, k);
+      context.force[i] += GroundBlock::get(block.elastic, k);
+      context.force[i] += damping;
+      context.force[i] += friction;
+      if (damping_ledger != nullptr) {
+        (*damping_ledger)[i] += damping;
+        (*friction_ledger)[i] += friction;
+      }
+      if (context.update_history) {
+        state.contact_touching[i] = 1;
+        state.contact_anchor[i] = GroundBlock::get(block.new_anchor, k);
+        state.contact_sliding[i] = block.new_sliding[k] != 0.0 ? 1 : 0;
+      }
+    }
+  });
 }
 
 double ground_contact_energy(const Model& model, const State& state) {
@@ -84,7 +119,7 @@ double ground_contact_energy(const Model& model, const State& state) {
   }
   double energy = 0.0;
   for (Index i = 0; i < model.node_count(); ++i) {
-    const double penetration = -(state.x[i] - ground.point).dot(ground.normal);
+    const double penetration = -dot3(state.x[i] - ground.point, ground.normal);
     if (penetration > 0.0 && !model.pinned(i)) {
       energy += 0.5 * ground.node_stiffness[i] * penetration * penetration;
     }

@@ -13,14 +13,16 @@
 // (sticking: it moves only by the spring's elastic give, |F_t|/k). Beyond that it slides, with
 // the force μk N against the trial direction and the anchor dragged along, until the trial
 // force falls back to μk N. With `stick` it never slides (the paper's falling ball).
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include "core/geometry.hpp"
 #include "core/types.hpp"
 #include "dynamics/force_context.hpp"
+#include "model/model.hpp"
 
 namespace dinam {
-
-struct GroundContact;
 
 struct ContactForces {
   Vec3 normal_elastic = Vec3::Zero();  // N, k (−d) n
@@ -32,8 +34,42 @@ struct ContactForces {
 };
 
 // One node below the plane. `anchor` and `sliding` are its history from the last step.
-ContactForces ground_contact(const GroundContact& ground, double stiffness, double damping,
-                             const Vec3& x, const Vec3& v, const Vec3& anchor, bool sliding);
+// Selects rather than branches, and dot3 rather than Eigen's dot, so that the loop over the nodes
+// vectorises (ground_contact.cpp).
+[[gnu::always_inline]] inline ContactForces ground_contact(const GroundContact& ground,
+                                                           double stiffness, double damping,
+                                                           const Vec3& x, const Vec3& v,
+                                                           const Vec3& anchor, bool sliding) {
+  ContactForces result;
+  const Vec3& n = ground.normal;
+  const double distance = dot3(x - ground.point, n);
+  const double penetration = -distance;
+  const double elastic = stiffness * penetration;
+  const double normal_force = std::max(0.0, elastic - damping * dot3(v, n));
+  result.normal_elastic = elastic * n;
+  result.normal_damping = (normal_force - elastic) * n;
+  result.energy = 0.5 * elastic * penetration;
+
+  // Tangential: the stick spring from the anchor to the node's foot on the plane, with the same
+  // damper as the normal direction, so that landing on a slope loads both directions alike.
+  const Vec3 foot = x + penetration * n;
+  const Vec3 tangential_velocity = v - dot3(v, n) * n;
+  const Vec3 trial = -stiffness * (foot - anchor) - damping * tangential_velocity;
+  const double trial_norm = norm3(trial);
+  const double limit = (sliding ? ground.kinetic_friction : ground.static_friction) * normal_force;
+  // Sticking, or sliding at the kinetic force with the anchor dragged along (trial_norm > limit
+  // ≥ 0 there, so the quotient is safe where it is used).
+  const bool sticks = ground.stick || trial_norm <= limit;
+  const double kinetic = ground.kinetic_friction * normal_force;
+  const Vec3 slide = (kinetic / (sticks ? 1.0 : trial_norm)) * trial;
+  const Vec3 dragged = foot + slide / stiffness;
+  for (int c = 0; c < 3; ++c) {
+    result.friction[c] = sticks ? trial[c] : slide[c];
+    result.anchor[c] = sticks ? anchor[c] : dragged[c];
+  }
+  result.sliding = !sticks;
+  return result;
+}
 
 // Adds the contact forces of every free node below the plane to context.force: the elastic
 // push, the normal damping and the friction, in that order. While the energy is tracked the

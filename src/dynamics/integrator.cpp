@@ -25,19 +25,20 @@ namespace {
 
 // Pinned nodes are skipped: they cannot diverge by themselves (only through 0 × ∞ once a
 // neighbour's force has overflowed), and naming the free node that did is what helps the user.
-void check_finite(const Model& model, const State& state) {
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (model.pinned(i)) {
-      continue;
-    }
-    if (!state.x[i].allFinite() || !state.v_half[i].allFinite()) {
-      throw RuntimeError(fmt::format(
-          "the simulation diverged: node {} of object '{}' has a non-finite position or velocity "
-          "at step {} (t = {:.6g} s). The time step is too long for the forces at work; use "
-          "'timestep: auto' or a shorter step",
-          i, model.objects[model.node_object[i]].name, state.step, state.time));
-    }
+bool diverged(const Model& model, const State& state, Index i) {
+  return !model.pinned(i) && !(state.x[i].allFinite() && state.v_half[i].allFinite());
+}
+
+[[noreturn]] void report_divergence(const Model& model, const State& state) {
+  Index i = 0;
+  while (!diverged(model, state, i)) {
+    ++i;
   }
+  throw RuntimeError(fmt::format(
+      "the simulation diverged: node {} of object '{}' has a non-finite position or velocity "
+      "at step {} (t = {:.6g} s). The time step is too long for the forces at work; use "
+      "'timestep: auto' or a shorter step",
+      i, model.objects[model.node_object[i]].name, state.step, state.time));
 }
 
 void clear(std::vector<Vec3>& forces) {
@@ -137,13 +138,15 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
        {&model.bar_colours, &model.bend_colours, &model.torsion_colours}) {
     yielding = kind->any_yield ? std::max(yielding, kind->spring_count) : yielding;
   }
-  state.plastic_flow.assign(static_cast<std::size_t>(yielding), 0.0);
+  state.plastic_flow.assign(
+      static_cast<std::size_t>((yielding + kSpringBlockSize - 1) / kSpringBlockSize), 0.0);
   if (model.ground.enabled) {
     state.contact_anchor.assign(n, Vec3::Zero());
     state.contact_touching.assign(n, 0);
     state.contact_sliding.assign(n, 0);
   }
   prepare_tearing(model, state);
+  prepare_wind(model, state);
   place_driven_nodes(model, 0.0, state);
   settle_under_gravity(model, dt, switches, state);
   EnergyWorkspace& ledger = state.energy_workspace;
@@ -197,11 +200,16 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
     ledger.last = energy_report(model, state, v_whole);
     state.energy.add_works(step_work, 0.5);
   }
-  // 4. Positions to n + 1.
-  for_each_index(n, [&](Index i) { state.x[i] += dt * state.v_half[i]; });
+  // 4. Positions to n + 1, checked on the way.
+  const bool any_diverged = any_index(n, [&](Index i) {
+    state.x[i] += dt * state.v_half[i];
+    return diverged(model, state, i);
+  });
   state.step += 1;
   state.time = static_cast<double>(state.step) * dt;
-  check_finite(model, state);
+  if (any_diverged) {
+    report_divergence(model, state);
+  }
 }
 
 }  // namespace dinam

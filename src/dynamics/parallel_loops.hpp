@@ -32,6 +32,47 @@ void for_each_index(Index count, const Body& body) {
   }
 }
 
+// Whether body(i) is true for any i in [0, count), body(i) run for every i (each writing only
+// data of its own): a logical OR, so the answer does not depend on the threads either.
+template <class Body>
+bool any_index(Index count, const Body& body) {
+  bool any = false;
+  if (count < kMinParallelItems) {
+    for (Index i = 0; i < count; ++i) {
+      any = body(i) || any;
+    }
+    return any;
+  }
+#pragma omp parallel for schedule(static) reduction(|| : any)
+  for (Index i = 0; i < count; ++i) {
+    any = body(i) || any;
+  }
+  return any;
+}
+
+// body(first, size) for the blocks [first, first + size) of at most `block_size` items that
+// cover [0, count), each block writing only data of its own: for loops that gather a block of
+// items, compute it in SIMD lanes and store it (the wind's nodes and faces, the ground's nodes).
+// The blocks do not depend on the thread count, so neither does anything computed in them.
+template <class Body>
+void for_each_block(Index count, Index block_size, const Body& body) {
+  const Index blocks = (count + block_size - 1) / block_size;
+  auto run_block = [&](Index b) {
+    const Index first = b * block_size;
+    body(first, std::min(block_size, count - first));
+  };
+  if (count < kMinParallelItems) {
+    for (Index b = 0; b < blocks; ++b) {
+      run_block(b);
+    }
+    return;
+  }
+#pragma omp parallel for schedule(static)
+  for (Index b = 0; b < blocks; ++b) {
+    run_block(b);
+  }
+}
+
 // body(first, count) for every block of springs (model/spring_colouring.hpp), the springs
 // [first, first + count) in one call, colour after colour; the blocks of a colour in parallel.
 // A kind with fewer springs than kMinParallelItems runs on the calling thread, in the same order.

@@ -115,14 +115,18 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
         force[spring_nodes[kNodes * k + j]] += block.node_force(j, k);
       }
     }
-    if (may_yield) {
+    if (may_yield && context.update_history) {
+      // The new plastic sets, and the flow's work summed in four interleaved partial sums (a
+      // fixed order, which the compiler may keep in one vector register).
+      double* plastic_set = &springs.plastic_set[first];
+      double partial[4] = {0.0, 0.0, 0.0, 0.0};
       for (Index k = 0; k < count; ++k) {
-        if (broken != nullptr && broken[k] != 0) {
-          continue;
-        }
-        context.record_plastic_flow(first + k, springs.plastic_set[first + k],
-                                    block.new_plastic_set[k], block.dissipated[k]);
+        const bool acts = broken == nullptr || broken[k] == 0;
+        plastic_set[k] = acts ? block.new_plastic_set[k] : plastic_set[k];
+        partial[k & 3] += acts ? block.dissipated[k] : 0.0;
       }
+      context.record_plastic_flow(first / kSpringBlockSize,
+                                  (partial[0] + partial[1]) + (partial[2] + partial[3]));
     }
   });
   context.book_plastic_flow(springs.colouring);

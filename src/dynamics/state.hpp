@@ -71,6 +71,13 @@ struct SettleOutcome {
   int restarts = 0;       // kinetic-energy peaks, each a restart from rest
 };
 
+// The wind's scratch (empty without wind): the wind at each node where it is turbulent, and the
+// drag on each face and bar it blows on, before the nodes gather them.
+struct WindWorkspace {
+  std::vector<Vec3> node_wind;   // (n_nodes when turbulent) m/s, at t_n
+  std::vector<Vec3> item_force;  // (n_wind_faces + n_wind_bars) N, on each of the item's nodes
+};
+
 // Leapfrog state at step n: positions at whole steps, velocities at half steps.
 struct State {
   double time = 0.0;         // s, t_n
@@ -90,8 +97,9 @@ struct State {
   std::vector<std::uint8_t> clamp_broken;    // (n_clamps)
   std::vector<std::uint8_t> face_broken;     // (n_faces) faces with a broken edge
   std::vector<Index> broken_bars;            // in the order they broke
-  std::vector<double>
-      plastic_flow;  // (most springs of a kind that yields) J, scratch: each one's last flow
+  // (most blocks of springs of a kind that yields) J, scratch: the work each block's plastic
+  // flow dissipated in the last step (spring_block.hpp).
+  std::vector<double> plastic_flow;
 
   // Ground contact history (empty without a ground): where each node's stick spring is anchored
   // on the plane, and whether it is sliding (kinetic friction) or sticking (static).
@@ -99,6 +107,7 @@ struct State {
   std::vector<std::uint8_t> contact_touching;  // (n_nodes) 1 while below the plane
   std::vector<std::uint8_t> contact_sliding;   // (n_nodes) 1 while sliding
 
+  WindWorkspace wind;
   // Contact between objects (empty unless the model has it).
   ObjectContactWorkspace object_contact;
   EnergyAccounts energy;

@@ -1,95 +1,178 @@
 #include "dynamics/wind.hpp"
 
 #include <cmath>
-#include <numbers>
-#include <random>
 
+#include "dynamics/parallel_loops.hpp"
+#include "dynamics/wind_field.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
 namespace {
 
-constexpr int kTurbulenceWaves = 4;  // per component
+// Faces, bars and nodes go through the loops below in blocks of this many: each block is gathered
+// into arrays by coordinate, computed one item per SIMD lane without branches, then stored.
+constexpr Index kWindBlock = 64;
 
-struct TurbulenceWave {
-  Vec3 wavenumber;  // rad/m
-  double phase;     // rad
+// A block of faces or bars, gathered: three vectors per item, each by coordinate, indexed by
+// the enum (what the compiler vectorises, where references to the arrays it would not).
+struct DragBlock {
+  enum Vector {
+    kShape,     // a face's Newell area vector, a bar's x1 − x0, m² or m
+    kVelocity,  // the mean velocity of its nodes, m/s
+    kWind,      // the wind it feels, m/s
+    kForce,     // N, on each of its nodes (the output)
+  };
+  double vectors[4][3][kWindBlock];  // for a face, kVelocity and (turbulent) kWind hold sums
+  double size[kWindBlock];           // a face's node count; a bar's diameter, m
+  double acts[kWindBlock];           // 1, or 0 for a torn face or bar
+
+  Vec3 get(Vector which, Index k) const {
+    return {vectors[which][0][k], vectors[which][1][k], vectors[which][2][k]};
+  }
+  void set(Vector which, Index k, const Vec3& value) {
+    vectors[which][0][k] = value.x();
+    vectors[which][1][k] = value.y();
+    vectors[which][2][k] = value.z();
+  }
 };
 
-// The waves of a seed, made once per seed: the noise must be the same at every call.
-const std::vector<TurbulenceWave>& turbulence_waves(std::uint32_t seed, double scale) {
-  thread_local std::uint32_t cached_seed = 0;
-  thread_local double cached_scale = 0.0;
-  thread_local std::vector<TurbulenceWave> waves;
-  if (waves.empty() || cached_seed != seed || cached_scale != scale) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> unit(-1.0, 1.0);
-    std::uniform_real_distribution<double> spread(0.5, 1.5);
-    waves.clear();
-    for (int k = 0; k < 3 * kTurbulenceWaves; ++k) {
-      Vec3 direction(unit(rng), unit(rng), unit(rng));
-      direction.normalize();
-      const double magnitude = 2.0 * std::numbers::pi / scale * spread(rng);
-      waves.push_back({magnitude * direction, std::numbers::pi * unit(rng)});
+bool torn(const std::vector<std::uint8_t>& broken, Index item) {
+  return !broken.empty() && broken[item] != 0;
+}
+
+// The wind at every node in the wind, when it is turbulent (uniform otherwise: no node needs it).
+void evaluate_node_winds(const WindLoad& wind, const Vec3& uniform, State& state) {
+  const TurbulencePhases phases = turbulence_phases(wind, state.time);
+  const Index count = static_cast<Index>(wind.nodes.size());
+  for_each_block(count, kWindBlock, [&](Index first, Index size) {
+    double x[3][kWindBlock] = {};  // (zeroed: the compiler cannot see that size > 0)
+    double u[3][kWindBlock];
+    for (Index k = 0; k < size; ++k) {
+      const Vec3& p = state.x[wind.nodes[first + k]];
+      x[0][k] = p.x();
+      x[1][k] = p.y();
+      x[2][k] = p.z();
     }
-    cached_seed = seed;
-    cached_scale = scale;
+    wind_at_points(wind, phases, uniform, x[0], x[1], x[2], size, u[0], u[1], u[2]);
+    for (Index k = 0; k < size; ++k) {
+      state.wind.node_wind[wind.nodes[first + k]] = Vec3(u[0][k], u[1][k], u[2][k]);
+    }
+  });
+}
+
+// The drag on each face (shared by its nodes) or bar (half to each end) of a block, one item per
+// SIMD lane. As with the springs (spring_block.hpp), `drag` must be a lambda without captures, or
+// the loop will not vectorise. GCC vectorises it by itself; `omp simd` would keep it from doing so
+// (the Vec3 temporaries, passed by reference, would become per-lane arrays in memory).
+template <class Drag>
+void compute_drag(DragBlock& block, Index size, const WindDesc& field, double drag_coefficient,
+                  const Drag& drag) {
+  const double air_density = field.air_density;
+  const bool turbulent = field.turbulence != 0.0;
+  for (Index k = 0; k < size; ++k) {
+    const Vec3 force = drag(block, k, air_density, drag_coefficient, turbulent);
+    const bool acts = block.acts[k] != 0.0;
+    block.vectors[DragBlock::kForce][0][k] = acts ? force.x() : 0.0;
+    block.vectors[DragBlock::kForce][1][k] = acts ? force.y() : 0.0;
+    block.vectors[DragBlock::kForce][2][k] = acts ? force.z() : 0.0;
   }
-  return waves;
+}
+
+void store_forces(const DragBlock& block, Index size, Vec3* out) {
+  for (Index k = 0; k < size; ++k) {
+    out[k] = block.get(DragBlock::kForce, k);
+  }
+}
+
+void face_forces(const Model& model, const Vec3& uniform, State& state) {
+  const WindLoad& wind = model.wind;
+  const bool turbulent = wind.field.turbulence != 0.0;
+  const Index count = static_cast<Index>(wind.faces.size());
+  for_each_block(count, kWindBlock, [&](Index first, Index size) {
+    DragBlock block;
+    for (Index k = 0; k < size; ++k) {
+      const Index f = wind.faces[first + k];
+      const Index begin = model.face_offsets[f];
+      const Index end = model.face_offsets[f + 1];
+      const double nodes = end - begin;
+      // Newell's area vector ½ Σ x_k × x_{k+1} is exact for planar polygons and the best plane
+      // for warped ones; its length is the area.
+      Vec3 area_vector = Vec3::Zero();
+      Vec3 velocity = Vec3::Zero();
+      Vec3 felt = Vec3::Zero();
+      for (Index j = begin; j < end; ++j) {
+        const Index node = model.face_nodes[j];
+        const Index next = model.face_nodes[j + 1 < end ? j + 1 : begin];
+        area_vector += 0.5 * state.x[node].cross(state.x[next]);
+        velocity += state.v_half[node];
+        if (turbulent) {
+          felt += state.wind.node_wind[node];
+        }
+      }
+      // The sums: the means are taken in the SIMD loop, where the divisions cost less.
+      block.set(DragBlock::kShape, k, area_vector);
+      block.set(DragBlock::kVelocity, k, velocity);
+      block.set(DragBlock::kWind, k, turbulent ? felt : uniform);
+      block.size[k] = nodes;
+      block.acts[k] = torn(state.face_broken, f) ? 0.0 : 1.0;  // torn open: the wind passes
+    }
+    compute_drag(
+        block, size, wind.field, wind.field.face_drag,
+        [](const DragBlock& faces, Index k, double rho, double drag, bool is_turbulent)
+            __attribute__((always_inline)) {
+              const double nodes = faces.size[k];
+              const Vec3 velocity = faces.get(DragBlock::kVelocity, k) / nodes;
+              const Vec3 wind_sum = faces.get(DragBlock::kWind, k);
+              const Vec3 felt = is_turbulent ? Vec3(wind_sum / nodes) : wind_sum;
+              return Vec3(face_drag(faces.get(DragBlock::kShape, k), felt - velocity, rho, drag) /
+                          nodes);
+            });
+    store_forces(block, size, &state.wind.item_force[first]);
+  });
+}
+
+void bar_forces(const Model& model, const Vec3& uniform, State& state) {
+  const WindLoad& wind = model.wind;
+  const bool turbulent = wind.field.turbulence != 0.0;
+  const Index count = static_cast<Index>(wind.bars.size());
+  Vec3* out = &state.wind.item_force[wind.faces.size()];
+  for_each_block(count, kWindBlock, [&](Index first, Index size) {
+    DragBlock block;
+    for (Index k = 0; k < size; ++k) {
+      const Index b = wind.bars[first + k];
+      const Index n0 = model.bar_nodes[2 * b];
+      const Index n1 = model.bar_nodes[2 * b + 1];
+      block.set(DragBlock::kShape, k, state.x[n1] - state.x[n0]);
+      block.set(DragBlock::kVelocity, k, 0.5 * (state.v_half[n0] + state.v_half[n1]));
+      block.set(
+          DragBlock::kWind, k,
+          turbulent ? Vec3(0.5 * (state.wind.node_wind[n0] + state.wind.node_wind[n1])) : uniform);
+      block.size[k] = 2.0 * model.bar_radius[b];
+      block.acts[k] = torn(state.bar_broken, b) ? 0.0 : 1.0;
+    }
+    compute_drag(
+        block, size, wind.field, wind.field.bar_drag,
+        [](const DragBlock& bars, Index k, double rho, double drag,
+           bool) __attribute__((always_inline)) {
+          const Vec3 relative = bars.get(DragBlock::kWind, k) - bars.get(DragBlock::kVelocity, k);
+          return Vec3(0.5 *
+                      bar_drag(bars.get(DragBlock::kShape, k), bars.size[k], relative, rho, drag));
+        });
+    store_forces(block, size, &out[first]);
+  });
 }
 
 }  // namespace
 
-Vec3 wind_velocity(const WindDesc& wind, const Vec3& x, double t) {
-  Vec3 velocity = wind.velocity;
-  const double mean_speed = wind.velocity.norm();
-  if (wind.gust_amplitude != 0.0 && mean_speed > 0.0) {
-    velocity += (wind.gust_amplitude * std::sin(2.0 * std::numbers::pi * t / wind.gust_period) /
-                 mean_speed) *
-                wind.velocity;
+void prepare_wind(const Model& model, State& state) {
+  const WindLoad& wind = model.wind;
+  if (!wind.field.enabled) {
+    return;
   }
-  if (wind.turbulence != 0.0) {
-    // Frozen turbulence carried by the mean flow: each wave is a function of x − w̄ t. A sum of
-    // K unit sines has RMS √(K/2); the amplitude is scaled so the RMS per component matches.
-    const std::vector<TurbulenceWave>& waves = turbulence_waves(wind.seed, wind.turbulence_scale);
-    const Vec3 carried = x - t * wind.velocity;
-    const double scale = wind.turbulence / std::sqrt(0.5 * kTurbulenceWaves);
-    for (int c = 0; c < 3; ++c) {
-      double sum = 0.0;
-      for (int k = 0; k < kTurbulenceWaves; ++k) {
-        const TurbulenceWave& wave =
-            waves[static_cast<std::size_t>(c) * kTurbulenceWaves + static_cast<std::size_t>(k)];
-        // A slow drift in time as well, so the noise lives even where the mean wind is calm.
-        sum += std::sin(wave.wavenumber.dot(carried) + wave.phase + 0.7 * t * (k + 1));
-      }
-      velocity[c] += scale * sum;
-    }
+  state.wind.item_force.assign(wind.faces.size() + wind.bars.size(), Vec3::Zero());
+  if (wind.field.turbulence != 0.0) {
+    state.wind.node_wind.assign(static_cast<std::size_t>(model.node_count()), Vec3::Zero());
   }
-  return velocity;
-}
-
-Vec3 face_drag(const Vec3& area_vector, const Vec3& relative_velocity, double air_density,
-               double drag_coefficient) {
-  const double area = area_vector.norm();
-  if (area <= 0.0) {
-    return Vec3::Zero();
-  }
-  const Vec3 normal = area_vector / area;
-  const double normal_speed = relative_velocity.dot(normal);
-  return (0.5 * air_density * drag_coefficient * area * normal_speed * std::abs(normal_speed)) *
-         normal;
-}
-
-Vec3 bar_drag(const Vec3& axis, double diameter, const Vec3& relative_velocity, double air_density,
-              double drag_coefficient) {
-  const double length = axis.norm();
-  if (length <= 0.0) {
-    return Vec3::Zero();
-  }
-  const Vec3 t = axis / length;
-  const Vec3 cross_flow = relative_velocity - relative_velocity.dot(t) * t;
-  return (0.5 * air_density * drag_coefficient * diameter * length * cross_flow.norm()) *
-         cross_flow;
 }
 
 void add_wind_forces(ForceContext& context) {
@@ -98,51 +181,21 @@ void add_wind_forces(ForceContext& context) {
   if (!wind.field.enabled) {
     return;
   }
-  const State& state = context.state;
-  const double rho = wind.field.air_density;
-  for (const Index f : wind.faces) {
-    if (!state.face_broken.empty() && state.face_broken[f] != 0) {
-      continue;  // torn open: the wind passes through
-    }
-    const Index begin = model.face_offsets[f];
-    const Index end = model.face_offsets[f + 1];
-    const double count = end - begin;
-    // Newell's area vector ½ Σ x_k × x_{k+1} is exact for planar polygons and the best plane
-    // for warped ones; its length is the area.
-    Vec3 area_vector = Vec3::Zero();
-    Vec3 centroid = Vec3::Zero();
-    Vec3 velocity = Vec3::Zero();
-    for (Index k = begin; k < end; ++k) {
-      const Index node = model.face_nodes[k];
-      const Index next = model.face_nodes[k + 1 < end ? k + 1 : begin];
-      area_vector += 0.5 * state.x[node].cross(state.x[next]);
-      centroid += state.x[node];
-      velocity += state.v_half[node];
-    }
-    centroid /= count;
-    velocity /= count;
-    const Vec3 force =
-        face_drag(area_vector, wind_velocity(wind.field, centroid, state.time) - velocity, rho,
-                  wind.field.face_drag) /
-        count;
-    for (Index k = begin; k < end; ++k) {
-      context.add(model.face_nodes[k], force);
-    }
+  State& state = context.state;
+  const Vec3 uniform = uniform_wind_velocity(wind.field, state.time);
+  if (wind.field.turbulence != 0.0) {
+    evaluate_node_winds(wind, uniform, state);
   }
-  for (const Index b : wind.bars) {
-    if (!state.bar_broken.empty() && state.bar_broken[b] != 0) {
-      continue;
+  face_forces(model, uniform, state);
+  bar_forces(model, uniform, state);
+  // Each node adds its faces' drag, then its bars', in ascending order (WindLoad::node_items).
+  const std::vector<Vec3>& item_force = state.wind.item_force;
+  for_each_index(static_cast<Index>(wind.nodes.size()), [&](Index k) {
+    const Index node = wind.nodes[k];
+    for (Index j = wind.node_item_offsets[k]; j < wind.node_item_offsets[k + 1]; ++j) {
+      context.add(node, item_force[wind.node_items[j]]);
     }
-    const Index n0 = model.bar_nodes[2 * b];
-    const Index n1 = model.bar_nodes[2 * b + 1];
-    const Vec3 middle = 0.5 * (state.x[n0] + state.x[n1]);
-    const Vec3 velocity = 0.5 * (state.v_half[n0] + state.v_half[n1]);
-    const Vec3 force = 0.5 * bar_drag(state.x[n1] - state.x[n0], 2.0 * model.bar_radius[b],
-                                      wind_velocity(wind.field, middle, state.time) - velocity, rho,
-                                      wind.field.bar_drag);
-    context.add(n0, force);
-    context.add(n1, force);
-  }
+  });
 }
 
 }  // namespace dinam

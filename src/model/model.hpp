@@ -3,6 +3,7 @@
 // changes during a run lives in dynamics' State. Arrays are flat and indexed by element id; each
 // comment gives the shape and the unit.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include "core/types.hpp"
 #include "model/mass_scaling.hpp"
 #include "model/spring_colouring.hpp"
+#include "model/wind_load.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
@@ -104,11 +106,20 @@ struct ObjectContact {
   double kinetic_friction = 0.4;  // μk
 };
 
-// Wind as the dynamics sees it: the field's parameters and what it drags on.
+// Wind as the dynamics sees it: the field's parameters and what it drags on (wind_load.hpp).
 struct WindLoad {
   WindDesc field;
-  std::vector<Index> faces;  // (n_wind_faces) face ids that feel pressure drag
+  std::array<TurbulenceWave, 3 * kTurbulenceWaves> waves{};  // when field.turbulence ≠ 0
+  std::vector<Index> faces;  // (n_wind_faces) face ids that feel pressure drag, ascending
   std::vector<Index> bars;   // (n_wind_bars) bars on no such face, which feel cross-flow drag
+  // The nodes of those faces and bars, ascending, and at each the drag items that act on it:
+  // node_items[node_item_offsets[k] .. node_item_offsets[k + 1]) are the positions in `faces`
+  // (s) and in `bars` (faces.size() + s) of node k's faces, then its bars, each ascending. A
+  // node adds its items' forces in that order, which is the order in which a serial loop over the
+  // faces and then the bars would add them, whatever the thread count.
+  std::vector<Index> nodes;              // (n_wind_nodes)
+  std::vector<Index> node_item_offsets;  // (n_wind_nodes + 1)
+  std::vector<Index> node_items;         // (Σ nodes per face + 2 n_wind_bars)
 };
 
 struct Model {

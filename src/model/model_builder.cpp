@@ -12,6 +12,7 @@
 #include "model/model.hpp"
 #include "model/spring_builders.hpp"
 #include "model/vertex_welding.hpp"
+#include "model/wind_load.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
@@ -349,29 +350,6 @@ void add_fields(const SceneDescription& scene, const std::vector<ObjectNodes>& o
   }
 }
 
-void add_wind(const SceneDescription& scene, Model& model) {
-  model.wind.field = scene.wind;
-  if (!scene.wind.enabled) {
-    return;
-  }
-  auto feels_wind = [&](Index object) {
-    const auto& names = scene.wind.objects;
-    return names.empty() ||
-           std::find(names.begin(), names.end(), model.objects[object].name) != names.end();
-  };
-  // Faces take pressure drag; a bar on no face is a bare wire and takes cross-flow drag.
-  for (Index f = 0; f < model.face_count(); ++f) {
-    if (feels_wind(model.node_object[model.face_nodes[model.face_offsets[f]]])) {
-      model.wind.faces.push_back(f);
-    }
-  }
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    if (model.bar_on_face[b] == 0 && feels_wind(model.node_object[model.bar_nodes[2 * b]])) {
-      model.wind.bars.push_back(b);
-    }
-  }
-}
-
 void add_ground(const SceneDescription& scene, Model& model) {
   const GroundDesc& desc = scene.ground;
   GroundContact& ground = model.ground;
@@ -411,6 +389,7 @@ void release_spare_capacity(Model& model) {
   shrink(model.torsion_nodes, model.torsion_rest_angle, model.torsion_stiffness,
          model.torsion_yield_moment);
   shrink(model.face_offsets, model.face_nodes, model.wind.faces, model.wind.bars);
+  shrink(model.wind.nodes, model.wind.node_item_offsets, model.wind.node_items);
 }
 
 // The springs alone may vibrate at most this ω² for the finished model's limit, with the ground's

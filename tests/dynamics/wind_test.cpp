@@ -1,5 +1,6 @@
 // Aerodynamic drag against the closed-form motion of a body carried off by a steady wind.
 #include "dynamics/wind.hpp"
+#include "dynamics/wind_field.hpp"
 
 #include <gtest/gtest.h>
 
