@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/geometry.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/wind_field.hpp"
 #include "model/model.hpp"
@@ -84,6 +85,23 @@ void store_forces(const DragBlock& block, Index size, Vec3* out) {
   }
 }
 
+// The area vector of the face whose nodes are face_nodes[begin, end): its length is the area.
+// A triangle's is ½ (x1 − x0) × (x2 − x0); a polygon's, Newell's ½ Σ x_k × x_{k+1}, exact for
+// planar polygons and the best plane for warped ones.
+Vec3 face_area_vector(const Model& model, const std::vector<Vec3>& x, Index begin, Index end) {
+  const Index* ids = &model.face_nodes[begin];
+  if (end - begin == 3) {
+    const Vec3& origin = x[ids[0]];
+    return 0.5 * cross3(x[ids[1]] - origin, x[ids[2]] - origin);
+  }
+  Vec3 area_vector = Vec3::Zero();
+  for (Index j = 0; j < end - begin; ++j) {
+    const Index next = j + 1 < end - begin ? j + 1 : 0;
+    area_vector += 0.5 * cross3(x[ids[j]], x[ids[next]]);
+  }
+  return area_vector;
+}
+
 void face_forces(const Model& model, const Vec3& uniform, State& state) {
   const WindLoad& wind = model.wind;
   const bool turbulent = wind.field.turbulence != 0.0;
@@ -95,21 +113,18 @@ void face_forces(const Model& model, const Vec3& uniform, State& state) {
       const Index begin = model.face_offsets[f];
       const Index end = model.face_offsets[f + 1];
       const double nodes = end - begin;
-      // Newell's area vector ½ Σ x_k × x_{k+1} is exact for planar polygons and the best plane
-      // for warped ones; its length is the area.
-      Vec3 area_vector = Vec3::Zero();
       Vec3 velocity = Vec3::Zero();
       Vec3 felt = Vec3::Zero();
       for (Index j = begin; j < end; ++j) {
-        const Index node = model.face_nodes[j];
-        const Index next = model.face_nodes[j + 1 < end ? j + 1 : begin];
-        area_vector += 0.5 * state.x[node].cross(state.x[next]);
-        velocity += state.v_half[node];
-        if (turbulent) {
-          felt += state.wind.node_wind[node];
+        velocity += state.v_half[model.face_nodes[j]];
+      }
+      if (turbulent) {
+        for (Index j = begin; j < end; ++j) {
+          felt += state.wind.node_wind[model.face_nodes[j]];
         }
       }
-      // The sums: the means are taken in the SIMD loop, where the divisions cost less.
+      const Vec3 area_vector = face_area_vector(model, state.x, begin, end);
+      // The sums: the means are taken in the SIMD loop.
       block.set(DragBlock::kShape, k, area_vector);
       block.set(DragBlock::kVelocity, k, velocity);
       block.set(DragBlock::kWind, k, turbulent ? felt : uniform);
@@ -120,12 +135,12 @@ void face_forces(const Model& model, const Vec3& uniform, State& state) {
         block, size, wind.field, wind.field.face_drag,
         [](const DragBlock& faces, Index k, double rho, double drag, bool is_turbulent)
             __attribute__((always_inline)) {
-              const double nodes = faces.size[k];
-              const Vec3 velocity = faces.get(DragBlock::kVelocity, k) / nodes;
+              const double share = 1.0 / faces.size[k];  // of each node
+              const Vec3 velocity = share * faces.get(DragBlock::kVelocity, k);
               const Vec3 wind_sum = faces.get(DragBlock::kWind, k);
-              const Vec3 felt = is_turbulent ? Vec3(wind_sum / nodes) : wind_sum;
-              return Vec3(face_drag(faces.get(DragBlock::kShape, k), felt - velocity, rho, drag) /
-                          nodes);
+              const Vec3 felt = is_turbulent ? Vec3(share * wind_sum) : wind_sum;
+              return Vec3(share *
+                          face_drag(faces.get(DragBlock::kShape, k), felt - velocity, rho, drag));
             });
     store_forces(block, size, &state.wind.item_force[first]);
   });

@@ -16,7 +16,7 @@ namespace dinam {
 [[gnu::always_inline]] inline Vec3 face_drag(const Vec3& area_vector, const Vec3& relative_velocity,
                                              double air_density, double drag_coefficient) {
   const double area = norm3(area_vector);
-  const Vec3 normal = area_vector / (area > 0.0 ? area : 1.0);
+  const Vec3 normal = (1.0 / (area > 0.0 ? area : 1.0)) * area_vector;  // one division, not three
   const double normal_speed = dot3(relative_velocity, normal);
   return (0.5 * air_density * drag_coefficient * area * normal_speed * std::abs(normal_speed)) *
          normal;
@@ -28,7 +28,7 @@ namespace dinam {
                                             const Vec3& relative_velocity, double air_density,
                                             double drag_coefficient) {
   const double length = norm3(axis);
-  const Vec3 t = axis / (length > 0.0 ? length : 1.0);
+  const Vec3 t = (1.0 / (length > 0.0 ? length : 1.0)) * axis;
   const Vec3 cross_flow = relative_velocity - dot3(relative_velocity, t) * t;
   return (0.5 * air_density * drag_coefficient * diameter * length * norm3(cross_flow)) *
          cross_flow;
