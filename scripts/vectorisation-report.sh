@@ -4,7 +4,7 @@
 #   scripts/vectorisation-report.sh [build-folder]
 # Each kind of spring should show two vectorised compute loops (elastic, and yielding), at the
 # build's widest vectors (32 bytes with x86-64-v3; 16 with the x86-64 baseline), each with its
-# narrower epilogue; axial_spring.cpp also its damper loop. wind.cpp shows the drag loop
+# narrower epilogue. wind.cpp shows the drag loop
 # (compute_drag, for faces and bars) and the loop that stores the forces; wind_field.cpp the
 # turbulence's loop over points; ground_contact.cpp the loop over touching nodes.
 set -euo pipefail

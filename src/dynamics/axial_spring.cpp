@@ -35,34 +35,16 @@ void add_axial_damper_forces(ForceContext& context) {
   if (!model.any_bar_damping) {
     return;
   }
-  const std::uint8_t* broken = broken_flags(state.bar_broken);
-  // Block by block as the springs (spring_block.hpp): gather both ends' positions and velocities,
-  // compute one damper per lane, add to the nodes in the colouring's order.
-  for_each_spring_block(model.bar_colours, [&](Index first, Index count) {
-    SpringBlock<2> positions;
-    SpringBlock<2> velocities;
-    const Index* ends = &model.bar_nodes[2 * static_cast<std::size_t>(first)];
-    for (Index k = 0; k < count; ++k) {
-      for (int j = 0; j < 2; ++j) {
-        positions.set_position(j, k, state.x[ends[2 * k + j]]);
-        velocities.set_position(j, k, state.v_half[ends[2 * k + j]]);
-      }
+  for_each_spring(model.bar_colours, [&](Index b) {
+    if (model.bar_damping[b] == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
+      return;
     }
-    const double* coefficient = &model.bar_damping[first];
-    for (Index k = 0; k < count; ++k) {
-      positions.set_force(0, k,
-                          axial_damper(positions.node_position(0, k), positions.node_position(1, k),
-                                       velocities.node_position(0, k),
-                                       velocities.node_position(1, k), coefficient[k]));
-    }
-    for (Index k = 0; k < count; ++k) {
-      if (coefficient[k] == 0.0 || (broken != nullptr && broken[first + k] != 0)) {
-        continue;
-      }
-      const Vec3 f0 = positions.node_force(0, k);
-      context.add(ends[2 * k], f0);
-      context.add(ends[2 * k + 1], -f0);
-    }
+    const Index n0 = model.bar_nodes[2 * b];
+    const Index n1 = model.bar_nodes[2 * b + 1];
+    const Vec3 f0 = axial_damper(state.x[n0], state.x[n1], state.v_half[n0], state.v_half[n1],
+                                 model.bar_damping[b]);
+    context.add(n0, f0);
+    context.add(n1, -f0);
   });
 }
 

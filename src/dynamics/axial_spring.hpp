@@ -33,13 +33,15 @@ struct AxialSpringResult {
   return {scale * d, r.energy, r.plastic_set, r.dissipated};
 }
 
-// The damper's force on n0: c ((v1 − v0)·n) n, pulling the ends' separation speed to zero; none
-// for a bar of zero length (d = 0). No branches: the damper loop vectorises.
-[[gnu::always_inline]] inline Vec3 axial_damper(const Vec3& x0, const Vec3& x1, const Vec3& v0,
-                                                const Vec3& v1, double coefficient) {
+// The damper's force on n0: c ((v1 − v0)·n) n, pulling the ends' separation speed to zero.
+inline Vec3 axial_damper(const Vec3& x0, const Vec3& x1, const Vec3& v0, const Vec3& v1,
+                         double coefficient) {
   const Vec3 d = x1 - x0;
   const double length_squared = d.squaredNorm();
-  return (coefficient * (v1 - v0).dot(d) / (length_squared > 0.0 ? length_squared : 1.0)) * d;
+  if (length_squared <= 0.0) {
+    return Vec3::Zero();
+  }
+  return (coefficient * (v1 - v0).dot(d) / length_squared) * d;
 }
 
 // Adds every bar's spring force; updates the plastic sets when the context allows.

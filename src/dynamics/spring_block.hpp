@@ -50,11 +50,6 @@ struct SpringBlock {
   Vec3 node_position(int node, Index k) const {
     return {position[node][0][k], position[node][1][k], position[node][2][k]};
   }
-  void set_position(int node, Index k, const Vec3& p) {
-    position[node][0][k] = p.x();
-    position[node][1][k] = p.y();
-    position[node][2][k] = p.z();
-  }
   void set_force(int node, Index k, const Vec3& f) {
     force[node][0][k] = f.x();
     force[node][1][k] = f.y();
@@ -104,7 +99,10 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
     SpringBlock<kNodes> block;
     for (Index k = 0; k < count; ++k) {
       for (int j = 0; j < kNodes; ++j) {
-        block.set_position(j, k, x[spring_nodes[kNodes * k + j]]);
+        const Vec3& p = x[spring_nodes[kNodes * k + j]];
+        block.position[j][0][k] = p.x();
+        block.position[j][1][k] = p.y();
+        block.position[j][2][k] = p.z();
       }
     }
     compute_spring_block(block, springs, first, count, kernel);
