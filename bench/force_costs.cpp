@@ -3,7 +3,8 @@
 // it all:
 //   cmake --build build --target bench_force_costs && build/bench/bench_force_costs
 // With the path of a dinam program (build/bench/bench_force_costs build/dinam) it also times
-// whole renders of windy cloths (report_whole_renders). Each figure is the median of 7 batches of
+// whole renders of windy cloths (report_whole_renders); --only=TEXT measures only the kinds whose
+// name holds TEXT. Each figure is the median of 7 batches of
 // calls (each batch at least 20 ms), in nanoseconds per item (the item each kind loops over: a
 // spring, a node, a face or a bar in the wind), and as a ratio to the axial springs' cost per bar
 // on the same thread count.
@@ -222,6 +223,18 @@ void report_whole_renders(const std::string& program) {
 
 int main(int argc, char** argv) {
   using namespace dinam;
+  // --only=TEXT measures only the kinds whose name holds TEXT (for a profiler); a further
+  // argument is the dinam program for the whole renders.
+  std::string only;
+  std::string program;
+  for (int a = 1; a < argc; ++a) {
+    const std::string argument = argv[a];
+    if (argument.rfind("--only=", 0) == 0) {
+      only = argument.substr(7);
+    } else {
+      program = argument;
+    }
+  }
   fmt::print("dinam force-cost benchmark: the large flag, OpenMP max threads {}\n\n",
              omp_get_max_threads());
   Loaded elastic(flag_scene(kSteadyWind), 50);
@@ -245,6 +258,9 @@ int main(int argc, char** argv) {
   std::vector<Row> rows;
   auto measure = [&](const std::string& kind, const std::string& item, Index items,
                      const std::function<double()>& seconds) {
+    if (kind.find(only) == std::string::npos && kind != "axial springs") {
+      return;  // (the axial springs always: every ratio is to them)
+    }
     Row row{kind, item, items, {0.0, 0.0}};
     for (const int threads : {1, 2}) {
       omp_set_num_threads(threads);
@@ -309,11 +325,11 @@ int main(int argc, char** argv) {
                row.ns_per_item[0], row.ns_per_item[0] / axial.ns_per_item[0], row.ns_per_item[1],
                row.ns_per_item[1] / axial.ns_per_item[1]);
   }
-  if (argc > 1) {  // the whole renders, with the dinam program given
+  if (!program.empty()) {  // the whole renders, with the dinam program given
     omp_set_num_threads(2);
     fmt::print("\n| `dinam render`, 2 threads | wall time |\n|---|---|\n");
     std::fflush(stdout);
-    report_whole_renders(argv[1]);
+    report_whole_renders(program);
   }
   return 0;
 }

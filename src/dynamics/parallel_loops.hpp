@@ -15,12 +15,13 @@ namespace dinam {
 // costs more than they save (a few microseconds per loop with libgomp).
 inline constexpr Index kMinParallelItems = 4096;
 
-// body(i) for i in [0, count), each i writing only data of its own.
+// body(i) for i in [0, count), each i writing only data of its own: shared between the threads
+// when `parallel`, on the calling thread otherwise.
 // (Short loops never enter the OpenMP runtime at all: even a parallel region that the `if`
 // clause turns off costs about a microsecond, which a small model's step cannot afford.)
 template <class Body>
-void for_each_index(Index count, const Body& body) {
-  if (count < kMinParallelItems) {
+void for_each_index_if(Index count, bool parallel, const Body& body) {
+  if (!parallel) {
     for (Index i = 0; i < count; ++i) {
       body(i);
     }
@@ -30,6 +31,12 @@ void for_each_index(Index count, const Body& body) {
   for (Index i = 0; i < count; ++i) {
     body(i);
   }
+}
+
+// body(i) for i in [0, count), each i writing only data of its own.
+template <class Body>
+void for_each_index(Index count, const Body& body) {
+  for_each_index_if(count, count >= kMinParallelItems, body);
 }
 
 // Whether body(i) is true for any i in [0, count), body(i) run for every i (each writing only
@@ -57,20 +64,10 @@ bool any_index(Index count, const Body& body) {
 template <class Body>
 void for_each_block(Index count, Index block_size, const Body& body) {
   const Index blocks = (count + block_size - 1) / block_size;
-  auto run_block = [&](Index b) {
+  for_each_index_if(blocks, count >= kMinParallelItems, [&](Index b) {
     const Index first = b * block_size;
     body(first, std::min(block_size, count - first));
-  };
-  if (count < kMinParallelItems) {
-    for (Index b = 0; b < blocks; ++b) {
-      run_block(b);
-    }
-    return;
-  }
-#pragma omp parallel for schedule(static)
-  for (Index b = 0; b < blocks; ++b) {
-    run_block(b);
-  }
+  });
 }
 
 // body(first, count) for every block of springs (model/spring_colouring.hpp), the springs
