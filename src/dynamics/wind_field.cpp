@@ -49,7 +49,7 @@ Vec3 wind_at(const WindLoad& wind, const TurbulencePhases& phases, const Vec3& u
   for (int c = 0; c < 3; ++c) {
     double sum = 0.0;
     for (int k = 0; k < kTurbulenceWaves; ++k) {
-      const auto i = static_cast<std::size_t>(c * kTurbulenceWaves + k);
+      const std::size_t i = static_cast<std::size_t>(c) * kTurbulenceWaves + k;
       sum += fast_sin(dot3(wind.waves[i].wavenumber, x) + phases[i]);
     }
     velocity[c] = uniform[c] + amplitude * sum;

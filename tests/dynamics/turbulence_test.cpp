@@ -148,6 +148,7 @@ TEST(Turbulence, IsCarriedAlongByTheMeanWind) {
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> place(-20.0, 20.0);
   std::vector<Vec3> places;
+  places.reserve(4000);
   for (int i = 0; i < 4000; ++i) {
     places.emplace_back(place(rng), place(rng), place(rng));
   }
