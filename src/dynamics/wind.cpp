@@ -150,7 +150,7 @@ void bar_forces(const Model& model, const Vec3& uniform, State& state) {
   const WindLoad& wind = model.wind;
   const bool turbulent = wind.field.turbulence != 0.0;
   const Index count = static_cast<Index>(wind.bars.size());
-  Vec3* out = &state.wind.item_force[wind.faces.size()];
+  Vec3* out = state.wind.item_force.data() + wind.faces.size();  // the bars follow the faces
   for_each_block(count, kWindBlock, [&](Index first, Index size) {
     DragBlock block;
     for (Index k = 0; k < size; ++k) {
