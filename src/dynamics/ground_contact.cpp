@@ -1,6 +1,7 @@
 #include "dynamics/ground_contact.hpp"
 
 #include "dynamics/parallel_loops.hpp"
+#include "dynamics/vector_lanes.hpp"
 
 namespace dinam {
 
@@ -13,27 +14,18 @@ constexpr Index kGroundBlock = 64;
 struct GroundBlock {
   // Inputs: each touching node's position, velocity, stick anchor (kept, or the foot of a new
   // touch), whether it slid last step (1 or 0), and its penalty's stiffness and damping.
-  double x[3][kGroundBlock];
-  double v[3][kGroundBlock];
-  double anchor[3][kGroundBlock];
+  Vec3Lanes<kGroundBlock> x;
+  Vec3Lanes<kGroundBlock> v;
+  Vec3Lanes<kGroundBlock> anchor;
   double sliding[kGroundBlock];
   double stiffness[kGroundBlock];
   double damping[kGroundBlock];
   // Outputs: ContactForces, by coordinate.
-  double elastic[3][kGroundBlock];
-  double normal_damping[3][kGroundBlock];
-  double friction[3][kGroundBlock];
-  double new_anchor[3][kGroundBlock];
+  Vec3Lanes<kGroundBlock> elastic;
+  Vec3Lanes<kGroundBlock> normal_damping;
+  Vec3Lanes<kGroundBlock> friction;
+  Vec3Lanes<kGroundBlock> new_anchor;
   double new_sliding[kGroundBlock];
-
-  static Vec3 get(const double (&array)[3][kGroundBlock], Index k) {
-    return {array[0][k], array[1][k], array[2][k]};
-  }
-  static void set(double (&array)[3][kGroundBlock], Index k, const Vec3& value) {
-    array[0][k] = value.x();
-    array[1][k] = value.y();
-    array[2][k] = value.z();
-  }
 };
 
 }  // namespace
@@ -46,15 +38,15 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     return;
   }
   State& state = context.state;
-  auto below = [&](Index i) {
-    return dot3(state.x[i] - ground.point, ground.normal) < 0.0 && !model.pinned(i);
-  };
   for_each_block(model.node_count(), kGroundBlock, [&](Index first, Index size) {
     // 1. Gather the nodes below the plane, packed; a block above it (the usual case) ends here.
     Index touching[kGroundBlock];
+    double distance[kGroundBlock];
     Index count = 0;
     for (Index i = first; i < first + size; ++i) {
-      if (below(i)) {
+      const double d = dot3(state.x[i] - ground.point, ground.normal);
+      if (d < 0.0 && !model.pinned(i)) {
+        distance[count] = d;
         touching[count++] = i;
       } else if (context.update_history) {
         state.contact_touching[i] = 0;
@@ -67,14 +59,12 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     GroundBlock block;
     for (Index k = 0; k < count; ++k) {
       const Index i = touching[k];
-      const double distance = dot3(state.x[i] - ground.point, ground.normal);
-      GroundBlock::set(block.x, k, state.x[i]);
-      GroundBlock::set(block.v, k, state.v_half[i]);
+      block.x.set(k, state.x[i]);
+      block.v.set(k, state.v_half[i]);
       // A node that has just touched is anchored at its foot on the plane.
-      GroundBlock::set(block.anchor, k,
-                       state.contact_touching[i] != 0
-                           ? state.contact_anchor[i]
-                           : Vec3(state.x[i] - distance * ground.normal));
+      block.anchor.set(k, state.contact_touching[i] != 0
+                              ? state.contact_anchor[i]
+                              : Vec3(state.x[i] - distance[k] * ground.normal));
       block.sliding[k] = state.contact_sliding[i] != 0 ? 1.0 : 0.0;
       block.stiffness[k] = ground.node_stiffness[i];
       block.damping[k] = ground.node_damping[i];
@@ -82,21 +72,21 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     // 2. The contact forces, one node per lane (vectorised by GCC without `omp simd`, which would
     //    put the Vec3 temporaries in per-lane arrays in memory and keep it from vectorising).
     for (Index k = 0; k < count; ++k) {
-      const ContactForces f = ground_contact(
-          ground, block.stiffness[k], block.damping[k], GroundBlock::get(block.x, k),
-          GroundBlock::get(block.v, k), GroundBlock::get(block.anchor, k), block.sliding[k] != 0.0);
-      GroundBlock::set(block.elastic, k, f.normal_elastic);
-      GroundBlock::set(block.normal_damping, k, f.normal_damping);
-      GroundBlock::set(block.friction, k, f.friction);
-      GroundBlock::set(block.new_anchor, k, f.anchor);
+      const ContactForces f =
+          ground_contact(ground, block.stiffness[k], block.damping[k], block.x.get(k),
+                         block.v.get(k), block.anchor.get(k), block.sliding[k] != 0.0);
+      block.elastic.set(k, f.normal_elastic);
+      block.normal_damping.set(k, f.normal_damping);
+      block.friction.set(k, f.friction);
+      block.new_anchor.set(k, f.anchor);
       block.new_sliding[k] = f.sliding ? 1.0 : 0.0;
     }
     // 3. The elastic push, the normal damping and the friction, in that order; the history.
     for (Index k = 0; k < count; ++k) {
       const Index i = touching[k];
-      const Vec3 damping = GroundBlock::get(block.normal_damping, k);
-      const Vec3 friction = GroundBlock::get(block.friction, k);
-      context.force[i] += GroundBlock::get(block.elastic, k);
+      const Vec3 damping = block.normal_damping.get(k);
+      const Vec3 friction = block.friction.get(k);
+      context.force[i] += block.elastic.get(k);
       context.force[i] += damping;
       context.force[i] += friction;
       if (damping_ledger != nullptr) {
@@ -105,7 +95,7 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
       }
       if (context.update_history) {
         state.contact_touching[i] = 1;
-        state.contact_anchor[i] = GroundBlock::get(block.new_anchor, k);
+        state.contact_anchor[i] = block.new_anchor.get(k);
         state.contact_sliding[i] = block.new_sliding[k] != 0.0 ? 1 : 0;
       }
     }

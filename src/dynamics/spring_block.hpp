@@ -16,6 +16,7 @@
 #include "core/types.hpp"
 #include "dynamics/force_context.hpp"
 #include "dynamics/parallel_loops.hpp"
+#include "dynamics/vector_lanes.hpp"
 
 namespace dinam {
 
@@ -38,26 +39,18 @@ inline const std::uint8_t* broken_flags(const std::vector<std::uint8_t>& flags) 
 
 template <int kNodes>
 struct SpringBlock {
-  // Inputs, gathered: position[j][axis][k] is the position of node j (in the spring's node
-  // order) of the block's spring k.
-  double position[kNodes][3][kSpringBlockSize];
+  // Inputs, gathered: position[j] holds node j's position (in the spring's node order) for each
+  // of the block's springs.
+  Vec3Lanes<kSpringBlockSize> position[kNodes];
   // Outputs: the force on each node, the plastic set after this evaluation and the work its
   // flow dissipated (J).
-  double force[kNodes][3][kSpringBlockSize];
+  Vec3Lanes<kSpringBlockSize> force[kNodes];
   double new_plastic_set[kSpringBlockSize];
   double dissipated[kSpringBlockSize];
 
-  Vec3 node_position(int node, Index k) const {
-    return {position[node][0][k], position[node][1][k], position[node][2][k]};
-  }
-  void set_force(int node, Index k, const Vec3& f) {
-    force[node][0][k] = f.x();
-    force[node][1][k] = f.y();
-    force[node][2][k] = f.z();
-  }
-  Vec3 node_force(int node, Index k) const {
-    return {force[node][0][k], force[node][1][k], force[node][2][k]};
-  }
+  Vec3 node_position(int node, Index k) const { return position[node].get(k); }
+  void set_force(int node, Index k, const Vec3& f) { force[node].set(k, f); }
+  Vec3 node_force(int node, Index k) const { return force[node].get(k); }
 };
 
 // Pass 2: kernel(block, k, rest, stiffness, plastic_set, yield) for the block's springs k in
@@ -99,10 +92,7 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
     SpringBlock<kNodes> block;
     for (Index k = 0; k < count; ++k) {
       for (int j = 0; j < kNodes; ++j) {
-        const Vec3& p = x[spring_nodes[kNodes * k + j]];
-        block.position[j][0][k] = p.x();
-        block.position[j][1][k] = p.y();
-        block.position[j][2][k] = p.z();
+        block.position[j].set(k, x[spring_nodes[kNodes * k + j]]);
       }
     }
     compute_spring_block(block, springs, first, count, kernel);

@@ -4,6 +4,7 @@
 
 #include "core/geometry.hpp"
 #include "dynamics/parallel_loops.hpp"
+#include "dynamics/vector_lanes.hpp"
 #include "dynamics/wind_field.hpp"
 #include "model/model.hpp"
 
@@ -14,27 +15,14 @@ namespace {
 // into arrays by coordinate, computed one item per SIMD lane without branches, then stored.
 constexpr Index kWindBlock = 64;
 
-// A block of faces or bars, gathered: three vectors per item, each by coordinate, indexed by
-// the enum (what the compiler vectorises, where references to the arrays it would not).
+// A block of faces or bars, gathered.
 struct DragBlock {
-  enum Vector {
-    kShape,     // a face's Newell area vector, a bar's x1 − x0, m² or m
-    kVelocity,  // the mean velocity of its nodes, m/s
-    kWind,      // the wind it feels, m/s
-    kForce,     // N, on each of its nodes (the output)
-  };
-  double vectors[4][3][kWindBlock];  // for a face, kVelocity and (turbulent) kWind hold sums
-  double size[kWindBlock];           // a face's node count; a bar's diameter, m
-  double acts[kWindBlock];           // 1, or 0 for a torn face or bar
-
-  Vec3 get(Vector which, Index k) const {
-    return {vectors[which][0][k], vectors[which][1][k], vectors[which][2][k]};
-  }
-  void set(Vector which, Index k, const Vec3& value) {
-    vectors[which][0][k] = value.x();
-    vectors[which][1][k] = value.y();
-    vectors[which][2][k] = value.z();
-  }
+  Vec3Lanes<kWindBlock> shape;     // a face's area vector, a bar's x1 − x0, m² or m
+  Vec3Lanes<kWindBlock> velocity;  // its nodes' mean velocity (a face: their sum), m/s
+  Vec3Lanes<kWindBlock> wind;      // the wind it feels (a turbulent face: its nodes' sum), m/s
+  Vec3Lanes<kWindBlock> force;     // N, on each of its nodes (the output)
+  double size[kWindBlock];         // a face's node count; a bar's diameter, m
+  double acts[kWindBlock];         // 1, or 0 for a torn face or bar
 };
 
 bool torn(const std::vector<std::uint8_t>& broken, Index item) {
@@ -46,17 +34,15 @@ void evaluate_node_winds(const WindLoad& wind, const Vec3& uniform, State& state
   const TurbulencePhases phases = turbulence_phases(wind, state.time);
   const Index count = static_cast<Index>(wind.nodes.size());
   for_each_block(count, kWindBlock, [&](Index first, Index size) {
-    double x[3][kWindBlock] = {};  // (zeroed: the compiler cannot see that size > 0)
-    double u[3][kWindBlock];
+    Vec3Lanes<kWindBlock> x = {};  // (zeroed: the compiler cannot see that size > 0)
+    Vec3Lanes<kWindBlock> u;
     for (Index k = 0; k < size; ++k) {
-      const Vec3& p = state.x[wind.nodes[first + k]];
-      x[0][k] = p.x();
-      x[1][k] = p.y();
-      x[2][k] = p.z();
+      x.set(k, state.x[wind.nodes[first + k]]);
     }
-    wind_at_points(wind, phases, uniform, x[0], x[1], x[2], size, u[0], u[1], u[2]);
+    wind_at_points(wind, phases, uniform, x.coordinate[0], x.coordinate[1], x.coordinate[2], size,
+                   u.coordinate[0], u.coordinate[1], u.coordinate[2]);
     for (Index k = 0; k < size; ++k) {
-      state.wind.node_wind[wind.nodes[first + k]] = Vec3(u[0][k], u[1][k], u[2][k]);
+      state.wind.node_wind[wind.nodes[first + k]] = u.get(k);
     }
   });
 }
@@ -73,15 +59,15 @@ void compute_drag(DragBlock& block, Index size, const WindDesc& field, double dr
   for (Index k = 0; k < size; ++k) {
     const Vec3 force = drag(block, k, air_density, drag_coefficient, turbulent);
     const bool acts = block.acts[k] != 0.0;
-    block.vectors[DragBlock::kForce][0][k] = acts ? force.x() : 0.0;
-    block.vectors[DragBlock::kForce][1][k] = acts ? force.y() : 0.0;
-    block.vectors[DragBlock::kForce][2][k] = acts ? force.z() : 0.0;
+    block.force.coordinate[0][k] = acts ? force.x() : 0.0;
+    block.force.coordinate[1][k] = acts ? force.y() : 0.0;
+    block.force.coordinate[2][k] = acts ? force.z() : 0.0;
   }
 }
 
 void store_forces(const DragBlock& block, Index size, Vec3* out) {
   for (Index k = 0; k < size; ++k) {
-    out[k] = block.get(DragBlock::kForce, k);
+    out[k] = block.force.get(k);
   }
 }
 
@@ -125,9 +111,9 @@ void face_forces(const Model& model, const Vec3& uniform, State& state) {
       }
       const Vec3 area_vector = face_area_vector(model, state.x, begin, end);
       // The sums: the means are taken in the SIMD loop.
-      block.set(DragBlock::kShape, k, area_vector);
-      block.set(DragBlock::kVelocity, k, velocity);
-      block.set(DragBlock::kWind, k, turbulent ? felt : uniform);
+      block.shape.set(k, area_vector);
+      block.velocity.set(k, velocity);
+      block.wind.set(k, turbulent ? felt : uniform);
       block.size[k] = nodes;
       block.acts[k] = torn(state.face_broken, f) ? 0.0 : 1.0;  // torn open: the wind passes
     }
@@ -136,11 +122,10 @@ void face_forces(const Model& model, const Vec3& uniform, State& state) {
         [](const DragBlock& faces, Index k, double rho, double drag, bool is_turbulent)
             __attribute__((always_inline)) {
               const double share = 1.0 / faces.size[k];  // of each node
-              const Vec3 velocity = share * faces.get(DragBlock::kVelocity, k);
-              const Vec3 wind_sum = faces.get(DragBlock::kWind, k);
+              const Vec3 velocity = share * faces.velocity.get(k);
+              const Vec3 wind_sum = faces.wind.get(k);
               const Vec3 felt = is_turbulent ? Vec3(share * wind_sum) : wind_sum;
-              return Vec3(share *
-                          face_drag(faces.get(DragBlock::kShape, k), felt - velocity, rho, drag));
+              return Vec3(share * face_drag(faces.shape.get(k), felt - velocity, rho, drag));
             });
     store_forces(block, size, &state.wind.item_force[first]);
   });
@@ -157,22 +142,21 @@ void bar_forces(const Model& model, const Vec3& uniform, State& state) {
       const Index b = wind.bars[first + k];
       const Index n0 = model.bar_nodes[2 * b];
       const Index n1 = model.bar_nodes[2 * b + 1];
-      block.set(DragBlock::kShape, k, state.x[n1] - state.x[n0]);
-      block.set(DragBlock::kVelocity, k, 0.5 * (state.v_half[n0] + state.v_half[n1]));
-      block.set(
-          DragBlock::kWind, k,
-          turbulent ? Vec3(0.5 * (state.wind.node_wind[n0] + state.wind.node_wind[n1])) : uniform);
+      block.shape.set(k, state.x[n1] - state.x[n0]);
+      block.velocity.set(k, 0.5 * (state.v_half[n0] + state.v_half[n1]));
+      block.wind.set(k, turbulent
+                            ? Vec3(0.5 * (state.wind.node_wind[n0] + state.wind.node_wind[n1]))
+                            : uniform);
       block.size[k] = 2.0 * model.bar_radius[b];
       block.acts[k] = torn(state.bar_broken, b) ? 0.0 : 1.0;
     }
     compute_drag(
         block, size, wind.field, wind.field.bar_drag,
-        [](const DragBlock& bars, Index k, double rho, double drag,
-           bool) __attribute__((always_inline)) {
-          const Vec3 relative = bars.get(DragBlock::kWind, k) - bars.get(DragBlock::kVelocity, k);
-          return Vec3(0.5 *
-                      bar_drag(bars.get(DragBlock::kShape, k), bars.size[k], relative, rho, drag));
-        });
+        [](const DragBlock& bars, Index k, double rho, double drag, bool)
+            __attribute__((always_inline)) {
+              const Vec3 relative = bars.wind.get(k) - bars.velocity.get(k);
+              return Vec3(0.5 * bar_drag(bars.shape.get(k), bars.size[k], relative, rho, drag));
+            });
     store_forces(block, size, &out[first]);
   });
 }

@@ -37,26 +37,20 @@ TurbulencePhases turbulence_phases(const WindLoad& wind, double t) {
   return phases;
 }
 
-// sin(k·x + phase) summed over a component's waves; the place's part of each phase is at most
-// |k| |x|, a few hundred radians, where fast_sin keeps its accuracy.
 Vec3 wind_at(const WindLoad& wind, const TurbulencePhases& phases, const Vec3& uniform,
              const Vec3& x) {
   if (wind.field.turbulence == 0.0) {
     return uniform;
   }
-  const double amplitude = wave_amplitude(wind.field);
-  Vec3 velocity;
-  for (int c = 0; c < 3; ++c) {
-    double sum = 0.0;
-    for (int k = 0; k < kTurbulenceWaves; ++k) {
-      const std::size_t i = static_cast<std::size_t>(c) * kTurbulenceWaves + k;
-      sum += fast_sin(dot3(wind.waves[i].wavenumber, x) + phases[i]);
-    }
-    velocity[c] = uniform[c] + amplitude * sum;
-  }
-  return velocity;
+  double u = 0.0;
+  double v = 0.0;
+  double w = 0.0;
+  wind_at_points(wind, phases, uniform, &x.x(), &x.y(), &x.z(), 1, &u, &v, &w);
+  return {u, v, w};
 }
 
+// sin(k·x + phase) summed over a component's waves; the place's part of each phase is at most
+// |k| |x|, a few hundred radians, where fast_sin keeps its accuracy.
 void wind_at_points(const WindLoad& wind, const TurbulencePhases& phases, const Vec3& uniform,
                     const double* x, const double* y, const double* z, Index count, double* u,
                     double* v, double* w) {

@@ -23,8 +23,8 @@ Vec3 uniform_wind_velocity(const WindDesc& wind, double t);
 using TurbulencePhases = std::array<double, 3 * kTurbulenceWaves>;
 TurbulencePhases turbulence_phases(const WindLoad& wind, double t);
 
-// The wind at x: `uniform` (uniform_wind_velocity at the phases' time) plus the turbulence.
-// The same bits as the block version below gives at that point.
+// The wind at x: `uniform` (uniform_wind_velocity at the phases' time) plus the turbulence (by
+// wind_at_points, for one point).
 Vec3 wind_at(const WindLoad& wind, const TurbulencePhases& phases, const Vec3& uniform,
              const Vec3& x);
 
