@@ -7,22 +7,6 @@
 
 namespace dinam {
 
-RenderCamera frame_bounds(const Bounds& bounds, const Vec3f& view_direction, const Vec3f& up,
-                          float fov_degrees, float aspect, float margin) {
-  const float to_radians = std::numbers::pi_v<float> / 180.0f;
-  const float half_vertical = 0.5f * fov_degrees * to_radians;
-  const float half_horizontal = std::atan(std::tan(half_vertical) * aspect);
-  const float half_angle = std::min(half_vertical, half_horizontal);
-  const float radius = std::max(bounds.radius(), 1e-3f) * margin;
-  const float distance = radius / std::sin(half_angle);
-  RenderCamera camera;
-  camera.look_at = bounds.center();
-  camera.position = camera.look_at - distance * view_direction.normalized();
-  camera.up = up;
-  camera.fov_degrees = fov_degrees;
-  return camera;
-}
-
 RenderCamera frame_box(const Bounds& box, const Vec3f& view_direction, const Vec3f& up,
                        float fov_degrees, float aspect, float margin) {
   const float to_radians = std::numbers::pi_v<float> / 180.0f;

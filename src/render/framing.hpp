@@ -22,14 +22,9 @@ struct Bounds {
 };
 
 // A camera looking along `view_direction` (from the eye towards the scene) at the centre of
-// `bounds`, just far enough that the bounding sphere fits both the vertical field of view and
-// the horizontal one of an image of `aspect` (width / height), with `margin` (1.1 = 10 % room).
-RenderCamera frame_bounds(const Bounds& bounds, const Vec3f& view_direction, const Vec3f& up,
-                          float fov_degrees, float aspect, float margin = 1.1f);
-
-// A camera looking along `view_direction` at the centre of `box`, just far enough that each of
-// the box's eight corners projects inside the picture (`aspect` = width / height) with `margin`
-// (1.08 = 8 % room): tighter than the bounding sphere, which leaves a flat or long subject small.
+// `box`, just far enough that each of the box's eight corners projects inside the picture
+// (`aspect` = width / height) with `margin` (1.08 = 8 % room): tighter than the bounding sphere,
+// which leaves a flat or long subject small.
 RenderCamera frame_box(const Bounds& box, const Vec3f& view_direction, const Vec3f& up,
                        float fov_degrees, float aspect, float margin = 1.08f);
 
