@@ -30,7 +30,7 @@ const FlagFrame& flag_frame() {
     const Model model = build_model(scene);
     const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
     const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
-    const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
+    const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames).frames;
     return FlagFrame{make_draw_list(scene, model, motion_bounds(frames.positions)),
                      frames.positions[20], cameras[20]};
   }();
@@ -42,7 +42,7 @@ void draw(benchmark::State& bench) {
   const auto height = static_cast<int>(bench.range(1));
   const auto samples = static_cast<int>(bench.range(2));
   const auto shadow = static_cast<int>(bench.range(3));
-  OsmesaRenderer renderer({width, height, samples, shadow});
+  OsmesaRenderer renderer({width, height, samples, shadow, {}});
   const FlagFrame& f = flag_frame();
   Image image;
   renderer.render(f.draw_list, f.positions, f.camera, image);  // warm up
@@ -67,7 +67,7 @@ BENCHMARK(draw)
     ->UseRealTime();
 
 void encode_png(benchmark::State& bench) {
-  OsmesaRenderer renderer({1280, 720, 4, 2048});
+  OsmesaRenderer renderer({1280, 720, 4, 2048, {}});
   Image image;
   renderer.render(flag_frame().draw_list, flag_frame().positions, flag_frame().camera, image);
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "dinam_bench.png";
@@ -93,10 +93,9 @@ void draw_shipped_scene(benchmark::State& bench, const std::filesystem::path& pa
   const Model model = build_model(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
-  const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
+  const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames).frames;
   const DrawList list = make_draw_list(scene, model, motion_bounds(frames.positions));
-  OsmesaRenderer renderer({width, height, scene.quality.samples,
-                           scene.quality.shadows ? scene.quality.shadow_resolution : 0});
+  OsmesaRenderer renderer(render_settings(scene));
   const std::size_t frame = std::min<std::size_t>(20, frames.positions.size() - 1);
   Image image;
   renderer.render(list, frames.positions[frame], cameras[frame], image);

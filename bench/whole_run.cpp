@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
   // 3. Drawing and PNG encoding of the flag at 1280 × 720 with the scene's quality.
   omp_set_num_threads(2);
   const SimulatedFrames frames = simulate_frames(flag, flag_step, flag_scene.frame_count(), false);
-  const std::vector<RenderCamera> cameras = frame_cameras(flag_scene, flag, frames);
+  const std::vector<RenderCamera> cameras = frame_cameras(flag_scene, flag, frames).frames;
   const DrawList list = make_draw_list(flag_scene, flag, motion_bounds(frames.positions));
   OsmesaRenderer renderer(render_settings(flag_scene));
   Image image;
@@ -151,7 +151,8 @@ int main(int argc, char** argv) {
   //    from it by `dinam render --cache`, against the drawing and PNG encoding of those frames.
   const std::filesystem::path cache = std::filesystem::temp_directory_path() / "dinam_bench_cache";
   const auto write_cache = [&](const Model& model, const std::vector<std::vector<Vec3f>>& shown) {
-    MotionCacheWriter writer({cache, true, false, 20.0, static_cast<int>(shown.size())}, model);
+    MotionCacheWriter writer({cache, true, false, 20.0, static_cast<int>(shown.size()), {}, 0.0, 1},
+                             model);
     for (const auto& positions : shown) {
       writer.add_frame(positions);
     }

@@ -7,6 +7,7 @@ layout(location = 2) in vec3 instance_p0;
 layout(location = 3) in vec3 instance_p1;
 layout(location = 4) in float instance_radius;
 layout(location = 5) in vec3 instance_color;
+layout(location = 6) in vec3 instance_finish;  // roughness, metallic, sheen
 
 uniform mat4 clip_from_world;
 
@@ -14,6 +15,7 @@ out vec3 world_position;
 out vec3 world_normal;
 out vec3 base_color;
 out vec2 surface_uv;
+out vec3 surface_finish;
 
 void main() {
   vec3 axis = instance_p1 - instance_p0;
@@ -28,5 +30,6 @@ void main() {
   world_normal = u * unit_normal.x + v * unit_normal.y + w * unit_normal.z;
   base_color = instance_color;
   surface_uv = vec2(0.0);
+  surface_finish = instance_finish;
   gl_Position = clip_from_world * vec4(world_position, 1.0);
 }

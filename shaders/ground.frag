@@ -1,13 +1,12 @@
 #version 330 core
 // A soft checkerboard that takes the light's shadows and fades into the horizon colour with
-// distance from the eye, so the plane's far edge never shows.
+// distance from the eye, so the plane's far edge never shows. Linear light.
 in vec3 world_position;
 in vec2 plane_position;
 
 uniform vec3 plane_normal;
 uniform float fade_distance;  // m; fully faded at this distance from the eye
 uniform float tile_size;  // m; 0 for a plain ground
-uniform vec3 horizon_color;  // linear RGB
 
 out vec4 out_color;
 
@@ -19,7 +18,7 @@ void main() {
     checker = mod(cell.x + cell.y, 2.0);
   }
   vec3 albedo = mix(vec3(0.50, 0.48, 0.45), vec3(0.60, 0.58, 0.54), checker);
-  vec3 color = shade(albedo, plane_normal, world_position);
+  vec3 color = shade(albedo, plane_normal, world_position, vec3(0.85, 0.0, 0.0));
   float fade = smoothstep(0.15 * fade_distance, fade_distance, length(world_position - eye_position));
-  out_color = encode_display(mix(color, horizon_color, fade));
+  out_color = vec4(mix(color, horizon_color, fade), 1.0);
 }

@@ -1,9 +1,11 @@
 #version 330 core
-// Bars, joints and surfaces: the shared lighting over the point colour or a texture.
+// Bars, joints and surfaces: the shared lighting over the point colour or a texture, in linear
+// light.
 in vec3 world_position;
 in vec3 world_normal;
 in vec3 base_color;
 in vec2 surface_uv;
+in vec3 surface_finish;  // roughness, metallic, sheen
 
 uniform bool use_texture;
 uniform sampler2D surface_texture;  // sRGB texture: sampling returns linear colour
@@ -12,5 +14,5 @@ out vec4 out_color;
 
 void main() {
   vec3 color = use_texture ? texture(surface_texture, surface_uv).rgb : base_color;
-  out_color = encode_display(shade(color, world_normal, world_position));
+  out_color = vec4(shade(color, world_normal, world_position, surface_finish), 1.0);
 }

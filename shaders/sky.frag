@@ -1,5 +1,6 @@
 #version 330 core
-// A vertical gradient from the horizon colour to a deeper blue at the top of the picture.
+// A vertical gradient from the horizon colour to a deeper blue at the top of the picture, in
+// linear light (the finishing pass encodes it).
 in vec2 screen_uv;
 
 uniform vec3 horizon_color;  // linear RGB
@@ -8,6 +9,5 @@ uniform vec3 zenith_color;
 out vec4 out_color;
 
 void main() {
-  vec3 color = mix(horizon_color, zenith_color, clamp(screen_uv.y, 0.0, 1.0));
-  out_color = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+  out_color = vec4(mix(horizon_color, zenith_color, clamp(screen_uv.y, 0.0, 1.0)), 1.0);
 }

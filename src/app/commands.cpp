@@ -74,6 +74,7 @@ int run_render(const RenderOptions& options) {
     }
     cache.emplace(*options.cache);
     cache->check_scene(scene);
+    cache->check_motion_blur(scene);
   }
   const Model model = build_model_telling_warnings(scene);
   if (cache) {
@@ -83,12 +84,15 @@ int run_render(const RenderOptions& options) {
       cache ? std::nullopt
             : std::optional(choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc));
   // Every frame of the motion is held (or, from a cache, those drawn) until it is drawn.
+  // With motion blur, a simulated frame holds its instants too.
   const int frames_held = cache ? range.last - range.first + 1 : scene.frame_count();
-  refuse_if_over_budget(
-      options.scene,
-      estimate_memory(scene, model,
-                      {frames_held, options.energy_csv, scene.image_width, scene.image_height}),
-      available_memory(), options.force);
+  const MotionBlurDesc& blur = scene.quality.motion_blur;
+  const int instants = blur.enabled() ? blur.samples : 0;
+  refuse_if_over_budget(options.scene,
+                        estimate_memory(scene, model,
+                                        {frames_held, options.energy_csv, scene.image_width,
+                                         scene.image_height, instants}),
+                        available_memory(), options.force);
   if (timestep) {
     refuse_long_run(options.scene, scene, model, *timestep, options.force);
   }
@@ -106,19 +110,20 @@ int run_render(const RenderOptions& options) {
   }
   SimulatedFrames frames;
   if (cache) {
-    frames = cached_frames(*cache, range.first, range.last);
+    frames = cached_frames(*cache, range.first, range.last, &scene.quality.motion_blur);
   } else {
     Progress simulation_progress(scene.frame_count(), !options.quiet, "simulate");
     try {
-      frames =
-          simulate_frames(model, *timestep, scene.frame_count(), options.energy_csv,
-                          [&](int frame, const State& s) {
-                            stop_if_asked();
-                            if (energy_csv) {
-                              energy_csv->write(s.energy_workspace.last);
-                            }
-                            simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
-                          });
+      frames = simulate_frames(
+          model, *timestep, scene.frame_count(), options.energy_csv,
+          [&](int frame, const State& s) {
+            stop_if_asked();
+            if (energy_csv) {
+              energy_csv->write(s.energy_workspace.last);
+            }
+            simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
+          },
+          &scene.quality.motion_blur);
     } catch (const Interrupted& e) {
       simulation_progress.finish();
       throw Interrupted(e.signal(), "it was still simulating, so no frame was drawn");
@@ -131,7 +136,7 @@ int run_render(const RenderOptions& options) {
   // 2. Draw the frames; a thread of their own writes them (PNG) and feeds them to ffmpeg, which
   //    encodes the movie meanwhile.
   const DrawList draw_list = make_draw_list(scene, model, frames.motion, std::move(textures));
-  const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
+  const FrameCameras cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
   int exit_code = kExitOk;
   std::string movie_note;
@@ -218,16 +223,17 @@ int run_snapshot(const SnapshotOptions& options) {
       options.output.value_or(std::filesystem::path("out/snapshot") / scene.name);
 
   // The whole motion frames the camera, so a frame looks as it does in the movie.
-  const SimulatedFrames frames = simulate_frames(model, timestep, count, false);
+  const SimulatedFrames frames =
+      simulate_frames(model, timestep, count, false, {}, &scene.quality.motion_blur);
   const DrawList draw_list = make_draw_list(scene, model, frames.motion, std::move(textures));
-  const std::vector<RenderCamera> cameras = frame_cameras(scene, model, frames);
+  const FrameCameras cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
 
   int failures = 0;
   Image image;
   for (const int frame : chosen) {
-    renderer.render(draw_list, frames.at(frame), cameras[static_cast<std::size_t>(frame - 1)],
-                    image);
+    draw_frames(renderer, draw_list, frames, cameras, frame, frame,
+                [&](int, const Image& drawn) { image = drawn; });
     const std::string name = fmt::format("{}_{:04}", scene.name, frame);
     const std::filesystem::path golden = options.golden / (name + ".png");
     std::error_code ec;

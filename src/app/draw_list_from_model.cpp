@@ -29,7 +29,7 @@ double round_down_nice(double value) {
 
 RenderSettings render_settings(const SceneDescription& scene) {
   return {scene.image_width, scene.image_height, scene.quality.samples,
-          scene.quality.shadows ? scene.quality.shadow_resolution : 0};
+          scene.quality.shadows ? scene.quality.shadow_resolution : 0, scene.quality.look};
 }
 
 Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames) {
@@ -82,6 +82,7 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
   }
   list.point_radius.resize(model.node_count());
   list.point_color.resize(model.node_count());
+  list.point_finish.resize(model.node_count());
   list.point_uv = model.node_uv;
   for (Index i = 0; i < model.node_count(); ++i) {
     const Index object = model.node_object[i];
@@ -89,6 +90,7 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
         object_wire[object] && scene.objects[static_cast<std::size_t>(object)].joints;
     list.point_radius[i] = joint ? object_radius[object] : 0.0f;
     list.point_color[i] = model.objects[object].color;
+    list.point_finish[i] = scene.objects[static_cast<std::size_t>(object)].finish;
   }
   for (Index b = 0; b < model.bar_count(); ++b) {
     // A surface object still shows its loose bars (a flag's ropes): they are on no face.
@@ -100,6 +102,7 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
     list.segment_points.push_back(model.bar_nodes[2 * b + 1]);
     list.segment_radius.push_back(object_radius[object]);
     list.segment_color.push_back(model.objects[object].color);
+    list.segment_finish.push_back(scene.objects[static_cast<std::size_t>(object)].finish);
   }
 
   // Surfaces: one batch per drawn object, its faces fanned into triangles.
@@ -143,7 +146,13 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
   list.ground_tile = static_cast<float>(round_down_nice(extent / 5.0));
 
   list.light_direction = scene.light_direction.cast<float>();
+  list.light_size_degrees = static_cast<float>(scene.light_size_degrees);
   list.shadows = scene.quality.shadows;
+  // Occlusion reaches a few percent of the subject, and past the thickest wire: far enough for a
+  // wire lying on the ground to darken it beside itself, near enough that open space stays lit.
+  const float thickest =
+      object_radius.empty() ? 0.0f : *std::max_element(object_radius.begin(), object_radius.end());
+  list.occlusion_radius = std::max(static_cast<float>(0.03 * extent), 3.0f * thickest);
   // The shadow map must hold the casters and where their shadows land: the motion's box and its
   // projection along the light onto the ground.
   Bounds shadow = motion;

@@ -1,6 +1,8 @@
 #include "app/frame_source.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 
 #include "app/command_support.hpp"
 #include "app/draw_list_from_model.hpp"
@@ -14,36 +16,93 @@
 
 namespace dinam {
 
+std::vector<int> shutter_offsets(const MotionBlurDesc& blur, int steps_per_frame) {
+  std::vector<int> offsets;
+  if (!blur.enabled()) {
+    return offsets;
+  }
+  const double open = blur.shutter * static_cast<double>(steps_per_frame);  // steps
+  for (int k = 0; k < blur.samples; ++k) {
+    const double fraction = (static_cast<double>(k) + 0.5) / blur.samples - 0.5;
+    offsets.push_back(static_cast<int>(std::lround(fraction * open)));
+  }
+  return offsets;
+}
+
 void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool track_energy,
-                  const std::function<void(int, const State&)>& on_frame) {
+                  const std::function<void(int, const State&)>& on_frame,
+                  const std::vector<int>& shutter,
+                  const std::function<void(int, int, const State&)>& on_instant) {
+  // The steps at which frames and instants are taken, in order: offsets ascend, and one frame's
+  // last instant (at most half a frame after it) precedes the next frame's first.
+  const auto frame_step = [&](int frame) {
+    return static_cast<std::int64_t>(frame - 1) * timestep.steps_per_frame;
+  };
+  const auto instant_step = [&](std::size_t i) {
+    const auto frame = static_cast<int>(i / shutter.size()) + 1;
+    return std::max<std::int64_t>(frame_step(frame) + shutter[i % shutter.size()], 0);
+  };
+  const std::size_t instants = shutter.size() * static_cast<std::size_t>(last);
+  std::int64_t final_step = frame_step(last);
+  if (instants > 0) {
+    final_step = std::max(final_step, instant_step(instants - 1));
+  }
   State state = initial_state(model, timestep.dt, {}, track_energy);
-  for (int frame = 1; frame <= last; ++frame) {
-    if (frame > 1) {
-      for (int s = 0; s < timestep.steps_per_frame; ++s) {
-        stop_if_asked();  // within a step of SIGINT or SIGTERM, however long a frame takes
-        step(model, timestep.dt, {}, state);
-      }
+  int frame = 1;
+  std::size_t instant = 0;
+  for (std::int64_t n = 0; n <= final_step; ++n) {
+    if (n > 0) {
+      stop_if_asked();  // within a step of SIGINT or SIGTERM, however long a frame takes
+      step(model, timestep.dt, {}, state);
     }
-    on_frame(frame, state);
+    for (; instant < instants && instant_step(instant) == n; ++instant) {
+      on_instant(static_cast<int>(instant / shutter.size()) + 1,
+                 static_cast<int>(instant % shutter.size()), state);
+    }
+    if (frame <= last && frame_step(frame) == n) {
+      on_frame(frame++, state);
+    }
   }
 }
 
 SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, int last,
                                 bool track_energy,
-                                const std::function<void(int, const State&)>& on_frame) {
+                                const std::function<void(int, const State&)>& on_frame,
+                                const MotionBlurDesc* blur) {
   const auto start = Clock::now();
   SimulatedFrames frames;
   frames.positions.resize(static_cast<std::size_t>(last));
-  run_dynamics(model, timestep, last, track_energy, [&](int frame, const State& state) {
-    positions_for_render(state.x, frames.positions[static_cast<std::size_t>(frame - 1)]);
-    if (frame == 1) {
-      frames.settled = state.settled;
-    }
-    record_tears(model, state, frame, frames.tears);
-    if (on_frame) {
-      on_frame(frame, state);
-    }
-  });
+  const std::vector<int> shutter =
+      blur != nullptr ? shutter_offsets(*blur, timestep.steps_per_frame) : std::vector<int>{};
+  if (!shutter.empty()) {
+    frames.instants_per_frame = static_cast<int>(shutter.size());
+    frames.instants.resize(shutter.size() * static_cast<std::size_t>(last));
+    frames.instant_times.resize(frames.instants.size());
+  }
+  run_dynamics(
+      model, timestep, last, track_energy,
+      [&](int frame, const State& state) {
+        positions_for_render(state.x, frames.positions[static_cast<std::size_t>(frame - 1)]);
+        if (frame == 1) {
+          frames.settled = state.settled;
+        }
+        record_tears(model, state, frame, frames.tears);
+        if (on_frame) {
+          on_frame(frame, state);
+        }
+      },
+      shutter,
+      [&](int frame, int k, const State& state) {
+        const std::size_t i =
+            static_cast<std::size_t>(frame - 1) * shutter.size() + static_cast<std::size_t>(k);
+        positions_for_render(state.x, frames.instants[i]);
+        // The instant's own time: the frame's, moved by its offset in steps (an instant before
+        // t = 0 shows the start, but keeps its time for a moving camera).
+        frames.instant_times[i] =
+            static_cast<double>(static_cast<std::int64_t>(frame - 1) * timestep.steps_per_frame +
+                                shutter[static_cast<std::size_t>(k)]) *
+            timestep.dt;
+      });
   frames.motion = motion_bounds(frames.positions);
   for (const std::vector<Vec3f>& positions : frames.positions) {
     Vec3f lo;
@@ -67,15 +126,30 @@ std::string settle_summary(const SettleOutcome& settled, double dt) {
       settled.steps - settled.viscous_steps, settled.restarts, settled.residual);
 }
 
-SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {
+SimulatedFrames cached_frames(const MotionCache& cache, int first, int last,
+                              const MotionBlurDesc* blur) {
   const auto start = Clock::now();
   SimulatedFrames frames;
   frames.first_frame = first;
   frames.positions = cache.read_frames(first, last);
-  for (const CacheTear& tear : cache.manifest().tears) {
+  const CacheManifest& manifest = cache.manifest();
+  if (blur != nullptr && blur->enabled()) {
+    const CacheInstants& cached = manifest.instants;
+    frames.instants_per_frame = cached.per_frame;
+    frames.instants = cache.read_instants(first, last);
+    for (int frame = first; frame <= last; ++frame) {
+      for (const int offset : cached.offsets) {
+        frames.instant_times.push_back(
+            static_cast<double>(static_cast<std::int64_t>(frame - 1) * manifest.steps_per_frame +
+                                offset) *
+            manifest.timestep);
+      }
+    }
+  }
+  for (const CacheTear& tear : manifest.tears) {
     frames.tears.push_back({tear.frame, tear.n0, tear.n1});
   }
-  for (const FrameBounds& bounds : cache.manifest().frame_bounds) {
+  for (const FrameBounds& bounds : manifest.frame_bounds) {
     frames.motion.add(bounds.min);
     frames.motion.add(bounds.max);
     frames.subject.add(bounds.subject_min);
@@ -85,46 +159,8 @@ SimulatedFrames cached_frames(const MotionCache& cache, int first, int last) {
   return frames;
 }
 
-std::vector<RenderCamera> frame_cameras(const SceneDescription& scene, const Model& model,
-                                        const SimulatedFrames& frames) {
-  const CameraDesc& desc = scene.camera;
-  const Vec3f up = desc.up.cast<float>();
-  const auto fov = static_cast<float>(desc.fov_degrees);
-  std::vector<RenderCamera> cameras;
-  cameras.reserve(frames.positions.size());
-  switch (desc.mode) {
-    case CameraDesc::Mode::kFixed: {
-      const RenderCamera camera{desc.position.cast<float>(), desc.look_at.cast<float>(), up, fov};
-      cameras.assign(frames.positions.size(), camera);
-      break;
-    }
-    case CameraDesc::Mode::kAuto: {
-      const float aspect =
-          static_cast<float>(scene.image_width) / static_cast<float>(scene.image_height);
-      cameras.assign(frames.positions.size(),
-                     frame_box(frames.subject, desc.direction.cast<float>(), up, fov, aspect));
-      break;
-    }
-    case CameraDesc::Mode::kFollow: {
-      std::vector<Index> points;
-      for (const ModelObject& object : model.objects) {
-        if (object.name == desc.follow) {
-          for (Index i = 0; i < object.node_count; ++i) {
-            points.push_back(object.first_node + i);
-          }
-        }
-      }
-      for (const auto& positions : frames.positions) {
-        cameras.push_back(follow_points(positions, points, desc.offset.cast<float>(), up, fov));
-      }
-      break;
-    }
-  }
-  return cameras;
-}
-
 void draw_frames(Renderer& renderer, const DrawList& list, const SimulatedFrames& frames,
-                 const std::vector<RenderCamera>& cameras, int first, int last,
+                 const FrameCameras& cameras, int first, int last,
                  const std::function<void(int, const Image&)>& on_image) {
   DINAM_CHECK(first >= frames.first_frame && last <= frames.last_frame());
   Image image;
@@ -134,14 +170,24 @@ void draw_frames(Renderer& renderer, const DrawList& list, const SimulatedFrames
     torn = list;
   }
   std::size_t shown = 0;
+  std::vector<FrameSample> samples;
   for (int frame = first; frame <= last; ++frame) {
     const std::size_t before = shown;
     while (shown < frames.tears.size() && frames.tears[shown].frame <= frame) {
       hide_torn_bar(frames.tears[shown++], torn);
     }
     torn.revision += shown > before ? 1 : 0;
-    renderer.render(frames.tears.empty() ? list : torn, frames.at(frame),
-                    cameras[static_cast<std::size_t>(frame - frames.first_frame)], image);
+    const auto held = static_cast<std::size_t>(frame - frames.first_frame);
+    samples.clear();
+    if (frames.instants.empty()) {
+      samples.push_back({&frames.at(frame), cameras.frames[held]});
+    } else {
+      const auto n = static_cast<std::size_t>(frames.instants_per_frame);
+      for (std::size_t i = held * n; i < (held + 1) * n; ++i) {
+        samples.push_back({&frames.instants[i], cameras.instants[i]});
+      }
+    }
+    renderer.render(frames.tears.empty() ? list : torn, samples, image);
     on_image(frame, image);
   }
 }

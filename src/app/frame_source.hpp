@@ -1,11 +1,12 @@
 #pragma once
 // The run split into its stages, each usable alone: simulate every frame's positions (or read
-// them from a motion cache), decide the camera of each frame, then draw them through any Renderer
-// (OSMesa, or a recording one in tests).
+// them from a motion cache), decide the camera of each frame (frame_cameras.hpp), then draw them
+// through any Renderer (OSMesa, or a recording one in tests).
 #include <filesystem>
 #include <functional>
 #include <vector>
 
+#include "app/frame_cameras.hpp"
 #include "app/torn_drawing.hpp"
 #include "core/image.hpp"
 #include "dynamics/state.hpp"
@@ -16,8 +17,14 @@ namespace dinam {
 
 class MotionCache;
 struct Model;
+struct MotionBlurDesc;
 struct SceneDescription;
 struct TimeStep;
+
+// The instants a blurred frame averages, as whole steps from the frame's own step, ascending:
+// `blur.samples` instants spread evenly over `blur.shutter` of the frame interval, centred on the
+// frame (each at the step nearest its ideal time). Empty without blur.
+std::vector<int> shutter_offsets(const MotionBlurDesc& blur, int steps_per_frame);
 
 // Node positions of consecutive frames first_frame, first_frame + 1, … (frame k at
 // t = (k − 1)/fps), in single precision, and the bounds of the whole motion they belong to, which
@@ -27,9 +34,14 @@ struct SimulatedFrames {
   std::vector<std::vector<Vec3f>> positions;  // (frames held) × (n_nodes)
   Bounds motion;                              // every position of every frame of the motion
   Bounds subject;  // every frame's subject box (core/subject_box.hpp): what camera: auto frames
-  double seconds = 0.0;                       // wall time spent simulating or reading
-  SettleOutcome settled;                      // how the settling phase ended (simulated only)
-  std::vector<TornBar> tears;                 // in the order they broke
+  double seconds = 0.0;        // wall time spent simulating or reading
+  SettleOutcome settled;       // how the settling phase ended (simulated only)
+  std::vector<TornBar> tears;  // in the order they broke
+  // Motion blur: the positions of each frame's instants (frame after frame, instants_per_frame
+  // each) and their times; empty when each frame is one instant.
+  int instants_per_frame = 1;
+  std::vector<std::vector<Vec3f>> instants;  // (frames held × instants_per_frame) × (n_nodes)
+  std::vector<double> instant_times;         // s
 
   int last_frame() const { return first_frame + static_cast<int>(positions.size()) - 1; }
   const std::vector<Vec3f>& at(int frame) const {
@@ -38,31 +50,34 @@ struct SimulatedFrames {
 };
 
 // Runs the dynamics to frame `last`, calling `on_frame(frame, state)` at each frame's time.
-// Throws Interrupted (command_support.hpp) at the next step after SIGINT or SIGTERM.
+// With `shutter` (shutter_offsets), also `on_instant(frame, k, state)` at each frame's k-th
+// instant: before t = 0 the structure is where it starts, and the last frame's shutter runs a
+// little past it. Throws Interrupted (command_support.hpp) at the next step after SIGINT or
+// SIGTERM.
 void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool track_energy,
-                  const std::function<void(int, const State&)>& on_frame);
+                  const std::function<void(int, const State&)>& on_frame,
+                  const std::vector<int>& shutter = {},
+                  const std::function<void(int, int, const State&)>& on_instant = {});
 
-// Runs the dynamics to frame `last`, holding frames 1 … last. `on_frame(frame, state)` is called
-// once per frame (for energy reports and progress).
+// Runs the dynamics to frame `last`, holding frames 1 … last, and their instants for `blur`.
+// `on_frame(frame, state)` is called once per frame (for energy reports and progress).
 SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, int last,
                                 bool track_energy,
-                                const std::function<void(int, const State&)>& on_frame = {});
+                                const std::function<void(int, const State&)>& on_frame = {},
+                                const MotionBlurDesc* blur = nullptr);
 
 // One line on how the settling phase ended, for the log: "" when there was none.
 std::string settle_summary(const SettleOutcome& settled, double dt);
 
-// Frames first … last from a cache, with the bounds of its whole motion.
-SimulatedFrames cached_frames(const MotionCache& cache, int first, int last);
-
-// The camera of every frame held: fixed, framing the whole motion (auto: it does not jump), or
-// following an object's centroid.
-std::vector<RenderCamera> frame_cameras(const SceneDescription& scene, const Model& model,
-                                        const SimulatedFrames& frames);
+// Frames first … last from a cache, with the bounds of its whole motion, and their instants when
+// `blur` asks for them (MotionCache::check_motion_blur has checked that the cache holds them).
+SimulatedFrames cached_frames(const MotionCache& cache, int first, int last,
+                              const MotionBlurDesc* blur = nullptr);
 
 // Draws frames first … last (all held), handing each picture to `on_image(frame, image)`;
-// `cameras` are those of frame_cameras.
+// `cameras` are those of frame_cameras. A frame with instants is their mean (motion blur).
 void draw_frames(Renderer& renderer, const DrawList& list, const SimulatedFrames& frames,
-                 const std::vector<RenderCamera>& cameras, int first, int last,
+                 const FrameCameras& cameras, int first, int last,
                  const std::function<void(int, const Image&)>& on_image);
 
 }  // namespace dinam

@@ -27,8 +27,10 @@ struct MemoryFigures {
 };
 
 MemoryFigures memory_figures(const SceneDescription& scene, const Model& model) {
+  const MotionBlurDesc& blur = scene.quality.motion_blur;
   return {estimate_memory(scene, model,
-                          {scene.frame_count(), false, scene.image_width, scene.image_height}),
+                          {scene.frame_count(), false, scene.image_width, scene.image_height,
+                           blur.enabled() ? blur.samples : 0}),
           estimate_memory(scene, model, {2, false, 0, 0}), available_memory()};
 }
 

@@ -25,11 +25,13 @@ constexpr std::uint64_t kProgramBytes = 64'000'000;
 //    a 121-node scene drawn at 640×360, 1920×1080 and 3840×2160 took 61, 155 and 473 MB over
 //    `info`, i.e. 49 MB + 51 bytes a pixel with 4 samples, of which the shadow map is 17 MB.
 constexpr std::uint64_t kRendererBytes = 32'000'000;
-//  - Per pixel and sample: an RGBA8 colour and a 24-bit depth (stored in 4 bytes) of the
-//    multisampled framebuffer; per pixel besides: OSMesa's RGBA buffer and its depth, llvmpipe's
-//    resolve target, the picture read back and the frame writer's copy for PNG.
-constexpr std::uint64_t kBytesPerPixelSample = 8;
-constexpr std::uint64_t kBytesPerPixel = 20;
+//  - Per pixel and sample: a half-float RGBA colour and a 24-bit depth (stored in 4 bytes) of
+//    the multisampled framebuffer; per pixel besides (render/frame_targets.hpp): the resolved
+//    colour (8) and depth (4), the frame's single-float sum (16), the occlusion (1, always
+//    counted), OSMesa's RGBA buffer and its depth, the picture read back and the frame writer's
+//    copy for PNG (4 each).
+constexpr std::uint64_t kBytesPerPixelSample = 12;
+constexpr std::uint64_t kBytesPerPixel = 49;
 constexpr std::uint64_t kBytesPerShadowTexel = 4;  // GL_DEPTH_COMPONENT24
 
 // A std::vector of small vectors (mesh faces and lines) costs its header and a heap block each.
@@ -223,6 +225,7 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
   }
   estimate.frames =
       static_cast<std::uint64_t>(std::max(use.frames_held, 0)) *
+      static_cast<std::uint64_t>(1 + std::max(use.instants_per_frame, 0)) *
       (static_cast<std::uint64_t>(model.node_count()) * sizeof(Vec3f) + sizeof(std::vector<Vec3f>));
   if (use.image_width > 0 && use.image_height > 0) {
     const auto pixels =

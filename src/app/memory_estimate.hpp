@@ -17,6 +17,7 @@ struct MemoryUse {
   bool energy = false;  // the energy report's per-kind force arrays
   int image_width = 0;  // pixels; 0 when nothing is drawn (dinam simulate)
   int image_height = 0;
+  int instants_per_frame = 0;  // motion blur: positions held per frame besides the frame's own
 };
 
 // Bytes, by part. The peak is when the frames are all held and either the dynamics is running

@@ -57,6 +57,11 @@ int run_simulate(const SimulateOptions& options) {
   request.folder = options.output.value_or(scene.output / "cache");
   request.fps = scene.fps;
   request.frame_count = scene.frame_count();
+  // With motion blur in the scene, the instants its frames average go into the cache too, so
+  // that frames drawn from it are those of a whole run.
+  request.instant_offsets = shutter_offsets(scene.quality.motion_blur, timestep.steps_per_frame);
+  request.shutter = scene.quality.motion_blur.shutter;
+  request.steps_per_frame = timestep.steps_per_frame;
   // One frame's positions at a time: each goes to the files as soon as it is simulated.
   refuse_if_over_budget(options.scene, estimate_memory(scene, model, {2, options.energy, 0, 0}),
                         available_memory(), options.force);
@@ -79,23 +84,29 @@ int run_simulate(const SimulateOptions& options) {
     std::vector<Vec3f> positions;
     Progress progress(request.frame_count, !options.quiet, "simulate");
     try {
-      run_dynamics(model, timestep, request.frame_count, options.energy,
-                   [&](int frame, const State& state) {
-                     stop_if_asked();
-                     positions_for_render(state.x, positions);
-                     if (frame == 1) {
-                       settled = state.settled;
-                     }
-                     record_tears(model, state, frame, tears);
-                     writer.add_frame(positions);
-                     if (energy_csv) {
-                       const EnergyReport& report = state.energy_workspace.last;
-                       energy_csv->write(report);
-                       const auto row = energy_row(report);
-                       manifest.energy.rows.emplace_back(row.begin(), row.end());
-                     }
-                     progress.update(frame, fmt::format("t = {:.2f} s", state.time));
-                   });
+      run_dynamics(
+          model, timestep, request.frame_count, options.energy,
+          [&](int frame, const State& state) {
+            stop_if_asked();
+            positions_for_render(state.x, positions);
+            if (frame == 1) {
+              settled = state.settled;
+            }
+            record_tears(model, state, frame, tears);
+            writer.add_frame(positions);
+            if (energy_csv) {
+              const EnergyReport& report = state.energy_workspace.last;
+              energy_csv->write(report);
+              const auto row = energy_row(report);
+              manifest.energy.rows.emplace_back(row.begin(), row.end());
+            }
+            progress.update(frame, fmt::format("t = {:.2f} s", state.time));
+          },
+          request.instant_offsets,
+          [&](int, int, const State& state) {
+            positions_for_render(state.x, positions);
+            writer.add_instant(positions);
+          });
     } catch (const Interrupted& e) {
       progress.finish();
       throw Interrupted(e.signal(), fmt::format("no cache was written ({} is as it was)",

@@ -97,6 +97,12 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
     }
     json["tears"] = std::move(tears);
   }
+  if (m.instants.per_frame > 0) {
+    json["motion_blur"] = {{"samples", m.instants.per_frame},
+                           {"shutter", m.instants.shutter},
+                           {"offsets_steps", m.instants.offsets},
+                           {"pc2", m.instants.pc2}};
+  }
   if (!m.energy.columns.empty()) {
     Json energy = Json::object();
     for (std::size_t c = 0; c < m.energy.columns.size(); ++c) {
@@ -181,6 +187,17 @@ CacheManifest read_manifest(const std::filesystem::path& path) {
         if (t.frame < 1 || t.n0 < 0 || t.n1 < 0 || t.n0 >= m.node_count || t.n1 >= m.node_count) {
           throw UserError(loc, "the manifest names a tear outside the frames or the nodes");
         }
+      }
+    }
+    if (json.contains("motion_blur")) {
+      const Json& blur = json.at("motion_blur");
+      m.instants.per_frame = blur.at("samples").get<int>();
+      m.instants.shutter = blur.at("shutter").get<double>();
+      m.instants.offsets = blur.at("offsets_steps").get<std::vector<int>>();
+      m.instants.pc2 = blur.at("pc2").get<std::string>();
+      if (m.instants.per_frame < 1 ||
+          m.instants.offsets.size() != static_cast<std::size_t>(m.instants.per_frame)) {
+        throw UserError(loc, "the manifest's motion_blur is inconsistent (samples, offsets)");
       }
     }
     if (json.contains("energy")) {

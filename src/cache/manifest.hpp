@@ -47,6 +47,15 @@ struct CacheTear {
   Index n1 = 0;
 };
 
+// Motion blur's instants (frame_source.hpp, shutter_offsets): every node's positions at each
+// frame's instants, frame after frame, in one PC2 file of the whole model.
+struct CacheInstants {
+  int per_frame = 0;         // 0: the cache holds none
+  double shutter = 0.0;      // fraction of the frame interval
+  std::vector<int> offsets;  // (per_frame) steps from each frame's own step
+  std::string pc2;           // the file, inside the cache folder
+};
+
 struct CacheManifest {
   static constexpr const char* kFormat = "dinam motion cache";
   static constexpr int kFormatVersion = 1;
@@ -68,6 +77,7 @@ struct CacheManifest {
   std::vector<FrameBounds> frame_bounds;  // (frame_count)
   EnergyTable energy;                     // empty unless asked for
   std::vector<CacheTear> tears;           // in the order they broke; none unless it tears
+  CacheInstants instants;                 // for motion blur; none unless the scene blurs
 };
 
 // The path a manifest records for a scene file: absolute, with links and dots resolved.

@@ -75,6 +75,15 @@ MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folde
     }
     objects_.push_back(std::move(cache));
   }
+  if (manifest_.instants.per_frame > 0) {
+    instants_.path = folder_ / manifest_.instants.pc2;
+    instants_.header = read_point_cache_header(instants_.path, PointCacheFormat::kPc2);
+    if (instants_.header.point_count != manifest_.node_count ||
+        instants_.header.sample_count != manifest_.instants.per_frame * manifest_.frame_count) {
+      throw UserError(FileLoc{instants_.path.string()},
+                      "the motion blur instants do not match the manifest; simulate again");
+    }
+  }
 }
 
 void MotionCache::check_scene(const SceneDescription& scene) const {
@@ -101,6 +110,24 @@ void MotionCache::check_scene(const SceneDescription& scene) const {
                                    "settings that change the motion (only edits to the camera, "
                                    "image, light, colours and output keep a cache):{}\n{}",
                                    folder_.string(), manifest_.created, difference, again));
+}
+
+void MotionCache::check_motion_blur(const SceneDescription& scene) const {
+  const MotionBlurDesc& blur = scene.quality.motion_blur;
+  const CacheInstants& cached = manifest_.instants;
+  if (!blur.enabled() || (cached.per_frame == blur.samples && cached.shutter == blur.shutter)) {
+    return;
+  }
+  const std::string held = cached.per_frame == 0
+                               ? "holds no instants between frames"
+                               : fmt::format("holds {} instants a frame over a shutter of {:g}",
+                                             cached.per_frame, cached.shutter);
+  throw UserError(FileLoc{scene.source.string()},
+                  fmt::format("the scene asks for motion blur of {} instants over a shutter of "
+                              "{:g}, and the cache {} {}; simulate again with this scene "
+                              "(dinam simulate {} -o {}), or set image.motion_blur to match",
+                              blur.samples, blur.shutter, folder_.string(), held,
+                              scene.source.string(), folder_.string()));
 }
 
 void MotionCache::check_model(const Model& model) const {
@@ -132,6 +159,21 @@ std::vector<std::vector<Vec3f>> MotionCache::read_frames(int first, int last) co
     }
   }
   return frames;
+}
+
+std::vector<std::vector<Vec3f>> MotionCache::read_instants(int first, int last) const {
+  DINAM_CHECK(manifest_.instants.per_frame > 0 && first >= 1 && first <= last &&
+              last <= manifest_.frame_count);
+  const int per_frame = manifest_.instants.per_frame;
+  std::vector<std::vector<Vec3f>> instants(static_cast<std::size_t>((last - first + 1) * per_frame),
+                                           std::vector<Vec3f>(manifest_.node_count));
+  std::ifstream in(instants_.path, std::ios::binary);
+  for (std::size_t i = 0; i < instants.size(); ++i) {
+    read_point_cache_sample(in, instants_.path, instants_.header,
+                            (first - 1) * per_frame + static_cast<std::int32_t>(i),
+                            instants[i].data());
+  }
+  return instants;
 }
 
 }  // namespace dinam

@@ -29,8 +29,16 @@ class MotionCache {
   // Throws UserError when the model's objects are not the cached ones, node for node.
   void check_model(const Model& model) const;
 
+  // Throws UserError when the scene asks for motion blur that the cache's instants do not give
+  // (none, another count or another shutter), saying how to make a cache that does.
+  void check_motion_blur(const SceneDescription& scene) const;
+
   // Every node's position in frames first … last (1-based, inclusive), as drawn.
   std::vector<std::vector<Vec3f>> read_frames(int first, int last) const;
+
+  // Every node's position at each instant of frames first … last (frame after frame,
+  // manifest().instants.per_frame each). The cache must hold instants.
+  std::vector<std::vector<Vec3f>> read_instants(int first, int last) const;
 
  private:
   struct ObjectCache {
@@ -41,6 +49,7 @@ class MotionCache {
   std::filesystem::path folder_;
   CacheManifest manifest_;
   std::vector<ObjectCache> objects_;  // the cache each object is read from: PC2, else MDD
+  ObjectCache instants_;              // motion blur's, when the cache holds them
 };
 
 }  // namespace dinam

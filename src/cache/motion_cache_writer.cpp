@@ -24,6 +24,7 @@ namespace dinam {
 namespace {
 
 constexpr const char* kManifestName = "manifest.json";
+constexpr const char* kInstantsName = "motion_blur_instants.pc2";
 
 std::string host_name() {
   std::array<char, 256> name{};
@@ -183,10 +184,24 @@ void MotionCacheWriter::open_files(const Model& model) {
     files_.push_back(std::move(files));
   }
   frame_bounds_.reserve(static_cast<std::size_t>(request_.frame_count));
+  if (!request_.instant_offsets.empty()) {
+    // One sample per instant; PC2's start frame and rate place them evenly, as near as a header
+    // can (the manifest holds each instant's exact step).
+    const auto per_frame = static_cast<std::int32_t>(request_.instant_offsets.size());
+    PointCacheHeader header;
+    header.format = PointCacheFormat::kPc2;
+    header.point_count = model.node_count();
+    header.sample_count = per_frame * request_.frame_count;
+    header.start_frame = 1.0f + static_cast<float>(request_.instant_offsets.front()) /
+                                    static_cast<float>(request_.steps_per_frame);
+    header.sample_rate = 1.0f / static_cast<float>(per_frame);
+    instants_ = std::make_unique<PointCacheWriter>(temporary_ / kInstantsName, header);
+  }
 }
 
 void MotionCacheWriter::discard() {
   files_.clear();  // closes the files before their folder goes
+  instants_.reset();
   std::error_code ec;
   std::filesystem::remove_all(temporary_, ec);
 }
@@ -213,12 +228,22 @@ void MotionCacheWriter::add_frame(const std::vector<Vec3f>& positions) {
   }
 }
 
+void MotionCacheWriter::add_instant(const std::vector<Vec3f>& positions) {
+  DINAM_CHECK(instants_ != nullptr && positions.size() == static_cast<std::size_t>(node_count_));
+  instants_->add_sample(positions.data());
+}
+
 void MotionCacheWriter::commit(CacheManifest manifest) {
   DINAM_CHECK(frame_bounds_.size() == static_cast<std::size_t>(request_.frame_count));
   for (ObjectFiles& files : files_) {
     for (PointCacheWriter& cache : files.caches) {
       cache.close();
     }
+  }
+  if (instants_) {
+    instants_->close();
+    manifest.instants = {static_cast<int>(request_.instant_offsets.size()), request_.shutter,
+                         request_.instant_offsets, kInstantsName};
   }
   manifest.dinam_version = kVersion;
   manifest.created = utc_now();

@@ -22,6 +22,11 @@ struct CacheRequest {
   bool mdd = false;
   double fps = 0.0;
   int frame_count = 0;  // samples in each point cache
+  // Motion blur: each frame's instants as steps from its own step (frame_source.hpp), and the
+  // shutter they came from; empty for none.
+  std::vector<int> instant_offsets;
+  double shutter = 0.0;
+  int steps_per_frame = 1;
 };
 
 class MotionCacheWriter {
@@ -36,6 +41,9 @@ class MotionCacheWriter {
 
   // Adds the next frame: every node's position, as drawn.
   void add_frame(const std::vector<Vec3f>& positions);
+
+  // Adds the next instant of motion blur (frame after frame, instant_offsets.size() each).
+  void add_instant(const std::vector<Vec3f>& positions);
 
   // Where a further file of the cache goes (energy.csv) until commit moves it with the rest.
   std::filesystem::path file_path(const std::string& name) const { return temporary_ / name; }
@@ -61,6 +69,7 @@ class MotionCacheWriter {
   std::vector<CacheObjectEntry> entries_;
   std::vector<ObjectFiles> files_;
   std::vector<FrameBounds> frame_bounds_;
+  std::unique_ptr<PointCacheWriter> instants_;  // null without motion blur
   Index node_count_ = 0;
   bool committed_ = false;
 };

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "core/look.hpp"
 #include "core/types.hpp"
 
 namespace dinam {
@@ -26,8 +27,10 @@ struct DrawList {
   std::vector<Index> segment_points;      // (n_segments × 2) ids into the per-frame positions
   std::vector<float> segment_radius;      // (n_segments) m
   std::vector<Vec3f> segment_color;       // (n_segments) linear RGB
+  std::vector<Finish> segment_finish;     // (n_segments), or empty for the default finish
   std::vector<float> point_radius;        // (n_points) m; 0 draws no joint sphere
   std::vector<Vec3f> point_color;         // (n_points) linear RGB, also the surfaces' colour
+  std::vector<Finish> point_finish;       // (n_points) of joints and surfaces, or empty
   std::vector<Eigen::Vector2f> point_uv;  // (n_points) texture coordinates of surface points
   std::vector<SurfaceBatch> surfaces;
   std::vector<Image> textures;  // sRGB-encoded RGBA, as read from PNG files
@@ -44,6 +47,10 @@ struct DrawList {
 
   Vec3f light_direction{0.35f, -0.45f, 0.82f};  // towards the light; normalised when drawn
   bool shadows = true;
+  float light_size_degrees = 2.0f;  // the sun's apparent diameter, which sets soft penumbras
+  // m: how far ambient occlusion looks for nearby surfaces; a few wire radii to a tenth of the
+  // subject.
+  float occlusion_radius = 0.1f;
   // A box that holds everything that casts a shadow in every frame, so the shadow map's framing
   // does not change between frames.
   Vec3f shadow_bounds_min = Vec3f::Constant(-1.0f);

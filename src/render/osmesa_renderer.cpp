@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "render/camera.hpp"
@@ -14,9 +15,13 @@
 namespace dinam {
 namespace {
 
-constexpr int kBarFloats = 10;
-constexpr int kNodeFloats = 7;
-constexpr int kShadowTextureUnit = 1;
+constexpr int kBarFloats = 13;
+constexpr int kNodeFloats = 10;
+// Texture units: 0 for surface textures and the passes' inputs, then the shadow map read two
+// ways (lighting.glsl), then the occlusion beside the colour.
+constexpr int kShadowCompareUnit = 1;
+constexpr int kShadowDepthUnit = 2;
+constexpr int kOcclusionUnit = 3;
 const Vec3f kHorizonColor{0.78f, 0.82f, 0.86f};
 const Vec3f kZenithColor{0.30f, 0.45f, 0.68f};
 
@@ -74,29 +79,15 @@ void set_vec3(int location, const Vec3f& v) {
   glUniform3f(location, v.x(), v.y(), v.z());
 }
 
-// The shadow map's view of the scene: an orthographic box around the shadow bounds, seen along
-// the light. Returns clip_from_world (for drawing into the map) and writes the [0, 1]³ version
-// used to look it up.
-Mat4f light_clip_from_world(const DrawList& list, Mat4f& light_from_world) {
-  const Vec3f center = 0.5f * (list.shadow_bounds_min + list.shadow_bounds_max);
-  const float radius =
-      std::max(0.5f * (list.shadow_bounds_max - list.shadow_bounds_min).norm(), 1e-3f);
-  const Vec3f direction = list.light_direction.normalized();
-  RenderCamera light;
-  light.position = center + 2.0f * radius * direction;
-  light.look_at = center;
-  light.up = std::abs(direction.z()) < 0.9f ? Vec3f::UnitZ() : Vec3f::UnitX();
-  Mat4f ortho = Mat4f::Identity();  // x, y in [−r, r], depth from r to 3r in front of the light
-  ortho(0, 0) = 1.0f / radius;
-  ortho(1, 1) = 1.0f / radius;
-  ortho(2, 2) = -1.0f / radius;
-  ortho(2, 3) = -2.0f;
-  Mat4f clip = ortho * eye_from_world(light);
-  Mat4f to_unit = Mat4f::Identity();
-  to_unit.topLeftCorner<3, 3>() *= 0.5f;
-  to_unit.topRightCorner<3, 1>().setConstant(0.5f);
-  light_from_world = to_unit * clip;
-  return clip;
+void bind_texture(int unit, unsigned texture) {
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+const Finish& finish_of(const std::vector<Finish>& finishes, std::size_t i) {
+  static const Finish kDefault;
+  return i < finishes.size() ? finishes[i] : kDefault;
 }
 
 }  // namespace
@@ -106,10 +97,13 @@ struct OsmesaRenderer::Programs {
   ShaderProgram node{"node.vert", "lit.frag", {"lighting.glsl"}};
   ShaderProgram surface{"surface.vert", "lit.frag", {"lighting.glsl"}};
   ShaderProgram ground{"ground.vert", "ground.frag", {"lighting.glsl"}};
-  ShaderProgram sky{"sky.vert", "sky.frag"};
+  ShaderProgram sky{"full_screen.vert", "sky.frag"};
   ShaderProgram bar_depth{"bar.vert", "depth.frag"};
   ShaderProgram node_depth{"node.vert", "depth.frag"};
   ShaderProgram surface_depth{"surface.vert", "depth.frag"};
+  ShaderProgram occlusion{"full_screen.vert", "ambient_occlusion.frag"};
+  ShaderProgram accumulate{"full_screen.vert", "accumulate.frag"};
+  ShaderProgram finish{"full_screen.vert", "finish.frag"};
 };
 
 OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
@@ -119,7 +113,11 @@ OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
   samples_ = std::clamp(settings.samples, 1, static_cast<int>(max_samples));
   programs_ = std::make_unique<Programs>();
   create_buffers();
-  create_framebuffers();
+  targets_ = std::make_unique<FrameTargets>(context_.width(), context_.height(), samples_,
+                                            settings.look.ambient_occlusion);
+  if (settings.shadow_resolution > 0) {
+    shadow_map_ = std::make_unique<ShadowMap>(settings.shadow_resolution);
+  }
 }
 
 OsmesaRenderer::~OsmesaRenderer() {
@@ -129,17 +127,9 @@ OsmesaRenderer::~OsmesaRenderer() {
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
   glDeleteBuffers(static_cast<GLsizei>(batch_ebos_.size()), batch_ebos_.data());
   glDeleteTextures(static_cast<GLsizei>(texture_ids_.size()), texture_ids_.data());
-  const unsigned arrays[] = {cylinder_vao_, sphere_vao_, surface_vao_, ground_vao_, sky_vao_};
+  const unsigned arrays[] = {cylinder_vao_, sphere_vao_, surface_vao_, ground_vao_,
+                             full_screen_vao_};
   glDeleteVertexArrays(static_cast<GLsizei>(std::size(arrays)), arrays);
-  if (msaa_fbo_ != 0) {
-    glDeleteFramebuffers(1, &msaa_fbo_);
-    const unsigned renderbuffers[] = {msaa_color_, msaa_depth_};
-    glDeleteRenderbuffers(2, renderbuffers);
-  }
-  if (shadow_fbo_ != 0) {
-    glDeleteFramebuffers(1, &shadow_fbo_);
-    glDeleteTextures(1, &shadow_texture_);
-  }
 }
 
 void OsmesaRenderer::create_buffers() {
@@ -147,9 +137,9 @@ void OsmesaRenderer::create_buffers() {
   glGenBuffers(1, &cylinder_vbo_);
   glGenBuffers(1, &cylinder_ebo_);
   glGenBuffers(1, &bar_instance_vbo_);
-  cylinder_index_count_ =
-      upload_primitive(make_unit_cylinder(10), cylinder_vao_, cylinder_vbo_, cylinder_ebo_);
-  attributes(bar_instance_vbo_, 2, {3, 3, 1, 3}, 1);
+  cylinder_index_count_ = upload_primitive(make_unit_cylinder(settings_.look.cylinder_sides),
+                                           cylinder_vao_, cylinder_vbo_, cylinder_ebo_);
+  attributes(bar_instance_vbo_, 2, {3, 3, 1, 3, 3}, 1);
 
   glGenVertexArrays(1, &sphere_vao_);
   glGenBuffers(1, &sphere_vbo_);
@@ -157,14 +147,14 @@ void OsmesaRenderer::create_buffers() {
   glGenBuffers(1, &node_instance_vbo_);
   sphere_index_count_ =
       upload_primitive(make_unit_sphere(8, 5), sphere_vao_, sphere_vbo_, sphere_ebo_);
-  attributes(node_instance_vbo_, 2, {3, 1, 3}, 1);
+  attributes(node_instance_vbo_, 2, {3, 1, 3, 3}, 1);
 
   glGenVertexArrays(1, &surface_vao_);
   glGenBuffers(1, &surface_dynamic_vbo_);
   glGenBuffers(1, &surface_static_vbo_);
   glBindVertexArray(surface_vao_);
   attributes(surface_dynamic_vbo_, 0, {3, 3}, 0);
-  attributes(surface_static_vbo_, 2, {3, 2}, 0);
+  attributes(surface_static_vbo_, 2, {3, 2, 3}, 0);
 
   glGenVertexArrays(1, &ground_vao_);
   glGenBuffers(1, &ground_vbo_);
@@ -175,50 +165,8 @@ void OsmesaRenderer::create_buffers() {
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), float_offset(0));
 
-  glGenVertexArrays(1, &sky_vao_);  // the sky triangle is made from gl_VertexID alone
+  glGenVertexArrays(1, &full_screen_vao_);  // its triangle is made from gl_VertexID alone
   glBindVertexArray(0);
-}
-
-void OsmesaRenderer::create_framebuffers() {
-  if (samples_ > 1) {
-    glGenFramebuffers(1, &msaa_fbo_);
-    glGenRenderbuffers(1, &msaa_color_);
-    glGenRenderbuffers(1, &msaa_depth_);
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_color_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, context_.width(),
-                                     context_.height());
-    glBindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH_COMPONENT24,
-                                     context_.width(), context_.height());
-    glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_color_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw RuntimeError(fmt::format("cannot create a {}× multisampled framebuffer", samples_));
-    }
-  }
-  if (settings_.shadow_resolution > 0) {
-    const int size = settings_.shadow_resolution;
-    glGenTextures(1, &shadow_texture_);
-    glBindTexture(GL_TEXTURE_2D, shadow_texture_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size, size, 0, GL_DEPTH_COMPONENT,
-                 GL_UNSIGNED_INT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-    glGenFramebuffers(1, &shadow_fbo_);
-    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, shadow_texture_, 0);
-    glDrawBuffer(GL_NONE);
-    glReadBuffer(GL_NONE);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw RuntimeError(fmt::format("cannot create a {}² shadow map", size));
-    }
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void OsmesaRenderer::upload_static(const DrawList& list) {
@@ -227,14 +175,16 @@ void OsmesaRenderer::upload_static(const DrawList& list) {
   }
   static_list_ = &list;
   static_revision_ = list.revision;
-  // Colour and texture coordinates of every point, for the surfaces.
+  // Colour, texture coordinates and finish of every point, for the surfaces.
   std::vector<float> attributes_data;
-  attributes_data.reserve(list.point_color.size() * 5);
+  attributes_data.reserve(list.point_color.size() * 8);
   for (std::size_t p = 0; p < list.point_color.size(); ++p) {
     const Vec3f& c = list.point_color[p];
     const Eigen::Vector2f uv =
         p < list.point_uv.size() ? list.point_uv[p] : Eigen::Vector2f::Zero();
-    attributes_data.insert(attributes_data.end(), {c.x(), c.y(), c.z(), uv.x(), uv.y()});
+    const Finish& f = finish_of(list.point_finish, p);
+    attributes_data.insert(attributes_data.end(),
+                           {c.x(), c.y(), c.z(), uv.x(), uv.y(), f.roughness, f.metallic, f.sheen});
   }
   glBindBuffer(GL_ARRAY_BUFFER, surface_static_vbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(attributes_data.size() * sizeof(float)),
@@ -278,9 +228,10 @@ void OsmesaRenderer::upload_frame(const DrawList& list, const std::vector<Vec3f>
     const Vec3f& p0 = positions[list.segment_points[2 * s]];
     const Vec3f& p1 = positions[list.segment_points[2 * s + 1]];
     const Vec3f& c = list.segment_color[s];
+    const Finish& f = finish_of(list.segment_finish, s);
     const float values[kBarFloats] = {
-        p0.x(), p0.y(), p0.z(), p1.x(), p1.y(), p1.z(), list.segment_radius[s],
-        c.x(),  c.y(),  c.z()};
+        p0.x(), p0.y(), p0.z(), p1.x(),      p1.y(),     p1.z(), list.segment_radius[s],
+        c.x(),  c.y(),  c.z(),  f.roughness, f.metallic, f.sheen};
     std::memcpy(bar_instances_.data() + s * kBarFloats, values, sizeof(values));
   }
   upload(bar_instance_vbo_, bar_instances_);
@@ -290,8 +241,10 @@ void OsmesaRenderer::upload_frame(const DrawList& list, const std::vector<Vec3f>
     if (list.point_radius[p] > 0.0f) {
       const Vec3f& x = positions[p];
       const Vec3f& c = list.point_color[p];
+      const Finish& f = finish_of(list.point_finish, p);
       node_instances_.insert(node_instances_.end(),
-                             {x.x(), x.y(), x.z(), list.point_radius[p], c.x(), c.y(), c.z()});
+                             {x.x(), x.y(), x.z(), list.point_radius[p], c.x(), c.y(), c.z(),
+                              f.roughness, f.metallic, f.sheen});
     }
   }
   upload(node_instance_vbo_, node_instances_);
@@ -323,22 +276,37 @@ void OsmesaRenderer::upload_frame(const DrawList& list, const std::vector<Vec3f>
   upload(surface_dynamic_vbo_, surface_vertices_);
 }
 
+void OsmesaRenderer::set_lighting(const ShaderProgram& program, const DrawList& list,
+                                  const RenderCamera& camera, const Mat4f* light_from_world) const {
+  const LookSettings& look = settings_.look;
+  set_vec3(program.uniform("light_direction"), list.light_direction.normalized());
+  set_vec3(program.uniform("eye_position"), camera.position);
+  glUniform1i(program.uniform("shadows_enabled"), light_from_world != nullptr ? 1 : 0);
+  glUniform1i(program.uniform("soft_shadows"), look.soft_shadows ? 1 : 0);
+  const float radians = 0.5f * list.light_size_degrees * std::numbers::pi_v<float> / 180.0f;
+  glUniform1f(program.uniform("light_tan"), std::tan(radians));
+  // Both shadow samplers always name their own units: two sampler types on one unit would make
+  // every draw call fail, shadows or not.
+  glUniform1i(program.uniform("shadow_map"), kShadowCompareUnit);
+  glUniform1i(program.uniform("shadow_depth"), kShadowDepthUnit);
+  if (light_from_world != nullptr) {
+    glUniformMatrix4fv(program.uniform("light_from_world"), 1, GL_FALSE, light_from_world->data());
+  }
+  glUniform1i(program.uniform("sky_light"), look.sky_light ? 1 : 0);
+  set_vec3(program.uniform("horizon_color"), kHorizonColor);
+  set_vec3(program.uniform("zenith_color"), kZenithColor);
+}
+
 void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
                                  const float* clip_from_world, const RenderCamera& camera,
-                                 const float* light_from_world) {
+                                 const Mat4f* light_from_world) {
   const auto prepare = [&](const ShaderProgram& program) {
     program.use();
     glUniformMatrix4fv(program.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world);
     if (depth_only) {
       return;
     }
-    set_vec3(program.uniform("light_direction"), list.light_direction.normalized());
-    set_vec3(program.uniform("eye_position"), camera.position);
-    glUniform1i(program.uniform("shadows_enabled"), light_from_world != nullptr ? 1 : 0);
-    glUniform1i(program.uniform("shadow_map"), kShadowTextureUnit);
-    if (light_from_world != nullptr) {
-      glUniformMatrix4fv(program.uniform("light_from_world"), 1, GL_FALSE, light_from_world);
-    }
+    set_lighting(program, list, camera, light_from_world);
     glUniform1i(program.uniform("use_texture"), 0);
     glUniform1i(program.uniform("surface_texture"), 0);
   };
@@ -363,9 +331,7 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
       const int texture = list.surfaces[b].texture;
       if (!depth_only) {
         glUniform1i(program.uniform("use_texture"), texture >= 0 ? 1 : 0);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D,
-                      texture >= 0 ? texture_ids_[static_cast<std::size_t>(texture)] : 0);
+        bind_texture(0, texture >= 0 ? texture_ids_[static_cast<std::size_t>(texture)] : 0);
       }
       glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, batch_ebos_[b]);
       glDrawElements(GL_TRIANGLES, batch_index_counts_[b], GL_UNSIGNED_INT, nullptr);
@@ -374,42 +340,55 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
   glBindVertexArray(0);
 }
 
-void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& positions,
-                            const RenderCamera& camera, Image& image) {
-  DINAM_CHECK(positions.size() == list.point_radius.size());
-  const int width = context_.width();
-  const int height = context_.height();
-  upload_static(list);
-  upload_frame(list, positions);
+void OsmesaRenderer::draw_ground(const DrawList& list, const Mat4f& clip_from_world,
+                                 const RenderCamera& camera, const Mat4f* light_from_world) {
+  const ShaderProgram& ground = programs_->ground;
+  ground.use();
+  glUniformMatrix4fv(ground.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world.data());
+  // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
+  const Vec3f normal = list.ground_normal.normalized();
+  const Vec3f seed = std::abs(normal.x()) < 0.9f ? Vec3f::UnitX() : Vec3f::UnitY();
+  const Vec3f axis_u = (seed - seed.dot(normal) * normal).normalized();
+  set_vec3(ground.uniform("center"), list.ground_center);
+  set_vec3(ground.uniform("axis_u"), axis_u);
+  set_vec3(ground.uniform("axis_v"), normal.cross(axis_u));
+  set_vec3(ground.uniform("plane_normal"), normal);
+  glUniform1f(ground.uniform("half_size"), list.ground_half_size);
+  glUniform1f(ground.uniform("fade_distance"), 0.9f * list.ground_half_size);
+  glUniform1f(ground.uniform("tile_size"), list.ground_checker ? list.ground_tile : 0.0f);
+  set_lighting(ground, list, camera, light_from_world);
+  glBindVertexArray(ground_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 6);
+  glBindVertexArray(0);
+}
+
+void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sample) {
+  const RenderCamera& camera = sample.camera;
+  upload_frame(list, *sample.positions);
 
   // 1. Shadow map: depth from the light, for everything but the ground.
   Mat4f light_from_world = Mat4f::Identity();
-  const bool shadows = list.shadows && shadow_fbo_ != 0;
+  const bool shadows = list.shadows && shadow_map_ != nullptr;
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   if (shadows) {
-    const Mat4f light_clip = light_clip_from_world(list, light_from_world);
-    glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
-    glViewport(0, 0, settings_.shadow_resolution, settings_.shadow_resolution);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.5f, 2.0f);
+    const Mat4f light_clip = shadow_map_->begin(list, light_from_world);
     draw_shapes(list, true, light_clip.data(), camera, nullptr);
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    shadow_map_->end();
+    shadow_map_->bind(kShadowCompareUnit, kShadowDepthUnit);
+  } else {
+    ShadowMap::unbind(kShadowCompareUnit, kShadowDepthUnit);
   }
-  glActiveTexture(GL_TEXTURE0 + kShadowTextureUnit);
-  glBindTexture(GL_TEXTURE_2D, shadows ? shadow_texture_ : 0);
-  glActiveTexture(GL_TEXTURE0);
+  const Mat4f* light = shadows ? &light_from_world : nullptr;
 
   // 2. The view: near and far planes bracket the scene around the look-at distance.
   const float distance = (camera.look_at - camera.position).norm();
   const float far_plane = std::max(100.0f * distance, 4.0f * list.ground_half_size + distance);
-  const Mat4f clip_from_world =
-      clip_from_eye(camera.fov_degrees, static_cast<float>(width) / static_cast<float>(height),
-                    0.01f * distance, far_plane) *
-      eye_from_world(camera);
-  glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
-  glViewport(0, 0, width, height);
+  const float aspect = static_cast<float>(context_.width()) / static_cast<float>(context_.height());
+  const Mat4f clip_from_eye =
+      dinam::clip_from_eye(camera.fov_degrees, aspect, 0.01f * distance, far_plane);
+  const Mat4f clip_from_world = clip_from_eye * eye_from_world(camera);
+  targets_->bind_scene();
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
   // 3. Sky, behind everything.
@@ -417,47 +396,72 @@ void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& posi
   programs_->sky.use();
   set_vec3(programs_->sky.uniform("horizon_color"), kHorizonColor);
   set_vec3(programs_->sky.uniform("zenith_color"), kZenithColor);
-  glBindVertexArray(sky_vao_);
+  glBindVertexArray(full_screen_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glEnable(GL_DEPTH_TEST);
 
-  // 4. Ground, lit and shadowed.
+  // 4. Ground, then bars, joints and surfaces, lit and shadowed.
   if (list.ground_visible) {
-    const ShaderProgram& ground = programs_->ground;
-    ground.use();
-    glUniformMatrix4fv(ground.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world.data());
-    // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
-    const Vec3f normal = list.ground_normal.normalized();
-    const Vec3f seed = std::abs(normal.x()) < 0.9f ? Vec3f::UnitX() : Vec3f::UnitY();
-    const Vec3f axis_u = (seed - seed.dot(normal) * normal).normalized();
-    set_vec3(ground.uniform("center"), list.ground_center);
-    set_vec3(ground.uniform("axis_u"), axis_u);
-    set_vec3(ground.uniform("axis_v"), normal.cross(axis_u));
-    set_vec3(ground.uniform("plane_normal"), normal);
-    glUniform1f(ground.uniform("half_size"), list.ground_half_size);
-    glUniform1f(ground.uniform("fade_distance"), 0.9f * list.ground_half_size);
-    glUniform1f(ground.uniform("tile_size"), list.ground_checker ? list.ground_tile : 0.0f);
-    set_vec3(ground.uniform("horizon_color"), kHorizonColor);
-    set_vec3(ground.uniform("light_direction"), list.light_direction.normalized());
-    set_vec3(ground.uniform("eye_position"), camera.position);
-    glUniform1i(ground.uniform("shadows_enabled"), shadows ? 1 : 0);
-    glUniform1i(ground.uniform("shadow_map"), kShadowTextureUnit);
-    glUniformMatrix4fv(ground.uniform("light_from_world"), 1, GL_FALSE, light_from_world.data());
-    glBindVertexArray(ground_vao_);
-    glDrawArrays(GL_TRIANGLES, 0, 6);
+    draw_ground(list, clip_from_world, camera, light);
   }
+  draw_shapes(list, false, clip_from_world.data(), camera, light);
 
-  // 5. Bars, joints and surfaces.
-  draw_shapes(list, false, clip_from_world.data(), camera,
-              shadows ? light_from_world.data() : nullptr);
-
-  // 6. Resolve the samples into the default framebuffer (the OSMesa buffer), then read it.
-  if (msaa_fbo_ != 0) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // 5. The samples resolved to textures, and the occlusion they imply.
+  targets_->resolve();
+  glDisable(GL_DEPTH_TEST);
+  if (settings_.look.ambient_occlusion) {
+    draw_occlusion(list, clip_from_eye);
   }
+}
+
+void OsmesaRenderer::draw_occlusion(const DrawList& list, const Mat4f& clip_from_eye) {
+  const ShaderProgram& program = programs_->occlusion;
+  targets_->bind_occlusion();
+  program.use();
+  bind_texture(0, targets_->depth_texture());
+  glUniform1i(program.uniform("scene_depth"), 0);
+  const Mat4f eye_from_clip = clip_from_eye.inverse();
+  glUniformMatrix4fv(program.uniform("eye_from_clip"), 1, GL_FALSE, eye_from_clip.data());
+  glUniformMatrix4fv(program.uniform("clip_from_eye"), 1, GL_FALSE, clip_from_eye.data());
+  glUniform1f(program.uniform("radius"), list.occlusion_radius);
+  glUniform2f(program.uniform("pixel_size"), 1.0f / static_cast<float>(context_.width()),
+              1.0f / static_cast<float>(context_.height()));
+  glBindVertexArray(full_screen_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void OsmesaRenderer::add_to_sum(float weight) {
+  const ShaderProgram& program = programs_->accumulate;
+  targets_->bind_sum();
+  program.use();
+  bind_texture(0, targets_->color_texture());
+  glUniform1i(program.uniform("scene_color"), 0);
+  const bool occlusion = settings_.look.ambient_occlusion;
+  bind_texture(kOcclusionUnit, occlusion ? targets_->occlusion_texture() : 0);
+  glUniform1i(program.uniform("occlusion"), kOcclusionUnit);
+  glUniform1i(program.uniform("use_occlusion"), occlusion ? 1 : 0);
+  glUniform1f(program.uniform("weight"), weight);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glBindVertexArray(full_screen_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+}
+
+void OsmesaRenderer::finish_into_image(Image& image) {
+  const int width = context_.width();
+  const int height = context_.height();
+  const ShaderProgram& program = programs_->finish;
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the OSMesa buffer
+  glViewport(0, 0, width, height);
+  program.use();
+  bind_texture(0, targets_->sum_texture());
+  glUniform1i(program.uniform("frame_color"), 0);
+  glUniform1f(program.uniform("exposure_scale"), std::exp2(settings_.look.exposure));
+  glUniform1i(program.uniform("tone_mapping"), settings_.look.tone_mapping ? 1 : 0);
+  glBindVertexArray(full_screen_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
   glFinish();
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     throw RuntimeError(fmt::format("OpenGL error 0x{:x} while drawing a frame", error));
@@ -471,6 +475,23 @@ void OsmesaRenderer::render(const DrawList& list, const std::vector<Vec3f>& posi
     std::memcpy(image.rgba.data() + static_cast<std::size_t>(height - 1 - y) * row_bytes,
                 source + static_cast<std::size_t>(y) * row_bytes, row_bytes);
   }
+}
+
+void OsmesaRenderer::render(const DrawList& list, std::span<const FrameSample> samples,
+                            Image& image) {
+  DINAM_CHECK(!samples.empty());
+  upload_static(list);
+  targets_->bind_sum();
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const float weight = 1.0f / static_cast<float>(samples.size());
+  for (const FrameSample& sample : samples) {
+    DINAM_CHECK(sample.positions != nullptr &&
+                sample.positions->size() == list.point_radius.size());
+    draw_instant(list, sample);
+    add_to_sum(weight);
+  }
+  finish_into_image(image);
 }
 
 }  // namespace dinam

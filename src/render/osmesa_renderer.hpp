@@ -1,14 +1,18 @@
 #pragma once
 // The Renderer on OSMesa (Mesa's software OpenGL, core profile): a sky gradient, a checkered
 // ground that takes shadows, bars as lit instanced cylinders, joints as spheres, mesh faces as
-// two-sided surfaces (plain or textured), a shadow map from the directional light, and
-// multisampled anti-aliasing. One renderer draws many frames of one size.
+// two-sided surfaces (plain or textured), a shadow map from the sun, multisampled anti-aliasing,
+// then (core/look.hpp) ambient occlusion, the average of a frame's instants (motion blur) and tone
+// mapping. One renderer draws many frames of one size.
 #include <memory>
 #include <vector>
 
+#include "core/look.hpp"
+#include "render/frame_targets.hpp"
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 #include "render/shader_program.hpp"
+#include "render/shadow_map.hpp"
 
 namespace dinam {
 
@@ -17,6 +21,7 @@ struct RenderSettings {
   int height = 720;
   int samples = 4;               // multisampling; clamped to what the driver offers, 1 is off
   int shadow_resolution = 2048;  // texels per side of the shadow map; 0 turns shadows off
+  LookSettings look;
 };
 
 class OsmesaRenderer final : public Renderer {
@@ -26,31 +31,40 @@ class OsmesaRenderer final : public Renderer {
   OsmesaRenderer(const OsmesaRenderer&) = delete;
   OsmesaRenderer& operator=(const OsmesaRenderer&) = delete;
 
-  void render(const DrawList& list, const std::vector<Vec3f>& positions, const RenderCamera& camera,
-              Image& image) override;
+  using Renderer::render;
+  void render(const DrawList& list, std::span<const FrameSample> samples, Image& image) override;
 
   int samples() const { return samples_; }
 
  private:
   struct Programs;
   void create_buffers();
-  void create_framebuffers();
   void upload_static(const DrawList& list);
   void upload_frame(const DrawList& list, const std::vector<Vec3f>& positions);
+  // One instant into the frame targets, and its occlusion when asked.
+  void draw_instant(const DrawList& list, const FrameSample& sample);
+  void draw_ground(const DrawList& list, const Mat4f& clip_from_world, const RenderCamera& camera,
+                   const Mat4f* light_from_world);
   void draw_shapes(const DrawList& list, bool depth_only, const float* clip_from_world,
-                   const RenderCamera& camera, const float* light_from_world);
+                   const RenderCamera& camera, const Mat4f* light_from_world);
+  // The lighting uniforms of lighting.glsl; `light_from_world` null when there are no shadows.
+  void set_lighting(const ShaderProgram& program, const DrawList& list, const RenderCamera& camera,
+                    const Mat4f* light_from_world) const;
+  void draw_occlusion(const DrawList& list, const Mat4f& clip_from_eye);
+  void add_to_sum(float weight);
+  void finish_into_image(Image& image);
 
   GlContext context_;
   RenderSettings settings_;
   int samples_ = 1;
   std::unique_ptr<Programs> programs_;
+  std::unique_ptr<FrameTargets> targets_;
+  std::unique_ptr<ShadowMap> shadow_map_;  // null when shadows are off
 
   unsigned cylinder_vao_ = 0, cylinder_vbo_ = 0, cylinder_ebo_ = 0, bar_instance_vbo_ = 0;
   unsigned sphere_vao_ = 0, sphere_vbo_ = 0, sphere_ebo_ = 0, node_instance_vbo_ = 0;
   unsigned surface_vao_ = 0, surface_dynamic_vbo_ = 0, surface_static_vbo_ = 0;
-  unsigned ground_vao_ = 0, ground_vbo_ = 0, sky_vao_ = 0;
-  unsigned msaa_fbo_ = 0, msaa_color_ = 0, msaa_depth_ = 0;
-  unsigned shadow_fbo_ = 0, shadow_texture_ = 0;
+  unsigned ground_vao_ = 0, ground_vbo_ = 0, full_screen_vao_ = 0;
   int cylinder_index_count_ = 0;
   int sphere_index_count_ = 0;
 
@@ -61,8 +75,8 @@ class OsmesaRenderer final : public Renderer {
   std::vector<int> batch_index_counts_;  // (n_batches)
   std::vector<unsigned> texture_ids_;    // (n_textures)
 
-  std::vector<float> bar_instances_;     // (n_segments × 10) p0, p1, radius, colour
-  std::vector<float> node_instances_;    // (n_joints × 7) centre, radius, colour
+  std::vector<float> bar_instances_;     // (n_segments × 13) p0, p1, radius, colour, finish
+  std::vector<float> node_instances_;    // (n_joints × 10) centre, radius, colour, finish
   std::vector<float> surface_vertices_;  // (n_points × 6) position, normal
   std::vector<Vec3f> point_normals_;     // (n_points)
 };

@@ -36,6 +36,15 @@ void read_friction(YamlMap map, double& static_friction, double& kinetic_frictio
 ContactDesc read_contact(YamlMap map);
 ObjectContactDesc read_object_contact(YamlMap map);
 
+// The scene's `camera` (a map, or `auto`).
+CameraDesc read_camera(const YAML::Node& node, const std::string& file);
+
+// The scene's `image` map: size, quality preset and the features it sets; into `scene`.
+void read_image(YamlMap map, SceneDescription& scene);
+
+// An object's `finish`: a preset name or {roughness, metallic, sheen}.
+Finish read_finish(const YAML::Node& node, const std::string& file, const std::string& what);
+
 // One entry of `objects`, its mesh loaded.
 ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder);
 

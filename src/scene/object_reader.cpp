@@ -465,6 +465,9 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
                      map.path("color"));
   }
   object.color = color.cast<float>();
+  if (map.has("finish")) {
+    object.finish = read_finish(map.get("finish"), map.file(), map.path("finish"));
+  }
   const std::string style = map.string("style", object.mesh.faces.empty() ? "wire" : "surface");
   if (style == "surface") {
     object.style = DrawStyle::kSurface;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/look.hpp"
 #include "scene/raw_mesh.hpp"
 
 namespace dinam {
@@ -156,13 +157,34 @@ struct ObjectDesc {
   bool joints = true;                   // spheres at the nodes of wires, so bars meet smoothly
   std::filesystem::path texture;        // a PNG laid on the surface by the mesh uv; optional
   FileLoc texture_loc;                  // the 'texture' key, or the mesh's for its own texture
+  Finish finish;                        // how its surface takes the light (core/look.hpp)
+};
+
+// A camera key of a path: where the eye is at a time, what it looks at, its field of view.
+struct CameraKeyDesc {
+  double time = 0.0;  // s
+  Vec3 position = Vec3::Zero();
+  Vec3 look_at = Vec3::Zero();
+  double fov_degrees = 40.0;
+  FileLoc loc;
+};
+
+// A camera circling a centre at a height, looking at it.
+struct OrbitDesc {
+  std::optional<Vec3> center;    // m; default: the centre of the motion's subject
+  std::optional<double> radius;  // m, horizontal; default: far enough to see all of the subject
+  double height = 0.0;           // m, of the eye above the centre; default: a fifth of the radius
+  bool height_given = false;
+  double turns = 1.0;            // over the duration; negative turns clockwise seen from above
+  double start_degrees = -90.0;  // where the eye starts, around the up axis from +x
 };
 
 struct CameraDesc {
   // kFixed: position and look_at as given. kAuto: looks along `direction` at the motion's
   // bounding box over every frame, just far enough to see all of it. kFollow: keeps `offset`
-  // from the centroid of `follow`'s nodes.
-  enum class Mode { kFixed, kAuto, kFollow };
+  // from the centroid of `follow`'s nodes. kPath: moves smoothly through `keys`. kOrbit: circles
+  // as `orbit` says.
+  enum class Mode { kFixed, kAuto, kFollow, kPath, kOrbit };
   Mode mode = Mode::kAuto;
   Vec3 position{4.0, -6.0, 3.0};  // m
   Vec3 look_at{0.0, 0.0, 1.0};    // m
@@ -171,15 +193,36 @@ struct CameraDesc {
   Vec3 direction{-0.55, 0.75, -0.36};  // auto: from the eye towards the scene
   std::string follow;                  // follow: the object's name
   Vec3 offset{3.0, -4.0, 1.5};         // follow: eye minus target, m
+  std::vector<CameraKeyDesc> keys;     // path: at increasing times
+  OrbitDesc orbit;
   FileLoc loc;
 };
 
+// Motion blur: each frame is the mean of `samples` instants spread evenly over a shutter interval
+// of `shutter` frame intervals centred on the frame's time, each at a step of the simulation.
+struct MotionBlurDesc {
+  int samples = 1;       // 1: none
+  double shutter = 0.5;  // fraction of the frame interval, in (0, 1]
+
+  bool enabled() const { return samples > 1; }
+};
+
+// Presets of the picture's features: `draft` for quick looks, `standard` (the default), `final`
+// for frames to show. Keys given beside `quality` override the preset's choice.
+enum class QualityPreset { kDraft, kStandard, kFinal };
+
 // Picture quality, which trades against the time per frame.
 struct RenderQualityDesc {
+  QualityPreset preset = QualityPreset::kStandard;
   int samples = 4;  // multisampled anti-aliasing; 1 turns it off
   bool shadows = true;
   int shadow_resolution = 2048;  // texels per side
+  LookSettings look;             // soft shadows, ambient occlusion, sky light, tone mapping
+  MotionBlurDesc motion_blur;
 };
+
+// What each preset chooses (docs/scene-format.md has the table).
+RenderQualityDesc quality_preset(QualityPreset preset);
 
 enum class MovieFormat { kMp4, kGif, kNone };
 
@@ -299,6 +342,7 @@ struct SceneDescription {
   int image_height = 720;
   RenderQualityDesc quality;
   Vec3 light_direction{0.35, -0.45, 0.82};  // towards the sun
+  double light_size_degrees = 2.0;          // the sun's apparent diameter (soft shadows)
   std::filesystem::path output;             // folder for frames and the movie
   MovieFormat movie = MovieFormat::kMp4;
 

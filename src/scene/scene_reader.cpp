@@ -28,54 +28,6 @@ namespace {
 constexpr int kSceneVersion = 1;
 constexpr double kPi = std::numbers::pi;
 
-CameraDesc read_camera(const YAML::Node& node, const std::string& file) {
-  CameraDesc camera;
-  camera.loc = loc_of(node, file);
-  if (node.IsScalar() && node.Scalar() == "auto") {
-    camera.mode = CameraDesc::Mode::kAuto;
-    return camera;
-  }
-  YamlMap map(node, file, "camera");
-  const bool has_view = map.has("position") || map.has("look_at");
-  camera.position = map.vec3("position", camera.position);
-  camera.look_at = map.vec3("look_at", camera.look_at);
-  camera.up = map.vec3("up", camera.up);
-  camera.fov_degrees = map.number("fov", camera.fov_degrees);
-  camera.follow = map.string("follow", "");
-  const bool automatic = map.boolean("auto", false);
-  if (!camera.follow.empty()) {
-    camera.mode = CameraDesc::Mode::kFollow;
-    camera.offset = has_view ? Vec3(camera.position - camera.look_at) : camera.offset;
-    camera.offset = map.vec3("offset", camera.offset);
-  } else if (automatic || !has_view) {
-    camera.mode = CameraDesc::Mode::kAuto;
-    camera.direction = has_view ? Vec3(camera.look_at - camera.position) : camera.direction;
-    camera.direction = map.vec3("direction", camera.direction);
-  } else {
-    camera.mode = CameraDesc::Mode::kFixed;
-  }
-  map.finish();
-  const Vec3 view = camera.mode == CameraDesc::Mode::kFixed ? Vec3(camera.look_at - camera.position)
-                    : camera.mode == CameraDesc::Mode::kAuto ? camera.direction
-                                                             : Vec3(-camera.offset);
-  if (view.norm() < 1e-9) {
-    throw_user_error(map.loc(),
-                     "'camera': the line of sight is zero (look_at equals position, or "
-                     "a zero direction or offset)");
-  }
-  if (camera.up.norm() < 1e-9 || view.normalized().cross(camera.up.normalized()).norm() < 1e-6) {
-    throw_user_error(map.loc("up"),
-                     "'camera.up' must be a non-zero direction not parallel to the line of sight");
-  }
-  if (!(camera.fov_degrees > 0.0 && camera.fov_degrees < 180.0)) {
-    throw_user_error(map.loc("fov"),
-                     "'camera.fov' is the vertical field of view in degrees, between 0 and 180; "
-                     "got {}",
-                     camera.fov_degrees);
-  }
-  return camera;
-}
-
 GroundDesc read_ground(YamlMap map) {
   GroundDesc ground;
   ground.loc = map.loc();
@@ -368,30 +320,7 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     scene.camera = read_camera(map.get("camera"), file);
   }
   if (map.has("image")) {
-    YamlMap image(map.get("image"), file, "image");
-    scene.image_width = image.integer("width", scene.image_width);
-    scene.image_height = image.integer("height", scene.image_height);
-    scene.quality.samples = image.integer("samples", scene.quality.samples);
-    if (scene.quality.samples < 1 || scene.quality.samples > 16) {
-      throw_user_error(image.loc("samples"), "'image.samples' must be between 1 and 16, got {}",
-                       scene.quality.samples);
-    }
-    scene.quality.shadows = image.boolean("shadows", scene.quality.shadows);
-    scene.quality.shadow_resolution =
-        image.integer("shadow_resolution", scene.quality.shadow_resolution);
-    if (scene.quality.shadow_resolution < 64 || scene.quality.shadow_resolution > 8192) {
-      throw_user_error(image.loc("shadow_resolution"),
-                       "'image.shadow_resolution' must be between 64 and 8192, got {}",
-                       scene.quality.shadow_resolution);
-    }
-    for (const char* key : {"width", "height"}) {
-      const int n = std::string(key) == "width" ? scene.image_width : scene.image_height;
-      if (n < 16 || n > 8192) {
-        throw_user_error(image.loc(key), "'image.{}' must be between 16 and 8192 pixels, got {}",
-                         key, n);
-      }
-    }
-    image.finish();
+    read_image(YamlMap(map.get("image"), file, "image"), scene);
   }
   scene.output = map.string("output", "out/" + scene.name);
   const std::string movie = map.string("movie", "mp4");
@@ -406,9 +335,16 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
   }
   if (map.has("light")) {
     YamlMap light(map.get("light"), file, "light");
-    scene.light_direction = light.required_vec3("direction");
+    scene.light_direction = light.vec3("direction", scene.light_direction);
     if (scene.light_direction.norm() < 1e-9) {
       throw_user_error(light.loc("direction"), "'light.direction' must be a non-zero direction");
+    }
+    scene.light_size_degrees = light.number("size", scene.light_size_degrees);
+    if (!(scene.light_size_degrees >= 0.0 && scene.light_size_degrees <= 45.0)) {
+      throw_user_error(light.loc("size"),
+                       "'light.size' is the sun's apparent diameter in degrees (the real sun's is "
+                       "0.53), between 0 and 45; got {}",
+                       scene.light_size_degrees);
     }
     light.finish();
   }

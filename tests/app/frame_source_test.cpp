@@ -18,9 +18,9 @@ class RecordingRenderer final : public Renderer {
     std::vector<Vec3f> positions;
     RenderCamera camera;
   };
-  void render(const DrawList& list, const std::vector<Vec3f>& positions, const RenderCamera& camera,
-              Image& image) override {
-    calls.push_back({positions, camera});
+  using Renderer::render;
+  void render(const DrawList& list, std::span<const FrameSample> samples, Image& image) override {
+    calls.push_back({*samples[0].positions, samples[0].camera});
     lists.push_back(&list);
     image = Image(4, 4);
   }
@@ -52,7 +52,7 @@ struct Pipeline {
   SceneDescription scene;
   Model model;
   SimulatedFrames frames;
-  std::vector<RenderCamera> cameras;
+  FrameCameras cameras;
 };
 
 // Simulates the scene and decides its cameras.
@@ -97,8 +97,8 @@ TEST(FrameSource, TornBarsLeaveTheDrawingFromTheirFrame) {
   ASSERT_GE(torn, 0);
   p.frames.tears.push_back({5, p.model.bar_nodes[2 * torn], p.model.bar_nodes[2 * torn + 1]});
   struct CountingRenderer : Renderer {
-    void render(const DrawList& drawn, const std::vector<Vec3f>&, const RenderCamera&,
-                Image& image) override {
+    using Renderer::render;
+    void render(const DrawList& drawn, std::span<const FrameSample>, Image& image) override {
       int collapsed = 0;
       for (const SurfaceBatch& batch : drawn.surfaces) {
         for (std::size_t k = 0; k + 2 < batch.triangles.size(); k += 3) {
@@ -119,12 +119,12 @@ TEST(FrameSource, TornBarsLeaveTheDrawingFromTheirFrame) {
 
 TEST(FrameSource, AutoCameraKeepsStillAndSeesEveryPointOfEveryFrame) {
   const Pipeline p = run("camera: auto");
-  for (const RenderCamera& camera : p.cameras) {
-    EXPECT_EQ(camera.position, p.cameras.front().position);  // the view does not jump
+  for (const RenderCamera& camera : p.cameras.frames) {
+    EXPECT_EQ(camera.position, p.cameras.frames.front().position);  // the view does not jump
   }
   for (const auto& positions : p.frames.positions) {
     for (const Vec3f& x : positions) {
-      const Eigen::Vector2f pixel = pixel_from_world(p.cameras.front(), 320, 180, x);
+      const Eigen::Vector2f pixel = pixel_from_world(p.cameras.frames.front(), 320, 180, x);
       EXPECT_GE(pixel.x(), 0.0f);
       EXPECT_LE(pixel.x(), 320.0f);
       EXPECT_GE(pixel.y(), 0.0f);
@@ -168,7 +168,7 @@ TEST(FrameSource, AutoCameraFramesADroppedModelTightlyIgnoringAFarFragment) {
       Eigen::Vector2f hi = -lo;
       for (Index i = plate.first_node; i < plate.first_node + plate.node_count; ++i) {
         const Eigen::Vector2f pixel =
-            pixel_from_world(p.cameras[f], width, height, p.frames.positions[f][i]);
+            pixel_from_world(p.cameras.frames[f], width, height, p.frames.positions[f][i]);
         lo = lo.cwiseMin(pixel);
         hi = hi.cwiseMax(pixel);
       }
@@ -188,15 +188,16 @@ TEST(FrameSource, AutoCameraFramesADroppedModelTightlyIgnoringAFarFragment) {
 
 TEST(FrameSource, FollowCameraKeepsItsOffsetFromTheObject) {
   const Pipeline p = run("camera: {follow: cloth, offset: [2, -3, 1]}");
-  for (std::size_t k = 0; k < p.cameras.size(); ++k) {
+  for (std::size_t k = 0; k < p.cameras.frames.size(); ++k) {
     Vec3f centroid = Vec3f::Zero();
     const ModelObject& cloth = p.model.objects[1];
     for (Index i = 0; i < cloth.node_count; ++i) {
       centroid += p.frames.positions[k][cloth.first_node + i];
     }
     centroid /= static_cast<float>(cloth.node_count);
-    EXPECT_TRUE(p.cameras[k].look_at.isApprox(centroid, 1e-5f));
-    EXPECT_TRUE((p.cameras[k].position - p.cameras[k].look_at).isApprox(Vec3f(2, -3, 1), 1e-5f));
+    EXPECT_TRUE(p.cameras.frames[k].look_at.isApprox(centroid, 1e-5f));
+    EXPECT_TRUE((p.cameras.frames[k].position - p.cameras.frames[k].look_at)
+                    .isApprox(Vec3f(2, -3, 1), 1e-5f));
   }
 }
 

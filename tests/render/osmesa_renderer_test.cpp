@@ -44,7 +44,7 @@ RenderCamera front_camera() {
 TEST(OsmesaRenderer, BarAppearsWhereTheCameraPutsItWithItsProjectedWidth) {
   const int width = 160;
   const int height = 120;
-  OsmesaRenderer renderer({width, height, 4, 0});
+  OsmesaRenderer renderer({width, height, 4, 0, {}});
   const DrawList list = one_bar();
   const RenderCamera camera = front_camera();
   const std::vector<Vec3f> positions = {Vec3f(-1, 0, 1), Vec3f(1, 0, 1)};
@@ -81,7 +81,7 @@ TEST(OsmesaRenderer, BarAppearsWhereTheCameraPutsItWithItsProjectedWidth) {
 TEST(OsmesaRenderer, TexturedSurfaceShowsItsPictureWhereTheCameraPutsIt) {
   const int width = 160;
   const int height = 120;
-  OsmesaRenderer renderer({width, height, 4, 0});
+  OsmesaRenderer renderer({width, height, 4, 0, {}});
   DrawList list = one_bar();
   list.segment_points.clear();
   list.segment_radius.clear();
@@ -129,7 +129,7 @@ TEST(OsmesaRenderer, BarCastsAShadowOnTheGround) {
   const Eigen::Vector2f beside = pixel_from_world(camera, width, height, Vec3f(0, 0.5f, 0));
   auto ground_brightness = [&](bool shadows, const Eigen::Vector2f& at) {
     list.shadows = shadows;
-    OsmesaRenderer renderer({width, height, 1, shadows ? 1024 : 0});
+    OsmesaRenderer renderer({width, height, 1, shadows ? 1024 : 0, {}});
     Image image;
     renderer.render(list, positions, camera, image);
     return brightness(image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y())));
@@ -156,7 +156,7 @@ TEST(OsmesaRenderer, ShadowFallsAwayFromTheLight) {
   camera.look_at = Vec3f(0, 0, 0);
   auto brightness_at = [&](bool shadows, const Vec3f& world) {
     list.shadows = shadows;
-    OsmesaRenderer renderer({width, height, 1, shadows ? 1024 : 0});
+    OsmesaRenderer renderer({width, height, 1, shadows ? 1024 : 0, {}});
     Image image;
     renderer.render(list, positions, camera, image);
     const Eigen::Vector2f at = pixel_from_world(camera, width, height, world);
@@ -169,7 +169,7 @@ TEST(OsmesaRenderer, ShadowFallsAwayFromTheLight) {
 }
 
 TEST(OsmesaRenderer, SameInputGivesTheSamePixels) {
-  OsmesaRenderer renderer({96, 64, 4, 512});
+  OsmesaRenderer renderer({96, 64, 4, 512, {}});
   DrawList list = one_bar();
   list.ground_visible = true;
   list.shadows = true;

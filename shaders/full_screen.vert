@@ -1,5 +1,6 @@
 #version 330 core
-// A full-screen triangle drawn behind everything; no vertex buffer needed.
+// A triangle that covers the screen, made from gl_VertexID alone (no vertex buffer): the sky
+// behind everything, and the passes that read the drawn picture back.
 out vec2 screen_uv;
 
 void main() {

@@ -1,0 +1,34 @@
+#pragma once
+// How a frame is lit and finished, beside what is drawn (render/draw_list.hpp): the finish of
+// each surface, and the picture-wide features that each cost time and can be switched off. In
+// core/ because the scene states them and the renderer uses them.
+namespace dinam {
+
+// A surface's finish, for a microfacet (GGX) highlight over a diffuse base.
+struct Finish {
+  float roughness = 0.45f;  // 0 mirror-like … 1 chalky
+  float metallic = 0.0f;    // 1: the highlight takes the base colour and there is no diffuse
+  float sheen = 0.0f;       // a soft glow at grazing angles, as the fibres of cloth give
+
+  bool operator==(const Finish&) const = default;
+};
+
+// Picture-wide features, each off or on.
+struct LookSettings {
+  // Percentage-closer soft shadows: a penumbra that widens with the distance from the occluder,
+  // for a sun of DrawList::light_size. Off: a 3×3 filtered edge of constant width.
+  bool soft_shadows = false;
+  // Screen-space ambient occlusion: ambient light is dimmed where other surfaces are near, so
+  // that a wire on the ground or on another wire reads as touching it.
+  bool ambient_occlusion = false;
+  // Light from the sky and bounced off the ground by the direction a surface faces, with the
+  // sky's reflection in glossy and metallic finishes. Off: a flat, colourless ambient.
+  bool sky_light = true;
+  // Filmic tone mapping (the ACES fit of Narkowicz): highlights roll off instead of clipping.
+  // Off: linear colour clipped at white.
+  bool tone_mapping = true;
+  float exposure = 0.0f;    // stops; +1 doubles the light
+  int cylinder_sides = 10;  // of the bars' cylinders: 6 draws faster, and looks faceted close up
+};
+
+}  // namespace dinam
