@@ -1,20 +1,28 @@
 #version 330 core
-// The frame's linear colour to display values: exposure, filmic tone mapping (the ACES fit of
-// Narkowicz 2015) or a plain clip, then the display's gamma.
+// The frame's mean linear colour to display values (display.glsl), dimmed by ambient occlusion
+// where it was computed: the occlusion, drawn at half the picture's size, is read back blurred
+// over 4 × 4 of its texels (bilinear taps between them), which averages the rotated sampling
+// pattern away.
 uniform sampler2D frame_color;  // linear RGB, the mean of the frame's instants
-uniform float exposure_scale;   // 2^exposure
-uniform bool tone_mapping;
+uniform sampler2D occlusion;    // openness, 1 where nothing is near
+uniform sampler2D scene_depth;  // of the instant the occlusion came from; 1 is the sky
+uniform bool use_occlusion;
 
 out vec4 out_color;
 
-vec3 filmic(vec3 x) {
-  // The fit expects scene values scaled so that mid grey stays near mid grey: 0.8 does that.
-  x *= 0.8;
-  return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-
 void main() {
-  vec3 color = texelFetch(frame_color, ivec2(gl_FragCoord.xy), 0).rgb * exposure_scale;
-  color = tone_mapping ? filmic(color) : clamp(color, 0.0, 1.0);
-  out_color = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+  vec3 color = texelFetch(frame_color, ivec2(gl_FragCoord.xy), 0).rgb;
+  // The sky is never occluded (its neighbours' occlusion would bleed into it at the horizon).
+  if (use_occlusion && texelFetch(scene_depth, ivec2(gl_FragCoord.xy), 0).r < 1.0) {
+    vec2 texel = 1.0 / vec2(textureSize(occlusion, 0));
+    vec2 uv = gl_FragCoord.xy / vec2(textureSize(frame_color, 0));
+    float sum = 0.0;
+    for (int i = -1; i <= 1; i += 2) {
+      for (int j = -1; j <= 1; j += 2) {
+        sum += texture(occlusion, uv + vec2(i, j) * texel).r;
+      }
+    }
+    color *= sum / 4.0;
+  }
+  out_color = vec4(display_color(color), 1.0);
 }

@@ -1,6 +1,7 @@
 #version 330 core
 // A soft checkerboard that takes the light's shadows and fades into the horizon colour with
-// distance from the eye, so the plane's far edge never shows. Linear light.
+// distance from the eye, so the plane's far edge never shows. Linear light
+// (display.glsl stores it).
 in vec3 world_position;
 in vec2 plane_position;
 
@@ -18,7 +19,7 @@ void main() {
     checker = mod(cell.x + cell.y, 2.0);
   }
   vec3 albedo = mix(vec3(0.50, 0.48, 0.45), vec3(0.60, 0.58, 0.54), checker);
-  vec3 color = shade(albedo, plane_normal, world_position, vec3(0.85, 0.0, 0.0));
+  vec3 color = shade_matte(albedo, plane_normal, world_position);
   float fade = smoothstep(0.15 * fade_distance, fade_distance, length(world_position - eye_position));
-  out_color = vec4(mix(color, horizon_color, fade), 1.0);
+  out_color = stored_color(mix(color, horizon_color, fade));
 }

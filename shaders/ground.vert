@@ -3,6 +3,10 @@
 layout(location = 0) in vec2 unit_corner;  // in [-1, 1]²
 
 uniform mat4 clip_from_world;
+
+// Invariant: a depth-only pass and a colour pass give the same depths, which blurred frames rely
+// on (their colour pass keeps only fragments at the depth the first pass found).
+invariant gl_Position;
 uniform vec3 center;
 uniform vec3 axis_u;
 uniform vec3 axis_v;

@@ -1,15 +1,15 @@
 // Shared lighting, spliced into fragment shaders after their #version line, in linear light: the
 // sun (a directional light with a shadow map), light from the sky and the ground, and a GGX
-// microfacet highlight over a Lambert base.
+// microfacet highlight over a Lambert base. The program is built with SOFT_SHADOWS, ONE_SHADOW_TAP
+// and SKY_LIGHT defined or not (core/look.hpp), never as branches on uniforms, which cost much
+// per pixel in Mesa's software rasteriser.
 uniform vec3 light_direction;  // towards the sun, unit length
 uniform vec3 eye_position;
 uniform bool shadows_enabled;
-uniform bool soft_shadows;
 uniform float light_tan;           // tan of the sun's apparent radius
 uniform sampler2DShadow shadow_map;
 uniform sampler2D shadow_depth;    // the same map read as depths, for the blocker search
 uniform mat4 light_from_world;     // to the shadow map's [0, 1]³
-uniform bool sky_light;
 uniform vec3 horizon_color;        // linear RGB, as the sky is drawn
 uniform vec3 zenith_color;
 
@@ -49,7 +49,7 @@ float filtered_visibility(vec3 p, float radius, float bias) {
 // steep to the light (against shadow acne). Soft: the penumbra of a sun of apparent radius θ
 // behind an occluder at depth distance Δ is Δ tan θ wide in map units on either side (the map's
 // depth and width span the same length), found from the mean depth of the occluders nearby
-// (percentage-closer soft shadows, Fernando 2005). Else a 3×3 filtered edge.
+// (percentage-closer soft shadows, Fernando 2005). Else a 3×3 filtered edge, or one tap.
 float light_visibility(vec3 world_position, vec3 normal) {
   if (!shadows_enabled) {
     return 1.0;
@@ -61,7 +61,8 @@ float light_visibility(vec3 world_position, vec3 normal) {
   float slope = 1.0 - abs(dot(normal, light_direction));
   float bias = 0.0015 + 0.004 * slope;
   vec2 texel = 1.0 / vec2(textureSize(shadow_map, 0));
-  if (soft_shadows) {
+#ifdef SOFT_SHADOWS
+  {
     // Occluders can sit anywhere between the light (depth 0) and the point.
     float search = clamp(p.z * light_tan, texel.x, 0.05);
     mat2 rotation = disc_rotation();
@@ -80,6 +81,11 @@ float light_visibility(vec3 world_position, vec3 normal) {
     float penumbra = (p.z - blocker_depth / blockers) * light_tan;
     return filtered_visibility(p.xyz, max(penumbra, 1.5 * texel.x), bias);
   }
+#elif defined(ONE_SHADOW_TAP)
+  // One bilinear comparison: the edge is filtered over a texel (a draft, or an instant of a
+  // blurred frame, whose instants see the sun from points across its disc).
+  return texture(shadow_map, vec3(p.xy, p.z - bias));
+#else
   float sum = 0.0;
   for (int i = -1; i <= 1; ++i) {
     for (int j = -1; j <= 1; ++j) {
@@ -87,6 +93,7 @@ float light_visibility(vec3 world_position, vec3 normal) {
     }
   }
   return sum / 9.0;
+#endif
 }
 
 // What the sky (above the horizon) or the ground's bounce (below) sends along `direction`.
@@ -98,14 +105,26 @@ vec3 sky_radiance(vec3 direction) {
 
 // Light arriving on a surface facing `n` from the sky and the ground, per unit albedo.
 vec3 ambient_irradiance(vec3 n) {
-  if (!sky_light) {
-    return kFlatAmbient;
-  }
+#ifdef SKY_LIGHT
   vec3 sky = 0.7 * mix(horizon_color, zenith_color, 0.5);
   return mix(kGroundBounce, sky, 0.5 + 0.5 * n.z);
+#else
+  return kFlatAmbient;
+#endif
 }
 
-// `finish`: roughness, metallic, sheen (render/look.hpp).
+// A matte surface facing `normal` (the ground): the sun's Lambert term and the ambient light,
+// without the highlight, reflection and sheen that `shade` adds and a rough ground hardly shows.
+vec3 shade_matte(vec3 base_color, vec3 normal, vec3 world_position) {
+  vec3 n = normalize(normal);
+  if (dot(n, eye_position - world_position) < 0.0) {
+    n = -n;
+  }
+  float sun = max(dot(n, light_direction), 0.0) * light_visibility(world_position, n);
+  return base_color * (sun * kSunIntensity / kPi + ambient_irradiance(n));
+}
+
+// `finish`: roughness, metallic, sheen (core/look.hpp).
 vec3 shade(vec3 base_color, vec3 normal, vec3 world_position, vec3 finish) {
   vec3 v = normalize(eye_position - world_position);
   vec3 n = normalize(normal);
@@ -135,11 +154,11 @@ vec3 shade(vec3 base_color, vec3 normal, vec3 world_position, vec3 finish) {
   // towards the diffuse light as the finish roughens).
   vec3 irradiance = ambient_irradiance(n);
   vec3 ambient = diffuse_color * irradiance;
-  if (sky_light) {
-    vec3 reflected = mix(sky_radiance(reflect(-v, n)), irradiance, roughness);
-    vec3 env_fresnel = f0 + (max(vec3(1.0 - roughness), f0) - f0) * pow(1.0 - nv, 5.0);
-    ambient += env_fresnel * reflected;
-  }
+#ifdef SKY_LIGHT
+  vec3 reflected = mix(sky_radiance(reflect(-v, n)), irradiance, roughness);
+  vec3 env_fresnel = f0 + (max(vec3(1.0 - roughness), f0) - f0) * pow(1.0 - nv, 5.0);
+  ambient += env_fresnel * reflected;
+#endif
 
   // Sheen: fibres catch light at grazing angles, lit by the sun (wrapped) and the sky.
   vec3 sheen_color = mix(base_color, vec3(1.0), 0.4);

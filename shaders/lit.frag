@@ -1,6 +1,6 @@
 #version 330 core
 // Bars, joints and surfaces: the shared lighting over the point colour or a texture, in linear
-// light.
+// light (display.glsl stores it).
 in vec3 world_position;
 in vec3 world_normal;
 in vec3 base_color;
@@ -14,5 +14,5 @@ out vec4 out_color;
 
 void main() {
   vec3 color = use_texture ? texture(surface_texture, surface_uv).rgb : base_color;
-  out_color = vec4(shade(color, world_normal, world_position, surface_finish), 1.0);
+  out_color = stored_color(shade(color, world_normal, world_position, surface_finish));
 }

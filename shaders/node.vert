@@ -9,6 +9,10 @@ layout(location = 5) in vec3 instance_finish;  // roughness, metallic, sheen
 
 uniform mat4 clip_from_world;
 
+// Invariant: a depth-only pass and a colour pass give the same depths, which blurred frames rely
+// on (their colour pass keeps only fragments at the depth the first pass found).
+invariant gl_Position;
+
 out vec3 world_position;
 out vec3 world_normal;
 out vec3 base_color;

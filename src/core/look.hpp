@@ -18,6 +18,8 @@ struct LookSettings {
   // Percentage-closer soft shadows: a penumbra that widens with the distance from the occluder,
   // for a sun of DrawList::light_size. Off: a 3×3 filtered edge of constant width.
   bool soft_shadows = false;
+  // Off, a hard shadow's edge is filtered over one texel of the map instead of three (draft).
+  bool filtered_shadow_edges = true;
   // Screen-space ambient occlusion: ambient light is dimmed where other surfaces are near, so
   // that a wire on the ground or on another wire reads as touching it.
   bool ambient_occlusion = false;

@@ -1,36 +1,56 @@
 #pragma once
-// The off-screen buffers a frame is drawn through. Each instant of the frame is drawn in linear
-// colour with a wide range (half floats, multisampled when asked), resolved to a colour and a
-// depth texture that later passes read (ambient occlusion into its own texture), and added to
-// the frame's sum (single floats, so that adding n equal instants of weight 1/n gives the
-// instant back exactly). The finishing pass maps the sum to the display.
+// The off-screen buffers a frame is drawn through, each made the first time it is needed.
+//  - Direct: a frame of one instant without ambient occlusion is drawn, tone mapped and encoded
+//    by the shaders themselves, into a multisampled RGBA8 buffer resolved into OSMesa's (or
+//    straight into OSMesa's without multisampling): the cheapest way.
+//  - Linear: otherwise each instant is drawn in linear colour with a wide range (half floats;
+//    multisampled for a single instant, resolved to a colour and a depth texture that later
+//    passes read), ambient occlusion goes into a texture of half the picture's size, and the
+//    instants are added into the frame's sum (single floats). The instants of a blurred frame
+//    are drawn into the sum directly, over the depth texture. The finishing pass maps the sum to
+//    the display.
 namespace dinam {
 
 class FrameTargets {
  public:
-  // `samples` 1 draws straight into the resolved textures.
-  FrameTargets(int width, int height, int samples, bool ambient_occlusion);
+  FrameTargets(int width, int height, int samples);
   ~FrameTargets();
   FrameTargets(const FrameTargets&) = delete;
   FrameTargets& operator=(const FrameTargets&) = delete;
 
-  void bind_scene() const;  // the target of one instant's drawing
-  void resolve() const;     // its samples into color_texture() and depth_texture()
-  void bind_occlusion() const;
-  void bind_sum() const;
+  void bind_direct();                   // draw a display-ready frame here
+  void resolve_direct();                // … and resolve it into OSMesa's buffer
+  void bind_linear(bool multisampled);  // draw one instant in linear colour here
+  void resolve_linear();  // … and resolve it into color_texture() and depth_texture()
+  void bind_occlusion();  // half the picture's size
+  void bind_sum();
+  void bind_sum_with_depth();  // the sum, over the depth texture: instants added in place
+  void bind_display() const;   // OSMesa's buffer
 
-  unsigned color_texture() const { return color_texture_; }
-  unsigned depth_texture() const { return depth_texture_; }
-  unsigned occlusion_texture() const { return occlusion_texture_; }
-  unsigned sum_texture() const { return sum_texture_; }
+  unsigned color_texture() const { return linear_.color; }
+  unsigned depth_texture() const { return linear_.depth; }
+  unsigned occlusion_texture() const { return occlusion_.color; }
+  unsigned sum_texture() const { return sum_.color; }
 
  private:
+  // A framebuffer and its colour and depth attachments (textures, or multisampled renderbuffers).
+  struct Target {
+    unsigned framebuffer = 0;
+    unsigned color = 0;
+    unsigned depth = 0;
+  };
+  void bind(const Target& target, int width, int height) const;
+
   int width_;
   int height_;
-  unsigned multisampled_framebuffer_ = 0, multisampled_color_ = 0, multisampled_depth_ = 0;
-  unsigned resolved_framebuffer_ = 0, color_texture_ = 0, depth_texture_ = 0;
-  unsigned occlusion_framebuffer_ = 0, occlusion_texture_ = 0;
-  unsigned sum_framebuffer_ = 0, sum_texture_ = 0;
+  int samples_;
+  bool last_linear_multisampled_ = false;
+  Target direct_multisampled_;   // renderbuffers
+  Target linear_multisampled_;   // renderbuffers
+  Target linear_;                // textures
+  Target occlusion_;             // texture, no depth
+  Target sum_;                   // texture, no depth
+  unsigned sum_with_depth_ = 0;  // a framebuffer over sum_'s colour and linear_'s depth
 };
 
 }  // namespace dinam

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "render/camera.hpp"
@@ -22,6 +24,7 @@ constexpr int kNodeFloats = 10;
 constexpr int kShadowCompareUnit = 1;
 constexpr int kShadowDepthUnit = 2;
 constexpr int kOcclusionUnit = 3;
+constexpr int kSceneDepthUnit = 4;
 const Vec3f kHorizonColor{0.78f, 0.82f, 0.86f};
 const Vec3f kZenithColor{0.30f, 0.45f, 0.68f};
 
@@ -85,25 +88,69 @@ void bind_texture(int unit, unsigned texture) {
   glActiveTexture(GL_TEXTURE0);
 }
 
+// The radical inverse of `index` in `base`: a low-discrepancy sequence in [0, 1).
+float halton(std::size_t index, std::size_t base) {
+  float result = 0.0f;
+  float fraction = 1.0f;
+  for (; index > 0; index /= base) {
+    fraction /= static_cast<float>(base);
+    result += fraction * static_cast<float>(index % base);
+  }
+  return result;
+}
+
+bool same_camera(const RenderCamera& a, const RenderCamera& b) {
+  return a.position == b.position && a.look_at == b.look_at && a.up == b.up &&
+         a.fov_degrees == b.fov_degrees;
+}
+
+bool same_instant(const FrameSample& a, const FrameSample& b) {
+  return same_camera(a.camera, b.camera) &&
+         (a.positions == b.positions || *a.positions == *b.positions);
+}
+
 const Finish& finish_of(const std::vector<Finish>& finishes, std::size_t i) {
   static const Finish kDefault;
   return i < finishes.size() ? finishes[i] : kDefault;
 }
 
+// The #defines that build the look's choices into the shaders (lighting.glsl, display.glsl).
+// `jittered`: for the instants of a blurred frame, which each see the sun from a point of its
+// disc, so that their mean has the soft shadows, and each takes one shadow tap.
+std::string look_defines(const LookSettings& look, bool jittered) {
+  std::string defines;
+  for (const auto& [on, name] :
+       {std::pair{look.soft_shadows && !jittered, "SOFT_SHADOWS"},
+        std::pair{jittered || !look.filtered_shadow_edges, "ONE_SHADOW_TAP"},
+        std::pair{look.sky_light, "SKY_LIGHT"}, std::pair{look.tone_mapping, "TONE_MAPPING"}}) {
+    defines += on ? fmt::format("#define {}\n", name) : "";
+  }
+  return defines;
+}
+
 }  // namespace
 
 struct OsmesaRenderer::Programs {
-  ShaderProgram bar{"bar.vert", "lit.frag", {"lighting.glsl"}};
-  ShaderProgram node{"node.vert", "lit.frag", {"lighting.glsl"}};
-  ShaderProgram surface{"surface.vert", "lit.frag", {"lighting.glsl"}};
-  ShaderProgram ground{"ground.vert", "ground.frag", {"lighting.glsl"}};
-  ShaderProgram sky{"full_screen.vert", "sky.frag"};
+  explicit Programs(const std::string& look)
+      : bar("bar.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
+        node("node.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
+        surface("surface.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
+        ground("ground.vert", "ground.frag", {"display.glsl", "lighting.glsl"}, look),
+        sky("full_screen.vert", "sky.frag", {"display.glsl"}, look),
+        finish("full_screen.vert", "finish.frag", {"display.glsl"}, look) {}
+
+  ShaderProgram bar;
+  ShaderProgram node;
+  ShaderProgram surface;
+  ShaderProgram ground;
+  ShaderProgram sky;
+  ShaderProgram finish;
   ShaderProgram bar_depth{"bar.vert", "depth.frag"};
   ShaderProgram node_depth{"node.vert", "depth.frag"};
   ShaderProgram surface_depth{"surface.vert", "depth.frag"};
+  ShaderProgram ground_depth{"ground.vert", "depth.frag"};
   ShaderProgram occlusion{"full_screen.vert", "ambient_occlusion.frag"};
   ShaderProgram accumulate{"full_screen.vert", "accumulate.frag"};
-  ShaderProgram finish{"full_screen.vert", "finish.frag"};
 };
 
 OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
@@ -111,10 +158,9 @@ OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
   GLint max_samples = 1;
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   samples_ = std::clamp(settings.samples, 1, static_cast<int>(max_samples));
-  programs_ = std::make_unique<Programs>();
+  programs_ = std::make_unique<Programs>(look_defines(settings.look, false));
   create_buffers();
-  targets_ = std::make_unique<FrameTargets>(context_.width(), context_.height(), samples_,
-                                            settings.look.ambient_occlusion);
+  targets_ = std::make_unique<FrameTargets>(context_.width(), context_.height(), samples_);
   if (settings.shadow_resolution > 0) {
     shadow_map_ = std::make_unique<ShadowMap>(settings.shadow_resolution);
   }
@@ -278,11 +324,9 @@ void OsmesaRenderer::upload_frame(const DrawList& list, const std::vector<Vec3f>
 
 void OsmesaRenderer::set_lighting(const ShaderProgram& program, const DrawList& list,
                                   const RenderCamera& camera, const Mat4f* light_from_world) const {
-  const LookSettings& look = settings_.look;
-  set_vec3(program.uniform("light_direction"), list.light_direction.normalized());
+  set_vec3(program.uniform("light_direction"), light_direction_);
   set_vec3(program.uniform("eye_position"), camera.position);
   glUniform1i(program.uniform("shadows_enabled"), light_from_world != nullptr ? 1 : 0);
-  glUniform1i(program.uniform("soft_shadows"), look.soft_shadows ? 1 : 0);
   const float radians = 0.5f * list.light_size_degrees * std::numbers::pi_v<float> / 180.0f;
   glUniform1f(program.uniform("light_tan"), std::tan(radians));
   // Both shadow samplers always name their own units: two sampler types on one unit would make
@@ -292,14 +336,13 @@ void OsmesaRenderer::set_lighting(const ShaderProgram& program, const DrawList& 
   if (light_from_world != nullptr) {
     glUniformMatrix4fv(program.uniform("light_from_world"), 1, GL_FALSE, light_from_world->data());
   }
-  glUniform1i(program.uniform("sky_light"), look.sky_light ? 1 : 0);
   set_vec3(program.uniform("horizon_color"), kHorizonColor);
   set_vec3(program.uniform("zenith_color"), kZenithColor);
 }
 
 void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
                                  const float* clip_from_world, const RenderCamera& camera,
-                                 const Mat4f* light_from_world) {
+                                 const Mat4f* light_from_world, bool direct) {
   const auto prepare = [&](const ShaderProgram& program) {
     program.use();
     glUniformMatrix4fv(program.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world);
@@ -307,24 +350,26 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
       return;
     }
     set_lighting(program, list, camera, light_from_world);
+    set_output(program, direct);
     glUniform1i(program.uniform("use_texture"), 0);
     glUniform1i(program.uniform("surface_texture"), 0);
   };
   const std::size_t n_segments = list.segment_radius.size();
   if (n_segments > 0) {
-    prepare(depth_only ? programs_->bar_depth : programs_->bar);
+    prepare(depth_only ? programs_in_use_->bar_depth : programs_in_use_->bar);
     glBindVertexArray(cylinder_vao_);
     glDrawElementsInstanced(GL_TRIANGLES, cylinder_index_count_, GL_UNSIGNED_INT, nullptr,
                             static_cast<GLsizei>(n_segments));
   }
   if (!node_instances_.empty()) {
-    prepare(depth_only ? programs_->node_depth : programs_->node);
+    prepare(depth_only ? programs_in_use_->node_depth : programs_in_use_->node);
     glBindVertexArray(sphere_vao_);
     glDrawElementsInstanced(GL_TRIANGLES, sphere_index_count_, GL_UNSIGNED_INT, nullptr,
                             static_cast<GLsizei>(node_instances_.size() / kNodeFloats));
   }
   if (!list.surfaces.empty()) {
-    const ShaderProgram& program = depth_only ? programs_->surface_depth : programs_->surface;
+    const ShaderProgram& program =
+        depth_only ? programs_in_use_->surface_depth : programs_in_use_->surface;
     prepare(program);
     glBindVertexArray(surface_vao_);
     for (std::size_t b = 0; b < list.surfaces.size(); ++b) {
@@ -341,8 +386,10 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
 }
 
 void OsmesaRenderer::draw_ground(const DrawList& list, const Mat4f& clip_from_world,
-                                 const RenderCamera& camera, const Mat4f* light_from_world) {
-  const ShaderProgram& ground = programs_->ground;
+                                 const RenderCamera& camera, const Mat4f* light_from_world,
+                                 bool direct, bool depth_only) {
+  const ShaderProgram& ground =
+      depth_only ? programs_in_use_->ground_depth : programs_in_use_->ground;
   ground.use();
   glUniformMatrix4fv(ground.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world.data());
   // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
@@ -356,66 +403,136 @@ void OsmesaRenderer::draw_ground(const DrawList& list, const Mat4f& clip_from_wo
   glUniform1f(ground.uniform("half_size"), list.ground_half_size);
   glUniform1f(ground.uniform("fade_distance"), 0.9f * list.ground_half_size);
   glUniform1f(ground.uniform("tile_size"), list.ground_checker ? list.ground_tile : 0.0f);
-  set_lighting(ground, list, camera, light_from_world);
+  if (!depth_only) {
+    set_lighting(ground, list, camera, light_from_world);
+    set_output(ground, direct);
+  }
   glBindVertexArray(ground_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 6);
   glBindVertexArray(0);
 }
 
-void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sample) {
+void OsmesaRenderer::set_output(const ShaderProgram& program, bool direct) const {
+  glUniform1i(program.uniform("direct_to_display"), direct ? 1 : 0);
+  glUniform1f(program.uniform("exposure_scale"), std::exp2(settings_.look.exposure));
+}
+
+void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sample,
+                                  const Eigen::Vector2f& jitter, const Eigen::Vector2f& sun_point,
+                                  InstantTarget target, float weight, Mat4f& clip_from_eye) {
   const RenderCamera& camera = sample.camera;
+  const bool direct = target == InstantTarget::kDisplay;
+  // The sun's direction, moved to `sun_point` of its disc (unit disc coordinates).
+  const Vec3f sun = list.light_direction.normalized();
+  const Vec3f seed = std::abs(sun.z()) < 0.9f ? Vec3f::UnitZ() : Vec3f::UnitX();
+  const Vec3f across = sun.cross(seed).normalized();
+  const float radius =
+      std::tan(0.5f * list.light_size_degrees * std::numbers::pi_v<float> / 180.0f);
+  light_direction_ =
+      (sun + radius * (sun_point.x() * across + sun_point.y() * sun.cross(across))).normalized();
   upload_frame(list, *sample.positions);
 
   // 1. Shadow map: depth from the light, for everything but the ground.
+  //    The instants of a blurred frame take a map of half the resolution: each is one of
+  //    several views of the sun, so their mean is smooth where one map's texels would show.
   Mat4f light_from_world = Mat4f::Identity();
   const bool shadows = list.shadows && shadow_map_ != nullptr;
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   if (shadows) {
-    const Mat4f light_clip = shadow_map_->begin(list, light_from_world);
-    draw_shapes(list, true, light_clip.data(), camera, nullptr);
-    shadow_map_->end();
-    shadow_map_->bind(kShadowCompareUnit, kShadowDepthUnit);
+    const bool added = target == InstantTarget::kAdded;
+    if (added && !jittered_shadow_map_) {
+      jittered_shadow_map_ =
+          std::make_unique<ShadowMap>(std::max(settings_.shadow_resolution / 2, 64));
+    }
+    ShadowMap& map = added ? *jittered_shadow_map_ : *shadow_map_;
+    const Mat4f light_clip = map.begin(list, light_direction_, light_from_world);
+    draw_shapes(list, true, light_clip.data(), camera, nullptr, direct);
+    map.end();
+    map.bind(kShadowCompareUnit, kShadowDepthUnit);
   } else {
     ShadowMap::unbind(kShadowCompareUnit, kShadowDepthUnit);
   }
   const Mat4f* light = shadows ? &light_from_world : nullptr;
 
-  // 2. The view: near and far planes bracket the scene around the look-at distance.
+  // 2. The view: near and far planes bracket the scene around the look-at distance; `jitter`
+  //    (pixels) moves the picture by a fraction of a pixel.
   const float distance = (camera.look_at - camera.position).norm();
   const float far_plane = std::max(100.0f * distance, 4.0f * list.ground_half_size + distance);
-  const float aspect = static_cast<float>(context_.width()) / static_cast<float>(context_.height());
-  const Mat4f clip_from_eye =
-      dinam::clip_from_eye(camera.fov_degrees, aspect, 0.01f * distance, far_plane);
+  const auto width = static_cast<float>(context_.width());
+  const auto height = static_cast<float>(context_.height());
+  Mat4f shift = Mat4f::Identity();
+  shift(0, 3) = 2.0f * jitter.x() / width;
+  shift(1, 3) = 2.0f * jitter.y() / height;
+  clip_from_eye =
+      shift * dinam::clip_from_eye(camera.fov_degrees, width / height, 0.01f * distance, far_plane);
   const Mat4f clip_from_world = clip_from_eye * eye_from_world(camera);
-  targets_->bind_scene();
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
-  // 3. Sky, behind everything.
-  glDisable(GL_DEPTH_TEST);
-  programs_->sky.use();
-  set_vec3(programs_->sky.uniform("horizon_color"), kHorizonColor);
-  set_vec3(programs_->sky.uniform("zenith_color"), kZenithColor);
-  glBindVertexArray(full_screen_vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glEnable(GL_DEPTH_TEST);
-
-  // 4. Ground, then bars, joints and surfaces, lit and shadowed.
-  if (list.ground_visible) {
-    draw_ground(list, clip_from_world, camera, light);
+  if (target == InstantTarget::kAdded) {
+    // 3. Added to the sum: depths first, then each pixel's visible fragment alone is shaded and
+    //    added with its weight (no colour buffer of its own, no overdraw shaded, no pass to add
+    //    it), then the sky where nothing was drawn.
+    targets_->bind_sum_with_depth();
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    if (list.ground_visible) {
+      draw_ground(list, clip_from_world, camera, nullptr, false, true);
+    }
+    draw_shapes(list, true, clip_from_world.data(), camera, nullptr, false);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_EQUAL);
+    glEnable(GL_BLEND);
+    glBlendColor(0.0f, 0.0f, 0.0f, weight);
+    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE);
+    if (list.ground_visible) {
+      draw_ground(list, clip_from_world, camera, light, false, false);
+    }
+    draw_shapes(list, false, clip_from_world.data(), camera, light, false);
+    glDepthFunc(GL_LEQUAL);  // the sky lies at the far plane, where the depth was cleared
+    draw_sky(false);
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    return;
   }
-  draw_shapes(list, false, clip_from_world.data(), camera, light);
 
-  // 5. The samples resolved to textures, and the occlusion they imply.
-  targets_->resolve();
+  // 3. Sky, behind everything, then the ground, bars, joints and surfaces, lit and shadowed.
+  if (direct) {
+    targets_->bind_direct();
+  } else {
+    targets_->bind_linear(true);
+  }
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glDisable(GL_DEPTH_TEST);
-  if (settings_.look.ambient_occlusion) {
-    draw_occlusion(list, clip_from_eye);
+  draw_sky(direct);
+  glEnable(GL_DEPTH_TEST);
+  if (list.ground_visible) {
+    draw_ground(list, clip_from_world, camera, light, direct, false);
+  }
+  draw_shapes(list, false, clip_from_world.data(), camera, light, direct);
+  glDisable(GL_DEPTH_TEST);
+  if (direct) {
+    targets_->resolve_direct();
+  } else {
+    targets_->resolve_linear();
   }
 }
 
+void OsmesaRenderer::draw_sky(bool direct) {
+  const ShaderProgram& sky = programs_in_use_->sky;
+  sky.use();
+  set_vec3(sky.uniform("horizon_color"), kHorizonColor);
+  set_vec3(sky.uniform("zenith_color"), kZenithColor);
+  set_output(sky, direct);
+  glBindVertexArray(full_screen_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
 void OsmesaRenderer::draw_occlusion(const DrawList& list, const Mat4f& clip_from_eye) {
-  const ShaderProgram& program = programs_->occlusion;
+  const ShaderProgram& program = programs_in_use_->occlusion;
   targets_->bind_occlusion();
   program.use();
   bind_texture(0, targets_->depth_texture());
@@ -431,15 +548,11 @@ void OsmesaRenderer::draw_occlusion(const DrawList& list, const Mat4f& clip_from
 }
 
 void OsmesaRenderer::add_to_sum(float weight) {
-  const ShaderProgram& program = programs_->accumulate;
+  const ShaderProgram& program = programs_in_use_->accumulate;
   targets_->bind_sum();
   program.use();
   bind_texture(0, targets_->color_texture());
   glUniform1i(program.uniform("scene_color"), 0);
-  const bool occlusion = settings_.look.ambient_occlusion;
-  bind_texture(kOcclusionUnit, occlusion ? targets_->occlusion_texture() : 0);
-  glUniform1i(program.uniform("occlusion"), kOcclusionUnit);
-  glUniform1i(program.uniform("use_occlusion"), occlusion ? 1 : 0);
   glUniform1f(program.uniform("weight"), weight);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -448,20 +561,26 @@ void OsmesaRenderer::add_to_sum(float weight) {
   glDisable(GL_BLEND);
 }
 
-void OsmesaRenderer::finish_into_image(Image& image) {
-  const int width = context_.width();
-  const int height = context_.height();
-  const ShaderProgram& program = programs_->finish;
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the OSMesa buffer
-  glViewport(0, 0, width, height);
+void OsmesaRenderer::finish_sum(bool occlusion) {
+  const ShaderProgram& program = programs_in_use_->finish;
+  targets_->bind_display();
   program.use();
   bind_texture(0, targets_->sum_texture());
   glUniform1i(program.uniform("frame_color"), 0);
-  glUniform1f(program.uniform("exposure_scale"), std::exp2(settings_.look.exposure));
-  glUniform1i(program.uniform("tone_mapping"), settings_.look.tone_mapping ? 1 : 0);
+  bind_texture(kOcclusionUnit, occlusion ? targets_->occlusion_texture() : 0);
+  glUniform1i(program.uniform("occlusion"), kOcclusionUnit);
+  glUniform1i(program.uniform("use_occlusion"), occlusion ? 1 : 0);
+  bind_texture(kSceneDepthUnit, targets_->depth_texture());
+  glUniform1i(program.uniform("scene_depth"), kSceneDepthUnit);
+  set_output(program, true);
   glBindVertexArray(full_screen_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+}
+
+void OsmesaRenderer::read_display(Image& image) {
+  const int width = context_.width();
+  const int height = context_.height();
   glFinish();
   if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
     throw RuntimeError(fmt::format("OpenGL error 0x{:x} while drawing a frame", error));
@@ -480,18 +599,67 @@ void OsmesaRenderer::finish_into_image(Image& image) {
 void OsmesaRenderer::render(const DrawList& list, std::span<const FrameSample> samples,
                             Image& image) {
   DINAM_CHECK(!samples.empty());
-  upload_static(list);
-  targets_->bind_sum();
-  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  const float weight = 1.0f / static_cast<float>(samples.size());
   for (const FrameSample& sample : samples) {
     DINAM_CHECK(sample.positions != nullptr &&
                 sample.positions->size() == list.point_radius.size());
-    draw_instant(list, sample);
-    add_to_sum(weight);
   }
-  finish_into_image(image);
+  upload_static(list);
+  // Instants that show the same picture (a frame at rest) are drawn once: a still frame looks
+  // the same with and without motion blur, and costs no more.
+  const bool still = std::all_of(samples.begin(), samples.end(), [&](const FrameSample& s) {
+    return same_instant(s, samples.front());
+  });
+  const std::span<const FrameSample> instants = still ? samples.first(1) : samples;
+  const bool occlusion = settings_.look.ambient_occlusion;
+  Mat4f clip_from_eye;
+  const Eigen::Vector2f centre = Eigen::Vector2f::Zero();
+  programs_in_use_ = programs_.get();
+  if (instants.size() == 1 && !occlusion) {
+    draw_instant(list, instants.front(), centre, centre, InstantTarget::kDisplay, 1.0f,
+                 clip_from_eye);
+    read_display(image);
+    return;
+  }
+  if (instants.size() > 1 && !jittered_programs_) {
+    jittered_programs_ = std::make_unique<Programs>(look_defines(settings_.look, true));
+  }
+  programs_in_use_ = instants.size() > 1 ? jittered_programs_.get() : programs_.get();
+  // Several instants are each drawn once without multisampling, moved by a different fraction
+  // of a pixel (Halton points), and with soft shadows lit from a different point of the sun's
+  // disc (Vogel's spiral): their mean is anti-aliased and softly shadowed as well as blurred. The
+  // middle instant is drawn last, so that the occlusion comes from its depth.
+  targets_->bind_sum();
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const float weight = 1.0f / static_cast<float>(instants.size());
+  const std::size_t middle = instants.size() / 2;
+  for (std::size_t k = 0; k < instants.size(); ++k) {
+    const std::size_t i = k < middle ? k : (k + 1 < instants.size() ? k + 1 : middle);
+    Eigen::Vector2f jitter = centre;
+    Eigen::Vector2f sun_point = centre;
+    if (instants.size() > 1) {
+      jitter = {halton(i + 1, 2) - 0.5f, halton(i + 1, 3) - 0.5f};
+      if (settings_.look.soft_shadows) {
+        const float r =
+            std::sqrt((static_cast<float>(i) + 0.5f) / static_cast<float>(instants.size()));
+        const float angle = 2.39996323f * static_cast<float>(i);  // the golden angle
+        sun_point = {r * std::cos(angle), r * std::sin(angle)};
+      }
+    }
+    if (instants.size() == 1) {
+      draw_instant(list, instants[i], jitter, sun_point, InstantTarget::kLinear, 1.0f,
+                   clip_from_eye);
+      add_to_sum(weight);
+    } else {
+      draw_instant(list, instants[i], jitter, sun_point, InstantTarget::kAdded, weight,
+                   clip_from_eye);
+    }
+  }
+  if (occlusion) {
+    draw_occlusion(list, clip_from_eye);
+  }
+  finish_sum(occlusion);
+  read_display(image);
 }
 
 }  // namespace dinam

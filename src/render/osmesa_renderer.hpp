@@ -41,25 +41,40 @@ class OsmesaRenderer final : public Renderer {
   void create_buffers();
   void upload_static(const DrawList& list);
   void upload_frame(const DrawList& list, const std::vector<Vec3f>& positions);
-  // One instant into the frame targets, and its occlusion when asked.
-  void draw_instant(const DrawList& list, const FrameSample& sample);
+  // Where an instant is drawn: for the display (tone mapped, encoded, resolved into OSMesa's
+  // buffer); in linear colour into the frame targets' textures; or weighted straight into the
+  // frame's sum (an instant of a blurred frame).
+  enum class InstantTarget { kDisplay, kLinear, kAdded };
+  // One instant, moved by `jitter` pixels and lit from `sun_point` of the sun's disc (in the
+  // unit disc). Writes the projection it used.
+  void draw_instant(const DrawList& list, const FrameSample& sample, const Eigen::Vector2f& jitter,
+                    const Eigen::Vector2f& sun_point, InstantTarget target, float weight,
+                    Mat4f& clip_from_eye);
+  void draw_sky(bool direct);
   void draw_ground(const DrawList& list, const Mat4f& clip_from_world, const RenderCamera& camera,
-                   const Mat4f* light_from_world);
+                   const Mat4f* light_from_world, bool direct, bool depth_only);
   void draw_shapes(const DrawList& list, bool depth_only, const float* clip_from_world,
-                   const RenderCamera& camera, const Mat4f* light_from_world);
+                   const RenderCamera& camera, const Mat4f* light_from_world, bool direct);
   // The lighting uniforms of lighting.glsl; `light_from_world` null when there are no shadows.
   void set_lighting(const ShaderProgram& program, const DrawList& list, const RenderCamera& camera,
                     const Mat4f* light_from_world) const;
+  // The uniforms of display.glsl.
+  void set_output(const ShaderProgram& program, bool direct) const;
   void draw_occlusion(const DrawList& list, const Mat4f& clip_from_eye);
   void add_to_sum(float weight);
-  void finish_into_image(Image& image);
+  void finish_sum(bool occlusion);  // the sum, dimmed by the occlusion, to OSMesa's buffer
+  void read_display(Image& image);
 
   GlContext context_;
   RenderSettings settings_;
   int samples_ = 1;
   std::unique_ptr<Programs> programs_;
+  std::unique_ptr<Programs> jittered_programs_;  // for blurred frames' instants, made when needed
+  const Programs* programs_in_use_ = nullptr;
+  Vec3f light_direction_ = Vec3f::UnitZ();  // of the instant being drawn
   std::unique_ptr<FrameTargets> targets_;
-  std::unique_ptr<ShadowMap> shadow_map_;  // null when shadows are off
+  std::unique_ptr<ShadowMap> shadow_map_;           // null when shadows are off
+  std::unique_ptr<ShadowMap> jittered_shadow_map_;  // for blurred frames' instants, when needed
 
   unsigned cylinder_vao_ = 0, cylinder_vbo_ = 0, cylinder_ebo_ = 0, bar_instance_vbo_ = 0;
   unsigned sphere_vao_ = 0, sphere_vbo_ = 0, sphere_ebo_ = 0, node_instance_vbo_ = 0;

@@ -33,12 +33,13 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-unsigned compile(GLenum kind, const std::string& file, const std::vector<std::string>& includes) {
+unsigned compile(GLenum kind, const std::string& file, const std::vector<std::string>& includes,
+                 const std::string& defines) {
   const std::filesystem::path path = find_shader(file);
   std::string source = read_text(path);
-  if (!includes.empty()) {
+  if (!includes.empty() || !defines.empty()) {
     const std::size_t first_line_end = source.find('\n') + 1;
-    std::string spliced = source.substr(0, first_line_end);
+    std::string spliced = source.substr(0, first_line_end) + defines;
     for (const std::string& include : includes) {
       spliced += read_text(find_shader(include)) + "\n";
     }
@@ -92,11 +93,12 @@ std::filesystem::path find_shader(const std::string& file) {
 }
 
 ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& fragment_file,
-                             const std::vector<std::string>& fragment_includes) {
-  const unsigned vertex = compile(GL_VERTEX_SHADER, vertex_file, {});
+                             const std::vector<std::string>& fragment_includes,
+                             const std::string& fragment_defines) {
+  const unsigned vertex = compile(GL_VERTEX_SHADER, vertex_file, {}, "");
   unsigned fragment = 0;
   try {
-    fragment = compile(GL_FRAGMENT_SHADER, fragment_file, fragment_includes);
+    fragment = compile(GL_FRAGMENT_SHADER, fragment_file, fragment_includes, fragment_defines);
   } catch (...) {
     glDeleteShader(vertex);
     throw;

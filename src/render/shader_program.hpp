@@ -19,9 +19,12 @@ class ShaderProgram {
  public:
   // Compiles and links the two files; throws RuntimeError naming the file and the GLSL log.
   // `fragment_includes` are spliced into the fragment shader after its #version line, in order
-  // (GLSL has no #include).
+  // (GLSL has no #include), after the `fragment_defines` ("#define NAME" lines): choices made
+  // when the program is built cost nothing per pixel, where a branch on a uniform costs much in
+  // Mesa's software rasteriser.
   ShaderProgram(const std::string& vertex_file, const std::string& fragment_file,
-                const std::vector<std::string>& fragment_includes = {});
+                const std::vector<std::string>& fragment_includes = {},
+                const std::string& fragment_defines = "");
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;

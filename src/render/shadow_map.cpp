@@ -13,11 +13,10 @@ namespace {
 
 // The shadow map's view: an orthographic box around the shadow bounds, seen along the light.
 // Returns clip_from_world and writes the [0, 1]³ version used to look the map up.
-Mat4f light_clip_from_world(const DrawList& list, Mat4f& light_from_world) {
+Mat4f light_clip_from_world(const DrawList& list, const Vec3f& direction, Mat4f& light_from_world) {
   const Vec3f center = 0.5f * (list.shadow_bounds_min + list.shadow_bounds_max);
   const float radius =
       std::max(0.5f * (list.shadow_bounds_max - list.shadow_bounds_min).norm(), 1e-3f);
-  const Vec3f direction = list.light_direction.normalized();
   RenderCamera light;
   light.position = center + 2.0f * radius * direction;
   light.look_at = center;
@@ -82,8 +81,9 @@ ShadowMap::~ShadowMap() {
   glDeleteSamplers(2, samplers);
 }
 
-Mat4f ShadowMap::begin(const DrawList& list, Mat4f& light_from_world) {
-  const Mat4f clip = light_clip_from_world(list, light_from_world);
+Mat4f ShadowMap::begin(const DrawList& list, const Vec3f& light_direction,
+                       Mat4f& light_from_world) {
+  const Mat4f clip = light_clip_from_world(list, light_direction, light_from_world);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glViewport(0, 0, resolution_, resolution_);
   glClear(GL_DEPTH_BUFFER_BIT);

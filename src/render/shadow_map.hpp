@@ -14,10 +14,10 @@ class ShadowMap {
   ShadowMap(const ShadowMap&) = delete;
   ShadowMap& operator=(const ShadowMap&) = delete;
 
-  // Binds the map as the target of a depth-only pass framed on the list's shadow bounds, and
-  // returns that pass's clip_from_world. `light_from_world` receives the lookup matrix, to the
-  // map's [0, 1]³.
-  Mat4f begin(const DrawList& list, Mat4f& light_from_world);
+  // Binds the map as the target of a depth-only pass framed on the list's shadow bounds, seen
+  // along `light_direction` (unit, towards the light), and returns that pass's clip_from_world.
+  // `light_from_world` receives the lookup matrix, to the map's [0, 1]³.
+  Mat4f begin(const DrawList& list, const Vec3f& light_direction, Mat4f& light_from_world);
   void end();
 
   // Binds the map on two texture units: compared (sampler2DShadow) and raw (sampler2D).

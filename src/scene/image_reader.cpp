@@ -77,6 +77,7 @@ RenderQualityDesc quality_preset(QualityPreset preset) {
     case QualityPreset::kDraft:
       quality.samples = 1;
       quality.shadow_resolution = 1024;
+      quality.look.filtered_shadow_edges = false;
       quality.look.cylinder_sides = 6;
       break;
     case QualityPreset::kStandard:

@@ -136,6 +136,46 @@ TEST_F(CacheEndToEnd, AStaleCacheIsRefusedWithTheChangedKeyAndTheCommandThatMend
   EXPECT_NE(energy.output.find("simulate --energy"), std::string::npos) << energy.output;
 }
 
+// A blurred scene's cache holds the instants its frames average, so frames drawn from it are the
+// whole run's; a cache without them (made before the scene asked for blur) is refused with the
+// command that makes one.
+TEST_F(CacheEndToEnd, BlurredFramesFromTheCacheAreTheWholeRunsAndACacheWithoutInstantsIsRefused) {
+  std::ofstream(path("flag.yaml")) << file_text(kFlag);
+  ASSERT_EQ(run(dinam("simulate " + shell_quoted(path("flag.yaml")) + " -o " +
+                      shell_quoted(path("plain_cache")) + " -q"))
+                .exit_code,
+            0);
+  std::string blurred = file_text(kFlag);
+  blurred += "image: {motion_blur: {shutter: 0.5, samples: 4}}\n";
+  std::ofstream(path("flag.yaml")) << blurred;
+  const std::string size = " --size 96x54 --movie none -q";
+  const CommandResult whole = run(dinam("render " + shell_quoted(path("flag.yaml")) + " -o " +
+                                        shell_quoted(path("whole")) + " --frames 30-31" + size));
+  ASSERT_EQ(whole.exit_code, 0) << whole.output;
+  ASSERT_EQ(run(dinam("simulate " + shell_quoted(path("flag.yaml")) + " -o " +
+                      shell_quoted(path("cache")) + " -q"))
+                .exit_code,
+            0);
+  const CommandResult chunk = run(dinam("render " + shell_quoted(path("flag.yaml")) + " --cache " +
+                                        shell_quoted(path("cache")) + " -o " +
+                                        shell_quoted(path("chunk")) + " --frames 30-31" + size));
+  ASSERT_EQ(chunk.exit_code, 0) << chunk.output;
+  for (const char* name : {"frame_0030.png", "frame_0031.png"}) {
+    const std::string expected = file_text(path("whole") / name);
+    ASSERT_FALSE(expected.empty()) << name;
+    EXPECT_EQ(file_text(path("chunk") / name), expected) << name << " differs";
+  }
+
+  const CommandResult refused =
+      run(dinam("render " + shell_quoted(path("flag.yaml")) + " --cache " +
+                shell_quoted(path("plain_cache")) + " -o " + shell_quoted(path("refused")) + size));
+  EXPECT_EQ(refused.exit_code, 2) << refused.output;
+  EXPECT_NE(refused.output.find("holds no instants between frames"), std::string::npos)
+      << refused.output;
+  EXPECT_NE(refused.output.find("dinam simulate"), std::string::npos) << refused.output;
+  EXPECT_FALSE(std::filesystem::exists(path("refused")));
+}
+
 TEST_F(CacheEndToEnd, EnergyGoesIntoTheManifestAndBesideIt) {
   std::ofstream(path("rope.yaml")) << kRope;
   const CommandResult simulate =

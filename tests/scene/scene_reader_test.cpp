@@ -450,3 +450,98 @@ TEST(SceneReader, MaterialValuesNoMaterialHasAreRefusedAtTheirKey) {
 
 }  // namespace
 }  // namespace dinam
+
+namespace dinam {
+namespace {
+
+const std::string kLookBase =
+    "version: 1\nduration: 2\nobjects:\n  - name: rope\n    mesh: {file: rope.obj}\n    "
+    "material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}\n";
+
+TEST(SceneReader, QualityPresetsSetTheLookAndKeysBesideThemOverride) {
+  const SceneDescription standard = scene_from_yaml(kLookBase);
+  EXPECT_EQ(standard.quality.preset, QualityPreset::kStandard);
+  EXPECT_EQ(standard.quality.samples, 4);
+  EXPECT_FALSE(standard.quality.look.ambient_occlusion);
+  EXPECT_FALSE(standard.quality.motion_blur.enabled());
+
+  const SceneDescription draft = scene_from_yaml(kLookBase + "image: {quality: draft}\n");
+  EXPECT_EQ(draft.quality.samples, 1);
+  EXPECT_EQ(draft.quality.shadow_resolution, 1024);
+
+  const SceneDescription final_look =
+      scene_from_yaml(kLookBase +
+                      "image: {quality: final, samples: 2, motion_blur: {shutter: 0.25}, "
+                      "exposure: -0.5, tone_mapping: none}\nlight: {size: 4}\n");
+  EXPECT_EQ(final_look.quality.samples, 2);
+  EXPECT_TRUE(final_look.quality.look.soft_shadows);
+  EXPECT_TRUE(final_look.quality.look.ambient_occlusion);
+  EXPECT_EQ(final_look.quality.motion_blur.samples, 8);
+  EXPECT_DOUBLE_EQ(final_look.quality.motion_blur.shutter, 0.25);
+  EXPECT_FLOAT_EQ(final_look.quality.look.exposure, -0.5f);
+  EXPECT_FALSE(final_look.quality.look.tone_mapping);
+  EXPECT_DOUBLE_EQ(final_look.light_size_degrees, 4.0);
+
+  const SceneDescription unblurred =
+      scene_from_yaml(kLookBase + "image: {quality: final, motion_blur: false}\n");
+  EXPECT_FALSE(unblurred.quality.motion_blur.enabled());
+}
+
+TEST(SceneReader, ReadsFinishesByNameAndByValue) {
+  const SceneDescription scene =
+      scene_from_yaml(kLookBase +
+                      "    finish: metal\n  - name: other\n    mesh: {file: rope.obj}\n    "
+                      "material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}\n    "
+                      "finish: {like: cloth, roughness: 0.5}\n");
+  EXPECT_FLOAT_EQ(scene.objects[0].finish.metallic, 1.0f);
+  EXPECT_FLOAT_EQ(scene.objects[1].finish.roughness, 0.5f);
+  EXPECT_FLOAT_EQ(scene.objects[1].finish.sheen, 0.8f);
+}
+
+TEST(SceneReader, CameraPathsAndOrbitsAreRead) {
+  const SceneDescription path =
+      scene_from_yaml(kLookBase +
+                      "camera:\n  keys:\n    - {time: 0, position: [4, -6, 2], look_at: [0, 0, 1], "
+                      "fov: 35}\n    - {time: 2, position: [1, -3, 1], look_at: [0, 0, 1]}\n");
+  EXPECT_EQ(path.camera.mode, CameraDesc::Mode::kPath);
+  ASSERT_EQ(path.camera.keys.size(), 2u);
+  EXPECT_DOUBLE_EQ(path.camera.keys[1].fov_degrees, 35.0);  // the previous key's
+  const SceneDescription orbit =
+      scene_from_yaml(kLookBase + "camera: {orbit: {radius: 5, turns: -0.5}}\n");
+  EXPECT_EQ(orbit.camera.mode, CameraDesc::Mode::kOrbit);
+  EXPECT_DOUBLE_EQ(*orbit.camera.orbit.radius, 5.0);
+  EXPECT_DOUBLE_EQ(orbit.camera.orbit.turns, -0.5);
+}
+
+TEST(SceneReader, LookMistakesAreErrorsAtTheirLine) {
+  expect_user_error([&] { scene_from_yaml(kLookBase + "image: {quality: best}\n"); }, 7,
+                    {"draft, standard or final"});
+  expect_user_error([&] { scene_from_yaml(kLookBase + "image: {motion_blur: {shutter: 2}}\n"); }, 7,
+                    {"image.motion_blur.shutter", "(0, 1]"});
+  expect_user_error([&] { scene_from_yaml(kLookBase + "image: {motion_blur: {samples: 100}}\n"); },
+                    7, {"between 1 (no blur) and 64"});
+  expect_user_error([&] { scene_from_yaml(kLookBase + "image: {tone_mapping: aces}\n"); }, 7,
+                    {"filmic or none"});
+  expect_user_error([&] { scene_from_yaml(kLookBase + "light: {size: 60}\n"); }, 7,
+                    {"apparent diameter"});
+  expect_user_error([&] { scene_from_yaml(kLookBase + "    finish: velvet\n"); }, 7,
+                    {"names no finish", "metal"});
+  expect_user_error([&] { scene_from_yaml(kLookBase + "    finish: {roughness: 2}\n"); }, 7,
+                    {"between 0 and 1"});
+  expect_user_error(
+      [&] {
+        scene_from_yaml(kLookBase +
+                        "camera:\n  keys:\n    - {time: 1, position: [4, -6, 2], "
+                        "look_at: [0, 0, 1]}\n    - {time: 1, position: [1, -3, 1], "
+                        "look_at: [0, 0, 1]}\n");
+      },
+      10, {"increasing time"});
+  expect_user_error([&] { scene_from_yaml(kLookBase + "camera: {orbit: {}, follow: rope}\n"); }, 7,
+                    {"not several"});
+  expect_user_error(
+      [&] { scene_from_yaml(kLookBase + "camera: {orbit: {}, position: [1, 2, 3]}\n"); }, 7,
+      {"an orbit places the eye itself"});
+}
+
+}  // namespace
+}  // namespace dinam
