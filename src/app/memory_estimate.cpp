@@ -25,13 +25,17 @@ constexpr std::uint64_t kProgramBytes = 64'000'000;
 //    a 121-node scene drawn at 640×360, 1920×1080 and 3840×2160 took 61, 155 and 473 MB over
 //    `info`, i.e. 49 MB + 51 bytes a pixel with 4 samples, of which the shadow map is 17 MB.
 constexpr std::uint64_t kRendererBytes = 32'000'000;
-//  - Per pixel and sample: a half-float RGBA colour and a 24-bit depth (stored in 4 bytes) of
-//    the multisampled framebuffer; per pixel besides (render/frame_targets.hpp): the resolved
-//    colour (8) and depth (4), the frame's single-float sum (16), the occlusion (1, always
-//    counted), OSMesa's RGBA buffer and its depth, the picture read back and the frame writer's
-//    copy for PNG (4 each).
-constexpr std::uint64_t kBytesPerPixelSample = 12;
-constexpr std::uint64_t kBytesPerPixel = 49;
+//  - Per pixel and sample: an RGBA8 colour and a 24-bit depth (stored in 4 bytes) of the
+//    multisampled framebuffer; per pixel besides: OSMesa's RGBA buffer and its depth, llvmpipe's
+//    resolve target, the picture read back and the frame writer's copy for PNG.
+constexpr std::uint64_t kBytesPerPixelSample = 8;
+constexpr std::uint64_t kBytesPerPixel = 20;
+//  - Drawn in linear light (render/frame_targets.hpp: ambient occlusion or motion blur), per
+//    pixel: a half-float colour (8) and a depth (4) texture, the single-float sum (16) and the
+//    occlusion at a quarter of the pixels; with occlusion, a frame of one instant is also drawn
+//    into a multisampled half-float colour and depth (12 bytes a sample).
+constexpr std::uint64_t kLinearBytesPerPixel = 29;
+constexpr std::uint64_t kLinearBytesPerPixelSample = 12;
 constexpr std::uint64_t kBytesPerShadowTexel = 4;  // GL_DEPTH_COMPONENT24
 
 // A std::vector of small vectors (mesh faces and lines) costs its header and a heap block each.
@@ -235,6 +239,14 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
         scene.quality.shadows ? static_cast<std::uint64_t>(scene.quality.shadow_resolution) : 0;
     estimate.drawing = kRendererBytes + pixels * (samples * kBytesPerPixelSample + kBytesPerPixel) +
                        shadow * shadow * kBytesPerShadowTexel + draw_list_bytes(model);
+    const bool occlusion = scene.quality.look.ambient_occlusion;
+    if (occlusion || scene.quality.motion_blur.enabled()) {
+      estimate.drawing +=
+          pixels * (kLinearBytesPerPixel + (occlusion ? samples * kLinearBytesPerPixelSample : 0));
+    }
+    if (scene.quality.motion_blur.enabled()) {  // the instants' map of half the resolution
+      estimate.drawing += shadow * shadow / 4 * kBytesPerShadowTexel;
+    }
   }
   return estimate;
 }

@@ -34,17 +34,20 @@ unsigned make_renderbuffer(int width, int height, int samples, GLenum format) {
 }
 
 // A framebuffer over `color` and `depth` (0 for none), textures or renderbuffers.
-unsigned make_framebuffer(unsigned color, unsigned depth, bool renderbuffers, const char* what) {
+unsigned make_framebuffer(unsigned color, unsigned depth, bool renderbuffers, bool stencil,
+                          const char* what) {
   unsigned framebuffer = 0;
   glGenFramebuffers(1, &framebuffer);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  // The depth buffers of the linear targets carry a stencil too (FrameTargets::Target).
+  const GLenum depth_attachment = stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
   if (renderbuffers) {
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, depth_attachment, GL_RENDERBUFFER, depth);
   } else {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
     if (depth != 0) {
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, depth_attachment, GL_TEXTURE_2D, depth, 0);
     }
   }
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
@@ -91,7 +94,7 @@ void FrameTargets::bind_direct() {
   if (t.framebuffer == 0) {
     t.color = make_renderbuffer(width_, height_, samples_, GL_RGBA8);
     t.depth = make_renderbuffer(width_, height_, samples_, GL_DEPTH_COMPONENT24);
-    t.framebuffer = make_framebuffer(t.color, t.depth, true, "multisampled display");
+    t.framebuffer = make_framebuffer(t.color, t.depth, true, false, "multisampled display");
   }
   bind(t, width_, height_);
 }
@@ -110,9 +113,10 @@ void FrameTargets::bind_linear(bool multisampled) {
   Target& resolved = linear_;
   if (resolved.framebuffer == 0) {
     resolved.color = make_texture(width_, height_, GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, GL_NEAREST);
-    resolved.depth = make_texture(width_, height_, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT,
-                                  GL_UNSIGNED_INT, GL_NEAREST);
-    resolved.framebuffer = make_framebuffer(resolved.color, resolved.depth, false, "frame colour");
+    resolved.depth = make_texture(width_, height_, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL,
+                                  GL_UNSIGNED_INT_24_8, GL_NEAREST);
+    resolved.framebuffer =
+        make_framebuffer(resolved.color, resolved.depth, false, true, "frame colour");
   }
   last_linear_multisampled_ = multisampled && samples_ > 1;
   if (!last_linear_multisampled_) {
@@ -122,8 +126,8 @@ void FrameTargets::bind_linear(bool multisampled) {
   Target& t = linear_multisampled_;
   if (t.framebuffer == 0) {
     t.color = make_renderbuffer(width_, height_, samples_, GL_RGBA16F);
-    t.depth = make_renderbuffer(width_, height_, samples_, GL_DEPTH_COMPONENT24);
-    t.framebuffer = make_framebuffer(t.color, t.depth, true, "multisampled frame colour");
+    t.depth = make_renderbuffer(width_, height_, samples_, GL_DEPTH24_STENCIL8);
+    t.framebuffer = make_framebuffer(t.color, t.depth, true, true, "multisampled frame colour");
   }
   bind(t, width_, height_);
 }
@@ -144,7 +148,8 @@ void FrameTargets::bind_occlusion() {
   const int height = std::max(height_ / 2, 1);
   if (occlusion_.framebuffer == 0) {
     occlusion_.color = make_texture(width, height, GL_R8, GL_RED, GL_UNSIGNED_BYTE, GL_LINEAR);
-    occlusion_.framebuffer = make_framebuffer(occlusion_.color, 0, false, "ambient occlusion");
+    occlusion_.framebuffer =
+        make_framebuffer(occlusion_.color, 0, false, false, "ambient occlusion");
   }
   bind(occlusion_, width, height);
 }
@@ -152,7 +157,7 @@ void FrameTargets::bind_occlusion() {
 void FrameTargets::bind_sum() {
   if (sum_.framebuffer == 0) {
     sum_.color = make_texture(width_, height_, GL_RGBA32F, GL_RGBA, GL_FLOAT, GL_NEAREST);
-    sum_.framebuffer = make_framebuffer(sum_.color, 0, false, "frame sum");
+    sum_.framebuffer = make_framebuffer(sum_.color, 0, false, false, "frame sum");
   }
   bind(sum_, width_, height_);
 }
@@ -161,7 +166,8 @@ void FrameTargets::bind_sum_with_depth() {
   if (sum_with_depth_ == 0) {
     bind_linear(false);  // makes the depth texture
     bind_sum();
-    sum_with_depth_ = make_framebuffer(sum_.color, linear_.depth, false, "frame sum and depth");
+    sum_with_depth_ =
+        make_framebuffer(sum_.color, linear_.depth, false, true, "frame sum and depth");
   }
   glBindFramebuffer(GL_FRAMEBUFFER, sum_with_depth_);
   glViewport(0, 0, width_, height_);

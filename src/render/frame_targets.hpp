@@ -33,7 +33,8 @@ class FrameTargets {
   unsigned sum_texture() const { return sum_.color; }
 
  private:
-  // A framebuffer and its colour and depth attachments (textures, or multisampled renderbuffers).
+  // A framebuffer and its colour and depth attachments (textures, or multisampled renderbuffers);
+  // the linear targets' depth holds a stencil as well, which blurred frames' instants use.
   struct Target {
     unsigned framebuffer = 0;
     unsigned color = 0;

@@ -471,17 +471,26 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
   if (target == InstantTarget::kAdded) {
     // 3. Added to the sum: depths first, then each pixel's visible fragment alone is shaded and
     //    added with its weight (no colour buffer of its own, no overdraw shaded, no pass to add
-    //    it), then the sky where nothing was drawn.
+    //    it), then the sky where nothing was added. The depths go a few units of depth farther
+    //    (a polygon offset) and the colour pass keeps what is not behind them, since Mesa's
+    //    software rasteriser does not give a depth-only program exactly the depths of a shaded
+    //    one; the stencil lets only the first such fragment of a pixel add itself.
     targets_->bind_sum_with_depth();
-    glClear(GL_DEPTH_BUFFER_BIT);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(0.0f, 8.0f);
     if (list.ground_visible) {
       draw_ground(list, clip_from_world, camera, nullptr, false, true);
     }
     draw_shapes(list, true, clip_from_world.data(), camera, nullptr, false);
+    glDisable(GL_POLYGON_OFFSET_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_FALSE);
-    glDepthFunc(GL_EQUAL);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
     glEnable(GL_BLEND);
     glBlendColor(0.0f, 0.0f, 0.0f, weight);
     glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE);
@@ -489,12 +498,12 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
       draw_ground(list, clip_from_world, camera, light, false, false);
     }
     draw_shapes(list, false, clip_from_world.data(), camera, light, false);
-    glDepthFunc(GL_LEQUAL);  // the sky lies at the far plane, where the depth was cleared
-    draw_sky(false);
+    glDisable(GL_DEPTH_TEST);
+    draw_sky(false);  // where the stencil is still 0
     glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    glDisable(GL_DEPTH_TEST);
     return;
   }
 

@@ -11,6 +11,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "render/camera.hpp"
+#include "render/draw_list.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "test_support.hpp"
 
@@ -58,14 +59,19 @@ std::vector<Image> render_frames(const std::string& text) {
 }
 
 // Along the row through the bar's middle: how much the bar takes away from the sky's green, in
-// linear light (the display value decoded by its gamma), per pixel.
+// linear light (the display value decoded by its gamma), per pixel. The sky is the mean of the
+// row's first and last 100 pixels: the display's dither makes that mean the sky's own value, and
+// leaves each pixel's rounding unbiased.
 std::vector<double> darkening(const Image& image) {
   const int row = kHeight / 2;
   const auto linear = [&](int x) { return std::pow(image.pixel(x, row)[1] / 255.0, 2.2); };
-  const double sky = 0.5 * (linear(0) + linear(kWidth - 1));
+  double sky = 0.0;
+  for (int x = 0; x < 100; ++x) {
+    sky += (linear(x) + linear(kWidth - 1 - x)) / 200.0;
+  }
   std::vector<double> profile(kWidth);
   for (int x = 0; x < kWidth; ++x) {
-    profile[static_cast<std::size_t>(x)] = std::max(sky - linear(x), 0.0);
+    profile[static_cast<std::size_t>(x)] = sky - linear(x);
   }
   return profile;
 }
@@ -100,31 +106,54 @@ double pixels_per_metre() {
   return kHeight / (2.0 * 6.0 * std::tan(15.0 * M_PI / 180.0));
 }
 
+// Darkening-weighted mean column over columns first … last, pixels (a window around the bar, so
+// that the dither elsewhere weighs nothing).
+double centroid(const std::vector<double>& profile, double first, double last) {
+  double moment = 0.0;
+  double total = 0.0;
+  for (auto x = static_cast<std::size_t>(first); x <= static_cast<std::size_t>(last); ++x) {
+    moment += static_cast<double>(x) * profile[x];
+    total += profile[x];
+  }
+  return moment / total;
+}
+
 TEST(MotionBlur, BarAtConstantSpeedSmearsOverShutterTimesSpeedOverFps) {
   const double speed = 20.0;  // m/s
   const double shutter = 0.5;
   const std::vector<Image> sharp = render_frames(flying_bar(speed, ""));
   const std::vector<Image> blurred =
       render_frames(flying_bar(speed, ", motion_blur: {shutter: 0.5, samples: 64}"));
+  // The same bar under a shutter ten times shorter: nearly sharp, but drawn as blurred frames are
+  // (each instant in linear light, moved by a fraction of a pixel).
+  const std::vector<Image> brief =
+      render_frames(flying_bar(speed, ", motion_blur: {shutter: 0.05, samples: 64}"));
   ASSERT_EQ(sharp.size(), 4u);
   ASSERT_EQ(blurred.size(), 4u);
+  ASSERT_EQ(brief.size(), 4u);
   // Frame 3 (t = 0.1 s): the shutter is open from 1/80 s before to 1/80 s after, over which the
   // bar travels shutter × speed / fps = 0.5 m, 56 pixels, eighteen times its 2 cm width. The
   // profile of a thin bar averaged over that travel is a plateau as wide as the travel (to
-  // within the bar's width, a pixel or two, and the 64 instants' spacing, under a pixel).
+  // within the bar's width, a pixel or two, and the 64 instants' spacing, under a pixel),
+  // centred where the bar is at the frame's time.
   const double travel = shutter * speed / 20.0 * pixels_per_metre();
   const std::vector<double> moving = darkening(blurred[2]);
-  const std::vector<double> still = darkening(sharp[2]);
   EXPECT_NEAR(full_width_at_half_maximum(moving), travel, 2.0);
-  EXPECT_LT(full_width_at_half_maximum(still), 6.0);
+  EXPECT_LT(full_width_at_half_maximum(darkening(sharp[2])), 6.0);
+  const RenderCamera camera{Vec3f(0.5f, -6, 1), Vec3f(0.5f, 0, 1), Vec3f::UnitZ(), 30.0f};
+  const double at_frame = pixel_from_world(camera, kWidth, kHeight, Vec3f(2.0f, 0, 1)).x();
+  EXPECT_NEAR(centroid(moving, at_frame - travel, at_frame + travel), at_frame, 1.0);
   // In linear light the blur moves the bar's light around and keeps its total: a mean of gamma-
-  // encoded values would darken the sky about 1.7 times as much here (the slope of the display
-  // curve at the sky's green, against the straight line to the bar's). 8 % leaves room for the
-  // 8-bit display values of a faint smear.
-  EXPECT_NEAR(sum(moving) / sum(still), 1.0, 0.08);
-  // Frame 1 (t = 0): before the motion starts the bar is where it starts, so only the half of the
-  // shutter after t = 0 smears it.
-  EXPECT_NEAR(full_width_at_half_maximum(darkening(blurred[0])), 0.5 * travel, 2.0);
+  // encoded values would darken the sky about 1.7 times as much over the long smear (the slope
+  // of the display curve at the sky's green, against the straight line to the bar's), and less
+  // over the short one. 8 % leaves room for the 8-bit display values of a faint smear.
+  EXPECT_NEAR(sum(moving) / sum(darkening(brief[2])), 1.0, 0.08);
+  // Frame 1 (t = 0): before the motion starts the bar is where it starts, so half the instants
+  // show it there and the other half spread over the half of the travel after t = 0: the mean
+  // column lies an eighth of the travel ahead of the start.
+  const double start = pixel_from_world(camera, kWidth, kHeight, Vec3f(0, 0, 1)).x();
+  EXPECT_NEAR(centroid(darkening(blurred[0]), start - 10.0, start + travel) - start, travel / 8.0,
+              1.0);
 }
 
 TEST(MotionBlur, StillSceneIsDrawnIdenticallyWithAndWithoutBlur) {

@@ -33,7 +33,7 @@ TEST(CameraPath, PassesThroughEveryKeyAndHoldsOutsideThem) {
 // and at the middle key the slope between its neighbours (Catmull–Rom).
 TEST(CameraPath, MovesWithoutKinksAndEasesInAndOut) {
   const std::vector<CameraKey> keys = three_keys();
-  const double h = 1e-3;
+  const double h = 1e-4;
   const auto at = [&](double t) { return camera_on_path(keys, t, Vec3f::UnitZ()).position; };
   const auto velocity = [&](double t0, double t1) {
     return Vec3f((at(t1) - at(t0)) / static_cast<float>(t1 - t0));
@@ -41,10 +41,12 @@ TEST(CameraPath, MovesWithoutKinksAndEasesInAndOut) {
   const Vec3f before = velocity(1.0 - 2 * h, 1.0 - h);
   const Vec3f after = velocity(1.0 + h, 1.0 + 2 * h);
   const Vec3f catmull_rom = (keys[2].position - keys[0].position) / 3.0f;
-  EXPECT_LT((before - catmull_rom).norm(), 0.02f);
-  EXPECT_LT((after - catmull_rom).norm(), 0.02f);
-  EXPECT_LT(velocity(0.0, h).norm(), 0.02f);
-  EXPECT_LT(velocity(3.0 - h, 3.0).norm(), 0.02f);
+  // Differences over 0.1 ms are off the velocity at the key by about the acceleration × 0.15 ms
+  // (under 3 mm/s here), and single-precision positions add under 5 mm/s.
+  EXPECT_LT((before - catmull_rom).norm(), 0.01f);
+  EXPECT_LT((after - catmull_rom).norm(), 0.01f);
+  EXPECT_LT(velocity(0.0, h).norm(), 0.01f);
+  EXPECT_LT(velocity(3.0 - h, 3.0).norm(), 0.01f);
 }
 
 TEST(CameraPath, OrbitCirclesItsCentreAtItsHeightLookingAtIt) {
