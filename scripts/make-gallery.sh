@@ -8,7 +8,7 @@ mkdir -p docs/gallery
 # The frame that shows each scene best.
 declare -A frame=([flag]=50 [windy_flag]=70 [ball]=6 [trampoline]=54 [rope]=16 [wire_chair]=80
                   [shaken_tower]=233 [storm_flag]=120 [draped_chair]=50
-                  [ball_in_net]=8 [rope_heap]=60)
+                  [ball_in_net]=8 [rope_heap]=60 [finishes]=30)
 for scene in scenes/*.yaml; do
   name=$(basename "$scene" .yaml)
   n=${frame[$name]:-60}
