@@ -11,19 +11,25 @@ vec3 filmic(vec3 x) {
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
 
-// Display values, dithered by up to half a step of 8 bits (interleaved gradient noise) so that
-// smooth gradients (the sky, a faint blur) do not band and a region's mean is its true value.
-vec3 display_color(vec3 linear_color) {
+// Display values; `dithered`, by up to half a step of 8 bits (interleaved gradient noise), so that
+// the smooth gradients of a frame averaged in floating point (a faint blur) do not band and a
+// region's mean is its true value. Frames drawn straight for the display are not dithered: noise
+// would double the size of their PNG files.
+vec3 display_color(vec3 linear_color, bool dithered) {
   vec3 c = linear_color * exposure_scale;
 #ifdef TONE_MAPPING
   c = filmic(c);
 #else
   c = clamp(c, 0.0, 1.0);
 #endif
-  float noise = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-  return pow(c, vec3(1.0 / 2.2)) + (noise - 0.5) / 255.0;
+  c = pow(c, vec3(1.0 / 2.2));
+  if (dithered) {
+    float noise = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+    c += (noise - 0.5) / 255.0;
+  }
+  return c;
 }
 
 vec4 stored_color(vec3 linear_color) {
-  return vec4(direct_to_display ? display_color(linear_color) : linear_color, 1.0);
+  return vec4(direct_to_display ? display_color(linear_color, false) : linear_color, 1.0);
 }

@@ -24,5 +24,5 @@ void main() {
     }
     color *= sum / 4.0;
   }
-  out_color = vec4(display_color(color), 1.0);
+  out_color = vec4(display_color(color, true), 1.0);
 }

@@ -25,15 +25,17 @@ constexpr std::uint64_t kProgramBytes = 64'000'000;
 //    a 121-node scene drawn at 640×360, 1920×1080 and 3840×2160 took 61, 155 and 473 MB over
 //    `info`, i.e. 49 MB + 51 bytes a pixel with 4 samples, of which the shadow map is 17 MB.
 constexpr std::uint64_t kRendererBytes = 32'000'000;
-//  - Per pixel and sample: an RGBA8 colour and a 24-bit depth (stored in 4 bytes) of the
-//    multisampled framebuffer; per pixel besides: OSMesa's RGBA buffer and its depth, llvmpipe's
-//    resolve target, the picture read back and the frame writer's copy for PNG.
-constexpr std::uint64_t kBytesPerPixelSample = 8;
+//  - Per pixel: OSMesa's RGBA buffer and its depth, llvmpipe's resolve target, the picture read
+//    back and the frame writer's copy for PNG. The frame targets (render/frame_targets.hpp) are
+//    made as the frames need them:
+//     - a frame of one instant without occlusion: a multisampled RGBA8 colour and a 24-bit
+//       depth, 8 bytes a sample;
+//     - occlusion or motion blur: a half-float colour (8) and a depth (4) texture, the
+//       single-float sum (16) and the occlusion at a quarter of the pixels, 29 bytes a pixel;
+//     - a frame of one instant with occlusion: besides, a multisampled half-float colour and
+//       depth, 12 bytes a sample.
 constexpr std::uint64_t kBytesPerPixel = 20;
-//  - Drawn in linear light (render/frame_targets.hpp: ambient occlusion or motion blur), per
-//    pixel: a half-float colour (8) and a depth (4) texture, the single-float sum (16) and the
-//    occlusion at a quarter of the pixels; with occlusion, a frame of one instant is also drawn
-//    into a multisampled half-float colour and depth (12 bytes a sample).
+constexpr std::uint64_t kDirectBytesPerPixelSample = 8;
 constexpr std::uint64_t kLinearBytesPerPixel = 29;
 constexpr std::uint64_t kLinearBytesPerPixelSample = 12;
 constexpr std::uint64_t kBytesPerShadowTexel = 4;  // GL_DEPTH_COMPONENT24
@@ -237,14 +239,16 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
     const auto samples = static_cast<std::uint64_t>(std::max(scene.quality.samples, 1));
     const auto shadow =
         scene.quality.shadows ? static_cast<std::uint64_t>(scene.quality.shadow_resolution) : 0;
-    estimate.drawing = kRendererBytes + pixels * (samples * kBytesPerPixelSample + kBytesPerPixel) +
-                       shadow * shadow * kBytesPerShadowTexel + draw_list_bytes(model);
+    // Which targets the frames need: a blurred scene's frames at rest are drawn as one instant.
     const bool occlusion = scene.quality.look.ambient_occlusion;
-    if (occlusion || scene.quality.motion_blur.enabled()) {
-      estimate.drawing +=
-          pixels * (kLinearBytesPerPixel + (occlusion ? samples * kLinearBytesPerPixelSample : 0));
-    }
-    if (scene.quality.motion_blur.enabled()) {  // the instants' map of half the resolution
+    const bool blur = scene.quality.motion_blur.enabled();
+    std::uint64_t per_pixel = kBytesPerPixel;
+    per_pixel += occlusion ? 0 : samples * kDirectBytesPerPixelSample;
+    per_pixel += occlusion || blur ? kLinearBytesPerPixel : 0;
+    per_pixel += occlusion ? samples * kLinearBytesPerPixelSample : 0;
+    estimate.drawing = kRendererBytes + pixels * per_pixel +
+                       shadow * shadow * kBytesPerShadowTexel + draw_list_bytes(model);
+    if (blur) {  // the instants' shadow map, of half the resolution
       estimate.drawing += shadow * shadow / 4 * kBytesPerShadowTexel;
     }
   }
