@@ -22,6 +22,7 @@
 #include "app/draw_list_from_model.hpp"
 #include "app/frame_source.hpp"
 #include "dynamics/stability.hpp"
+#include "median_time.hpp"
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
@@ -30,17 +31,6 @@ namespace dinam {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double median_seconds(int repeats, const std::function<void()>& run) {
-  std::vector<double> times;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = Clock::now();
-    run();
-    times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-  }
-  std::nth_element(times.begin(), times.begin() + repeats / 2, times.end());
-  return times[static_cast<std::size_t>(repeats / 2)];
-}
 
 // A subject to draw: its list, one instant's positions and camera, and eight instants for blur.
 struct Subject {

@@ -25,30 +25,13 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "io/png_file.hpp"
+#include "median_time.hpp"
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// The median of `repeats` timings of `run`, in seconds.
-double median_seconds(int repeats, const std::function<void()>& run) {
-  std::vector<double> times;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = Clock::now();
-    run();
-    times.push_back(seconds_since(start));
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
 
 // Heap in use now, bytes: what is allocated and not yet freed (glibc's mallinfo2, small blocks
 // and mmap'ed large ones). Unlike the resident set it does not count heap that building the model

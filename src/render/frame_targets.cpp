@@ -80,6 +80,17 @@ void FrameTargets::bind(const Target& target, int width, int height) const {
   glViewport(0, 0, width, height);
 }
 
+void FrameTargets::make_multisampled(Target& target, unsigned color_format, bool stencil,
+                                     const char* what) const {
+  if (target.framebuffer != 0) {
+    return;
+  }
+  target.color = make_renderbuffer(width_, height_, samples_, color_format);
+  target.depth = make_renderbuffer(width_, height_, samples_,
+                                   stencil ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT24);
+  target.framebuffer = make_framebuffer(target.color, target.depth, true, stencil, what);
+}
+
 void FrameTargets::bind_display() const {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width_, height_);
@@ -90,13 +101,8 @@ void FrameTargets::bind_direct() {
     bind_display();
     return;
   }
-  Target& t = direct_multisampled_;
-  if (t.framebuffer == 0) {
-    t.color = make_renderbuffer(width_, height_, samples_, GL_RGBA8);
-    t.depth = make_renderbuffer(width_, height_, samples_, GL_DEPTH_COMPONENT24);
-    t.framebuffer = make_framebuffer(t.color, t.depth, true, false, "multisampled display");
-  }
-  bind(t, width_, height_);
+  make_multisampled(direct_multisampled_, GL_RGBA8, false, "multisampled display");
+  bind(direct_multisampled_, width_, height_);
 }
 
 void FrameTargets::resolve_direct() {
@@ -123,13 +129,8 @@ void FrameTargets::bind_linear(bool multisampled) {
     bind(resolved, width_, height_);
     return;
   }
-  Target& t = linear_multisampled_;
-  if (t.framebuffer == 0) {
-    t.color = make_renderbuffer(width_, height_, samples_, GL_RGBA16F);
-    t.depth = make_renderbuffer(width_, height_, samples_, GL_DEPTH24_STENCIL8);
-    t.framebuffer = make_framebuffer(t.color, t.depth, true, true, "multisampled frame colour");
-  }
-  bind(t, width_, height_);
+  make_multisampled(linear_multisampled_, GL_RGBA16F, true, "multisampled frame colour");
+  bind(linear_multisampled_, width_, height_);
 }
 
 void FrameTargets::resolve_linear() {

@@ -41,6 +41,9 @@ class FrameTargets {
     unsigned depth = 0;
   };
   void bind(const Target& target, int width, int height) const;
+  // Makes `target` multisampled at the picture's size, unless it is made already.
+  void make_multisampled(Target& target, unsigned color_format, bool stencil,
+                         const char* what) const;
 
   int width_;
   int height_;

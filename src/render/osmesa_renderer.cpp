@@ -110,8 +110,8 @@ bool same_instant(const FrameSample& a, const FrameSample& b) {
 }
 
 const Finish& finish_of(const std::vector<Finish>& finishes, std::size_t i) {
-  static const Finish kDefault;
-  return i < finishes.size() ? finishes[i] : kDefault;
+  static const Finish plastic;  // the default finish
+  return i < finishes.size() ? finishes[i] : plastic;
 }
 
 // The #defines that build the look's choices into the shaders (lighting.glsl, display.glsl).

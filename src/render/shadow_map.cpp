@@ -36,6 +36,19 @@ Mat4f light_clip_from_world(const DrawList& list, const Vec3f& direction, Mat4f&
   return clip;
 }
 
+// A sampler clamped at the edges, filtered by `filter`, comparing depths (≤) or not.
+unsigned make_sampler(GLint filter, GLint compare_mode) {
+  unsigned sampler = 0;
+  glGenSamplers(1, &sampler);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, filter);
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, filter);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_MODE, compare_mode);
+  glSamplerParameteri(sampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  return sampler;
+}
+
 }  // namespace
 
 ShadowMap::ShadowMap(int resolution) : resolution_(resolution) {
@@ -48,19 +61,8 @@ ShadowMap::ShadowMap(int resolution) : resolution_(resolution) {
   glBindTexture(GL_TEXTURE_2D, 0);
 
   // One texture, two ways of reading it: sampler objects override the texture's own state.
-  glGenSamplers(1, &compare_sampler_);
-  glSamplerParameteri(compare_sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glSamplerParameteri(compare_sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glSamplerParameteri(compare_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(compare_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(compare_sampler_, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glSamplerParameteri(compare_sampler_, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-  glGenSamplers(1, &depth_sampler_);
-  glSamplerParameteri(depth_sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glSamplerParameteri(depth_sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glSamplerParameteri(depth_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(depth_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glSamplerParameteri(depth_sampler_, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  compare_sampler_ = make_sampler(GL_LINEAR, GL_COMPARE_REF_TO_TEXTURE);
+  depth_sampler_ = make_sampler(GL_NEAREST, GL_NONE);
 
   glGenFramebuffers(1, &framebuffer_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
@@ -83,7 +85,7 @@ ShadowMap::~ShadowMap() {
 
 Mat4f ShadowMap::begin(const DrawList& list, const Vec3f& light_direction,
                        Mat4f& light_from_world) {
-  const Mat4f clip = light_clip_from_world(list, light_direction, light_from_world);
+  Mat4f clip = light_clip_from_world(list, light_direction, light_from_world);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glViewport(0, 0, resolution_, resolution_);
   glClear(GL_DEPTH_BUFFER_BIT);
