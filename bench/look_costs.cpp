@@ -147,8 +147,6 @@ void report_features(const Subject& s, bool large) {
        [](RenderQualityDesc& q) { q.shadows = false; }},
       {"standard, no multisampling", QualityPreset::kStandard,
        [](RenderQualityDesc& q) { q.samples = 1; }},
-      {"standard, 6-sided cylinders", QualityPreset::kStandard,
-       [](RenderQualityDesc& q) { q.look.cylinder_sides = 6; }},
       {"standard with 8 blur instants", QualityPreset::kStandard, none, true},
   };
   fmt::print("\n{} at 1280x720\n", s.name);

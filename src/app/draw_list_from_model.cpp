@@ -84,11 +84,11 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
   list.point_color.resize(model.node_count());
   list.point_finish.resize(model.node_count());
   list.point_uv = model.node_uv;
+  // No spheres at the nodes: the bars' capsules join there with their round ends (flat ends for
+  // an object drawn without joints).
   for (Index i = 0; i < model.node_count(); ++i) {
     const Index object = model.node_object[i];
-    const bool joint =
-        object_wire[object] && scene.objects[static_cast<std::size_t>(object)].joints;
-    list.point_radius[i] = joint ? object_radius[object] : 0.0f;
+    list.point_radius[i] = 0.0f;
     list.point_color[i] = model.objects[object].color;
     list.point_finish[i] = scene.objects[static_cast<std::size_t>(object)].finish;
   }
@@ -100,7 +100,8 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
     }
     list.segment_points.push_back(model.bar_nodes[2 * b]);
     list.segment_points.push_back(model.bar_nodes[2 * b + 1]);
-    list.segment_radius.push_back(object_radius[object]);
+    const bool round = scene.objects[static_cast<std::size_t>(object)].joints;
+    list.segment_radius.push_back(round ? object_radius[object] : -object_radius[object]);
     list.segment_color.push_back(model.objects[object].color);
     list.segment_finish.push_back(scene.objects[static_cast<std::size_t>(object)].finish);
   }

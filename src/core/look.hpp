@@ -29,8 +29,7 @@ struct LookSettings {
   // Filmic tone mapping (the ACES fit of Narkowicz): highlights roll off instead of clipping.
   // Off: linear colour clipped at white.
   bool tone_mapping = true;
-  float exposure = 0.0f;    // stops; +1 doubles the light
-  int cylinder_sides = 10;  // of the bars' cylinders: 6 draws faster, and looks faceted close up
+  float exposure = 0.0f;  // stops; +1 doubles the light
 };
 
 }  // namespace dinam

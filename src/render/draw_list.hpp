@@ -1,7 +1,7 @@
 #pragma once
-// What the renderer draws, in its own terms: segments between points, joints, surfaces over
-// points, a ground and a light. render/ never sees springs or materials; app/ fills this from the
-// model once, and each frame only the point positions (and the camera) change.
+// What the renderer draws, in its own terms: segments between points, spheres at points, surfaces
+// over points, a ground and a light. render/ never sees springs or materials; app/ fills this from
+// the model once, and each frame only the point positions (and the camera) change.
 #include <vector>
 
 #include "core/image.hpp"
@@ -24,8 +24,10 @@ struct SurfaceBatch {
 };
 
 struct DrawList {
-  std::vector<Index> segment_points;      // (n_segments × 2) ids into the per-frame positions
-  std::vector<float> segment_radius;      // (n_segments) m
+  std::vector<Index> segment_points;  // (n_segments × 2) ids into the per-frame positions
+  // (n_segments) m; a segment is a capsule, its round ends joining it to the segments that meet
+  // it; a negative radius gives it flat ends instead.
+  std::vector<float> segment_radius;
   std::vector<Vec3f> segment_color;       // (n_segments) linear RGB
   std::vector<Finish> segment_finish;     // (n_segments), or empty for the default finish
   std::vector<float> point_radius;        // (n_points) m; 0 draws no joint sphere

@@ -25,6 +25,10 @@ constexpr int kShadowCompareUnit = 1;
 constexpr int kShadowDepthUnit = 2;
 constexpr int kOcclusionUnit = 3;
 constexpr int kSceneDepthUnit = 4;
+// The depth pre-pass of a blurred instant writes its depths this much farther (8 steps of a
+// 24-bit depth buffer): a polygon offset for triangles, added by the shader for the capsules,
+// whose depth it writes itself.
+constexpr float kPrepassDepthMargin = 8.0f / 16777216.0f;
 const Vec3f kHorizonColor{0.78f, 0.82f, 0.86f};
 const Vec3f kZenithColor{0.30f, 0.45f, 0.68f};
 
@@ -132,7 +136,7 @@ std::string look_defines(const LookSettings& look, bool jittered) {
 
 struct OsmesaRenderer::Programs {
   explicit Programs(const std::string& look)
-      : bar("bar.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
+      : bar("capsule.vert", "capsule.frag", {"display.glsl", "lighting.glsl"}, look),
         node("node.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
         surface("surface.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
         ground("ground.vert", "ground.frag", {"display.glsl", "lighting.glsl"}, look),
@@ -145,7 +149,7 @@ struct OsmesaRenderer::Programs {
   ShaderProgram ground;
   ShaderProgram sky;
   ShaderProgram finish;
-  ShaderProgram bar_depth{"bar.vert", "depth.frag"};
+  ShaderProgram bar_depth{"capsule.vert", "capsule.frag", {}, "#define DEPTH_ONLY\n"};
   ShaderProgram node_depth{"node.vert", "depth.frag"};
   ShaderProgram surface_depth{"surface.vert", "depth.frag"};
   ShaderProgram ground_depth{"ground.vert", "depth.frag"};
@@ -167,24 +171,28 @@ OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
 }
 
 OsmesaRenderer::~OsmesaRenderer() {
-  const unsigned buffers[] = {cylinder_vbo_,        cylinder_ebo_,       bar_instance_vbo_,
-                              sphere_vbo_,          sphere_ebo_,         node_instance_vbo_,
-                              surface_dynamic_vbo_, surface_static_vbo_, ground_vbo_};
+  const unsigned buffers[] = {capsule_vbo_,        bar_instance_vbo_,  sphere_vbo_,
+                              sphere_ebo_,         node_instance_vbo_, surface_dynamic_vbo_,
+                              surface_static_vbo_, ground_vbo_};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
   glDeleteBuffers(static_cast<GLsizei>(batch_ebos_.size()), batch_ebos_.data());
   glDeleteTextures(static_cast<GLsizei>(texture_ids_.size()), texture_ids_.data());
-  const unsigned arrays[] = {cylinder_vao_, sphere_vao_, surface_vao_, ground_vao_,
+  const unsigned arrays[] = {capsule_vao_, sphere_vao_, surface_vao_, ground_vao_,
                              full_screen_vao_};
   glDeleteVertexArrays(static_cast<GLsizei>(std::size(arrays)), arrays);
 }
 
 void OsmesaRenderer::create_buffers() {
-  glGenVertexArrays(1, &cylinder_vao_);
-  glGenBuffers(1, &cylinder_vbo_);
-  glGenBuffers(1, &cylinder_ebo_);
+  // A bar's quad (capsule.vert): four corners drawn as a triangle strip.
+  glGenVertexArrays(1, &capsule_vao_);
+  glGenBuffers(1, &capsule_vbo_);
   glGenBuffers(1, &bar_instance_vbo_);
-  cylinder_index_count_ = upload_primitive(make_unit_cylinder(settings_.look.cylinder_sides),
-                                           cylinder_vao_, cylinder_vbo_, cylinder_ebo_);
+  glBindVertexArray(capsule_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, capsule_vbo_);
+  const float quad[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+  glBufferData(GL_ARRAY_BUFFER, sizeof(quad), quad, GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), float_offset(0));
   attributes(bar_instance_vbo_, 2, {3, 3, 1, 3, 3}, 1);
 
   glGenVertexArrays(1, &sphere_vao_);
@@ -342,7 +350,8 @@ void OsmesaRenderer::set_lighting(const ShaderProgram& program, const DrawList& 
 
 void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
                                  const float* clip_from_world, const RenderCamera& camera,
-                                 const Mat4f* light_from_world, bool direct) {
+                                 const Mat4f* light_from_world, bool direct,
+                                 const Vec3f& orthographic_sight, float capsule_depth_offset) {
   const auto prepare = [&](const ShaderProgram& program) {
     program.use();
     glUniformMatrix4fv(program.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world);
@@ -356,10 +365,18 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
   };
   const std::size_t n_segments = list.segment_radius.size();
   if (n_segments > 0) {
-    prepare(depth_only ? programs_in_use_->bar_depth : programs_in_use_->bar);
-    glBindVertexArray(cylinder_vao_);
-    glDrawElementsInstanced(GL_TRIANGLES, cylinder_index_count_, GL_UNSIGNED_INT, nullptr,
-                            static_cast<GLsizei>(n_segments));
+    const ShaderProgram& program = depth_only ? programs_in_use_->bar_depth : programs_in_use_->bar;
+    prepare(program);
+    set_vec3(program.uniform("view_origin"), camera.position);
+    set_vec3(program.uniform("view_direction"), orthographic_sight);
+    glUniform1f(program.uniform("depth_offset"), capsule_depth_offset);
+    // The capsule's silhouette is decided in the fragment shader: with multisampling, each
+    // sample is shaded on its own, or the edges would not be smoothed.
+    glEnable(GL_SAMPLE_SHADING);
+    glMinSampleShading(1.0f);
+    glBindVertexArray(capsule_vao_);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_segments));
+    glDisable(GL_SAMPLE_SHADING);
   }
   if (!node_instances_.empty()) {
     prepare(depth_only ? programs_in_use_->node_depth : programs_in_use_->node);
@@ -447,7 +464,7 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
     }
     ShadowMap& map = added ? *jittered_shadow_map_ : *shadow_map_;
     const Mat4f light_clip = map.begin(list, light_direction_, light_from_world);
-    draw_shapes(list, true, light_clip.data(), camera, nullptr, direct);
+    draw_shapes(list, true, light_clip.data(), camera, nullptr, direct, -light_direction_, 0.0f);
     map.end();
     map.bind(kShadowCompareUnit, kShadowDepthUnit);
   } else {
@@ -483,7 +500,8 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
     if (list.ground_visible) {
       draw_ground(list, clip_from_world, camera, nullptr, false, true);
     }
-    draw_shapes(list, true, clip_from_world.data(), camera, nullptr, false);
+    draw_shapes(list, true, clip_from_world.data(), camera, nullptr, false, Vec3f::Zero(),
+                kPrepassDepthMargin);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_FALSE);
@@ -497,7 +515,7 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
     if (list.ground_visible) {
       draw_ground(list, clip_from_world, camera, light, false, false);
     }
-    draw_shapes(list, false, clip_from_world.data(), camera, light, false);
+    draw_shapes(list, false, clip_from_world.data(), camera, light, false, Vec3f::Zero(), 0.0f);
     glDisable(GL_DEPTH_TEST);
     draw_sky(false);  // where the stencil is still 0
     glDisable(GL_BLEND);
@@ -520,7 +538,7 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
   if (list.ground_visible) {
     draw_ground(list, clip_from_world, camera, light, direct, false);
   }
-  draw_shapes(list, false, clip_from_world.data(), camera, light, direct);
+  draw_shapes(list, false, clip_from_world.data(), camera, light, direct, Vec3f::Zero(), 0.0f);
   glDisable(GL_DEPTH_TEST);
   if (direct) {
     targets_->resolve_direct();

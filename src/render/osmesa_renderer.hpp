@@ -1,6 +1,7 @@
 #pragma once
 // The Renderer on OSMesa (Mesa's software OpenGL, core profile): a sky gradient, a checkered
-// ground that takes shadows, bars as lit instanced cylinders, joints as spheres, mesh faces as
+// ground that takes shadows, bars as capsules ray-cast in quads (impostors), spheres where a
+// list asks for them, mesh faces as
 // two-sided surfaces (plain or textured), a shadow map from the sun, multisampled anti-aliasing,
 // then (core/look.hpp) ambient occlusion, the average of a frame's instants (motion blur) and tone
 // mapping. One renderer draws many frames of one size.
@@ -53,8 +54,11 @@ class OsmesaRenderer final : public Renderer {
   void draw_sky(bool direct);
   void draw_ground(const DrawList& list, const Mat4f& clip_from_world, const RenderCamera& camera,
                    const Mat4f* light_from_world, bool direct, bool depth_only);
+  // `orthographic_sight`: the line of sight of an orthographic view (the light's), zero for the
+  // camera's; `capsule_depth_offset`: what the capsules add to the depth they write.
   void draw_shapes(const DrawList& list, bool depth_only, const float* clip_from_world,
-                   const RenderCamera& camera, const Mat4f* light_from_world, bool direct);
+                   const RenderCamera& camera, const Mat4f* light_from_world, bool direct,
+                   const Vec3f& orthographic_sight, float capsule_depth_offset);
   // The lighting uniforms of lighting.glsl; `light_from_world` null when there are no shadows.
   void set_lighting(const ShaderProgram& program, const DrawList& list, const RenderCamera& camera,
                     const Mat4f* light_from_world) const;
@@ -76,11 +80,10 @@ class OsmesaRenderer final : public Renderer {
   std::unique_ptr<ShadowMap> shadow_map_;           // null when shadows are off
   std::unique_ptr<ShadowMap> jittered_shadow_map_;  // for blurred frames' instants, when needed
 
-  unsigned cylinder_vao_ = 0, cylinder_vbo_ = 0, cylinder_ebo_ = 0, bar_instance_vbo_ = 0;
+  unsigned capsule_vao_ = 0, capsule_vbo_ = 0, bar_instance_vbo_ = 0;
   unsigned sphere_vao_ = 0, sphere_vbo_ = 0, sphere_ebo_ = 0, node_instance_vbo_ = 0;
   unsigned surface_vao_ = 0, surface_dynamic_vbo_ = 0, surface_static_vbo_ = 0;
   unsigned ground_vao_ = 0, ground_vbo_ = 0, full_screen_vao_ = 0;
-  int cylinder_index_count_ = 0;
   int sphere_index_count_ = 0;
 
   // What upload_static last saw, so a list is uploaded once and a new one replaces it.

@@ -5,23 +5,6 @@
 
 namespace dinam {
 
-PrimitiveMesh make_unit_cylinder(int sides) {
-  PrimitiveMesh mesh;
-  const float step = 2.0f * std::numbers::pi_v<float> / static_cast<float>(sides);
-  for (int i = 0; i <= sides; ++i) {
-    const float c = std::cos(step * static_cast<float>(i));
-    const float s = std::sin(step * static_cast<float>(i));
-    for (const float z : {0.0f, 1.0f}) {
-      mesh.vertices.insert(mesh.vertices.end(), {c, s, z, c, s, 0.0f});
-    }
-  }
-  for (int i = 0; i < sides; ++i) {
-    const auto a = static_cast<unsigned>(2 * i);
-    mesh.indices.insert(mesh.indices.end(), {a, a + 2, a + 1, a + 1, a + 2, a + 3});
-  }
-  return mesh;
-}
-
 PrimitiveMesh make_unit_sphere(int slices, int stacks) {
   PrimitiveMesh mesh;
   for (int j = 0; j <= stacks; ++j) {

@@ -1,5 +1,5 @@
 #pragma once
-// Unit shapes drawn once per bar or node by instancing: interleaved (position, normal) triangles.
+// Unit shapes drawn once per point by instancing: interleaved (position, normal) triangles.
 #include <vector>
 
 namespace dinam {
@@ -8,9 +8,6 @@ struct PrimitiveMesh {
   std::vector<float> vertices;    // (n_vertices × 6) px py pz nx ny nz
   std::vector<unsigned> indices;  // (n_triangles × 3)
 };
-
-// Radius 1 around the z axis, z from 0 to 1, open at the ends (joint spheres close them).
-PrimitiveMesh make_unit_cylinder(int sides);
 
 // Radius 1 around the origin, a UV sphere.
 PrimitiveMesh make_unit_sphere(int slices, int stacks);

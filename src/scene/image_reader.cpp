@@ -78,14 +78,12 @@ RenderQualityDesc quality_preset(QualityPreset preset) {
       quality.samples = 1;
       quality.shadow_resolution = 1024;
       quality.look.filtered_shadow_edges = false;
-      quality.look.cylinder_sides = 6;
       break;
     case QualityPreset::kStandard:
       break;
     case QualityPreset::kFinal:
       quality.look.soft_shadows = true;
       quality.look.ambient_occlusion = true;
-      quality.look.cylinder_sides = 12;
       quality.motion_blur.samples = 8;
       break;
   }
