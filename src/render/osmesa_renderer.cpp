@@ -370,13 +370,17 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
     set_vec3(program.uniform("view_origin"), camera.position);
     set_vec3(program.uniform("view_direction"), orthographic_sight);
     glUniform1f(program.uniform("depth_offset"), capsule_depth_offset);
-    // The capsule's silhouette is decided in the fragment shader: with multisampling, each
-    // sample is shaded on its own, or the edges would not be smoothed.
-    glEnable(GL_SAMPLE_SHADING);
-    glMinSampleShading(1.0f);
+    // The capsule's silhouette is decided in the fragment shader, which gives each pixel its
+    // covered fraction; multisampling turns that into samples (alpha to coverage).
+    const float pixel_angle =
+        2.0f * std::tan(0.5f * camera.fov_degrees * std::numbers::pi_v<float> / 180.0f) /
+        static_cast<float>(context_.height());
+    glUniform1f(program.uniform("pixel_angle"), pixel_angle);
+    glUniform1i(program.uniform("multisampled"), multisampled_target_ ? 1 : 0);
+    glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glBindVertexArray(capsule_vao_);
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_segments));
-    glDisable(GL_SAMPLE_SHADING);
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   }
   if (!node_instances_.empty()) {
     prepare(depth_only ? programs_in_use_->node_depth : programs_in_use_->node);
@@ -493,6 +497,7 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
     //    software rasteriser does not give a depth-only program exactly the depths of a shaded
     //    one; the stencil lets only the first such fragment of a pixel add itself.
     targets_->bind_sum_with_depth();
+    multisampled_target_ = false;
     glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_POLYGON_OFFSET_FILL);
@@ -531,6 +536,7 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
   } else {
     targets_->bind_linear(true);
   }
+  multisampled_target_ = samples_ > 1;
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glDisable(GL_DEPTH_TEST);
   draw_sky(direct);

@@ -76,6 +76,7 @@ class OsmesaRenderer final : public Renderer {
   std::unique_ptr<Programs> jittered_programs_;  // for blurred frames' instants, made when needed
   const Programs* programs_in_use_ = nullptr;
   Vec3f light_direction_ = Vec3f::UnitZ();  // of the instant being drawn
+  bool multisampled_target_ = false;        // what the instant is drawn into
   std::unique_ptr<FrameTargets> targets_;
   std::unique_ptr<ShadowMap> shadow_map_;           // null when shadows are off
   std::unique_ptr<ShadowMap> jittered_shadow_map_;  // for blurred frames' instants, when needed
