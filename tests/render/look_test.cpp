@@ -155,7 +155,8 @@ TEST(Look, OneStopOfExposureDoublesTheLight) {
     OsmesaRenderer renderer({kWidth, kHeight, 1, 0, look});
     Image image;
     renderer.render(list, {}, camera, image);
-    return std::pow(image.pixel(kWidth / 2, kHeight / 2)[1] / 255.0, 2.2);
+    const std::uint8_t green = image.pixel(kWidth / 2, kHeight / 2)[1];
+    return std::pow(static_cast<double>(green) / 255.0, 2.2);
   };
   const double base = linear_ground(-1.5f);
   EXPECT_NEAR(linear_ground(-0.5f) / base, 2.0, 0.05);
