@@ -14,11 +14,11 @@ namespace {
 
 // Keys read only for drawing. Keep this list short and sure: each entry must be read by no stage
 // before render/ (scene_reader.cpp reads them into fields that model/ and dynamics/ never see).
-constexpr std::array<std::string_view, 13> kLookOnlyKeys = {
+constexpr std::array<std::string_view, 14> kLookOnlyKeys = {
     "name",            // the movie's file name
     "camera",          // the view
-    "light",           // the sun's direction
-    "image",           // size, multisampling, shadows
+    "light",           // the sun's direction and size
+    "image",           // size, quality, motion blur (a cache's instants are checked apart)
     "output",          // where frames go
     "movie",           // mp4, gif or none
     "ground.visible",  // drawn or not (contact is `ground.contact`)
@@ -28,6 +28,7 @@ constexpr std::array<std::string_view, 13> kLookOnlyKeys = {
     "objects[].style",
     "objects[].joints",
     "objects[].texture",
+    "objects[].finish",
 };
 
 // "objects[3].color" → "objects[].color".

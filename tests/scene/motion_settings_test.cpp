@@ -36,6 +36,7 @@ objects:
     style: surface
     joints: true
     texture: quad.png
+    finish: cloth
   - name: rope
     mesh: {polyline: {points: [[1.5, 0, 0.2], [1.5, 1, 0.3]], segments: 6}}
     material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
@@ -65,6 +66,7 @@ const std::map<std::string, std::pair<std::string, std::string>> kLookEdits = {
     {"objects[].style", {"style: surface", "style: both"}},
     {"objects[].joints", {"joints: true", "joints: false"}},
     {"objects[].texture", {"    texture: quad.png\n", ""}},
+    {"objects[].finish", {"finish: cloth", "finish: {like: metal, roughness: 0.2}"}},
 };
 
 TEST(MotionSettings, EveryLookOnlyKeyLeavesTheMotionTheSameBitForBit) {
