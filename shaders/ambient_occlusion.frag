@@ -52,7 +52,7 @@ void main() {
   if (dot(n, p) > 0.0) {
     n = -n;  // facing the eye, which looks down −z from the origin
   }
-  float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  float angle = 6.2831853 * pixel_noise();
   vec3 seed = vec3(cos(angle), sin(angle), 0.0);
   vec3 t = seed - n * dot(seed, n);
   t = dot(t, t) > 1e-6 ? normalize(t) : normalize(cross(n, vec3(0.0, 1.0, 0.0)));

@@ -11,7 +11,7 @@ vec3 filmic(vec3 x) {
   return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
 }
 
-// Display values; `dithered`, by up to half a step of 8 bits (interleaved gradient noise), so that
+// Display values; `dithered`, by up to half a step of 8 bits (noise.glsl), so that
 // the smooth gradients of a frame averaged in floating point (a faint blur) do not band and a
 // region's mean is its true value. Frames drawn straight for the display are not dithered: noise
 // would double the size of their PNG files.
@@ -24,8 +24,7 @@ vec3 display_color(vec3 linear_color, bool dithered) {
 #endif
   c = pow(c, vec3(1.0 / 2.2));
   if (dithered) {
-    float noise = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
-    c += (noise - 0.5) / 255.0;
+    c += (pixel_noise() - 0.5) / 255.0;
   }
   return c;
 }

@@ -3,7 +3,7 @@
 // where it was computed: the occlusion, drawn at half the picture's size, is read back blurred
 // over 4 × 4 of its texels (bilinear taps between them), which averages the rotated sampling
 // pattern away.
-uniform sampler2D frame_color;  // linear RGB, the mean of the frame's instants
+uniform sampler2D frame_color;  // linear RGB: one instant, or the mean of several
 uniform sampler2D occlusion;    // openness, 1 where nothing is near
 uniform sampler2D scene_depth;  // of the instant the occlusion came from; 1 is the sky
 uniform bool use_occlusion;

@@ -29,10 +29,10 @@ const vec2 kDisc[16] = vec2[](
     vec2(-0.2419, 0.9971) * 0.81, vec2(-0.8141, 0.9144) * 0.81, vec2(0.1998, 0.7864) * 0.81,
     vec2(0.1438, -0.1410) * 0.81);
 
-// A per-pixel angle (interleaved gradient noise, Jimenez 2014) that rotates the disc, so that
-// its few taps give fine noise rather than visible copies of the shadow.
+// A per-pixel angle (noise.glsl) that rotates the disc, so that its few taps give fine noise
+// rather than visible copies of the shadow.
 mat2 disc_rotation() {
-  float angle = 6.2831853 * fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  float angle = 6.2831853 * pixel_noise();
   float c = cos(angle);
   float s = sin(angle);
   return mat2(c, s, -s, c);

@@ -30,13 +30,15 @@ constexpr std::uint64_t kRendererBytes = 32'000'000;
 //    made as the frames need them:
 //     - a frame of one instant without occlusion: a multisampled RGBA8 colour and a 24-bit
 //       depth, 8 bytes a sample;
-//     - occlusion or motion blur: a half-float colour (8) and a depth (4) texture, the
-//       single-float sum (16) and the occlusion at a quarter of the pixels, 29 bytes a pixel;
+//     - occlusion or motion blur: a half-float colour (8) and a depth (4) texture and the
+//       occlusion at a quarter of the pixels, 13 bytes a pixel; with blur, the single-float sum
+//       of the instants besides (16);
 //     - a frame of one instant with occlusion: besides, a multisampled half-float colour and
 //       depth, 12 bytes a sample.
 constexpr std::uint64_t kBytesPerPixel = 20;
 constexpr std::uint64_t kDirectBytesPerPixelSample = 8;
-constexpr std::uint64_t kLinearBytesPerPixel = 29;
+constexpr std::uint64_t kLinearBytesPerPixel = 13;
+constexpr std::uint64_t kSumBytesPerPixel = 16;
 constexpr std::uint64_t kLinearBytesPerPixelSample = 12;
 constexpr std::uint64_t kBytesPerShadowTexel = 4;  // GL_DEPTH_COMPONENT24
 
@@ -245,6 +247,7 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
     std::uint64_t per_pixel = kBytesPerPixel;
     per_pixel += occlusion ? 0 : samples * kDirectBytesPerPixelSample;
     per_pixel += occlusion || blur ? kLinearBytesPerPixel : 0;
+    per_pixel += blur ? kSumBytesPerPixel : 0;
     per_pixel += occlusion ? samples * kLinearBytesPerPixelSample : 0;
     estimate.drawing = kRendererBytes + pixels * per_pixel +
                        shadow * shadow * kBytesPerShadowTexel + draw_list_bytes(model);

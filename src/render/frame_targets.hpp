@@ -3,12 +3,11 @@
 //  - Direct: a frame of one instant without ambient occlusion is drawn, tone mapped and encoded
 //    by the shaders themselves, into a multisampled RGBA8 buffer resolved into OSMesa's (or
 //    straight into OSMesa's without multisampling): the cheapest way.
-//  - Linear: otherwise each instant is drawn in linear colour with a wide range (half floats;
-//    multisampled for a single instant, resolved to a colour and a depth texture that later
-//    passes read), ambient occlusion goes into a texture of half the picture's size, and the
-//    instants are added into the frame's sum (single floats). The instants of a blurred frame
-//    are drawn into the sum directly, over the depth texture. The finishing pass maps the sum to
-//    the display.
+//  - Linear: otherwise, in linear colour with a wide range. A single instant (with occlusion) is
+//    drawn multisampled in half floats and resolved to a colour and a depth texture that later
+//    passes read; the instants of a blurred frame are added straight into the frame's sum
+//    (single floats), over the depth texture. Ambient occlusion goes into a texture of half the
+//    picture's size. The finishing pass maps the colour or the sum to the display.
 namespace dinam {
 
 class FrameTargets {

@@ -132,16 +132,20 @@ std::string look_defines(const LookSettings& look, bool jittered) {
   return defines;
 }
 
+// What the lit programs and the programs that write display values splice in, in order.
+const std::vector<std::string> kLitIncludes = {"noise.glsl", "display.glsl", "lighting.glsl"};
+const std::vector<std::string> kDisplayIncludes = {"noise.glsl", "display.glsl"};
+
 }  // namespace
 
 struct OsmesaRenderer::Programs {
   explicit Programs(const std::string& look)
-      : bar("capsule.vert", "capsule.frag", {"display.glsl", "lighting.glsl"}, look),
-        node("node.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
-        surface("surface.vert", "lit.frag", {"display.glsl", "lighting.glsl"}, look),
-        ground("ground.vert", "ground.frag", {"display.glsl", "lighting.glsl"}, look),
-        sky("full_screen.vert", "sky.frag", {"display.glsl"}, look),
-        finish("full_screen.vert", "finish.frag", {"display.glsl"}, look) {}
+      : bar("capsule.vert", "capsule.frag", kLitIncludes, look),
+        node("node.vert", "lit.frag", kLitIncludes, look),
+        surface("surface.vert", "lit.frag", kLitIncludes, look),
+        ground("ground.vert", "ground.frag", kLitIncludes, look),
+        sky("full_screen.vert", "sky.frag", kDisplayIncludes, look),
+        finish("full_screen.vert", "finish.frag", kDisplayIncludes, look) {}
 
   ShaderProgram bar;
   ShaderProgram node;
@@ -153,8 +157,7 @@ struct OsmesaRenderer::Programs {
   ShaderProgram node_depth{"node.vert", "depth.frag"};
   ShaderProgram surface_depth{"surface.vert", "depth.frag"};
   ShaderProgram ground_depth{"ground.vert", "depth.frag"};
-  ShaderProgram occlusion{"full_screen.vert", "ambient_occlusion.frag"};
-  ShaderProgram accumulate{"full_screen.vert", "accumulate.frag"};
+  ShaderProgram occlusion{"full_screen.vert", "ambient_occlusion.frag", {"noise.glsl"}};
 };
 
 OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
@@ -580,25 +583,11 @@ void OsmesaRenderer::draw_occlusion(const DrawList& list, const Mat4f& clip_from
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void OsmesaRenderer::add_to_sum(float weight) {
-  const ShaderProgram& program = programs_in_use_->accumulate;
-  targets_->bind_sum();
-  program.use();
-  bind_texture(0, targets_->color_texture());
-  glUniform1i(program.uniform("scene_color"), 0);
-  glUniform1f(program.uniform("weight"), weight);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
-  glBindVertexArray(full_screen_vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glDisable(GL_BLEND);
-}
-
-void OsmesaRenderer::finish_sum(bool occlusion) {
+void OsmesaRenderer::finish(unsigned frame_color, bool occlusion) {
   const ShaderProgram& program = programs_in_use_->finish;
   targets_->bind_display();
   program.use();
-  bind_texture(0, targets_->sum_texture());
+  bind_texture(0, frame_color);
   glUniform1i(program.uniform("frame_color"), 0);
   bind_texture(kOcclusionUnit, occlusion ? targets_->occlusion_texture() : 0);
   glUniform1i(program.uniform("occlusion"), kOcclusionUnit);
@@ -653,14 +642,24 @@ void OsmesaRenderer::render(const DrawList& list, std::span<const FrameSample> s
     read_display(image);
     return;
   }
-  if (instants.size() > 1 && !jittered_programs_) {
+  if (instants.size() == 1) {
+    // One instant with occlusion: drawn in linear colour, then finished from its texture.
+    draw_instant(list, instants.front(), centre, centre, InstantTarget::kLinear, 1.0f,
+                 clip_from_eye);
+    draw_occlusion(list, clip_from_eye);
+    finish(targets_->color_texture(), true);
+    read_display(image);
+    return;
+  }
+  if (!jittered_programs_) {
     jittered_programs_ = std::make_unique<Programs>(look_defines(settings_.look, true));
   }
-  programs_in_use_ = instants.size() > 1 ? jittered_programs_.get() : programs_.get();
+  programs_in_use_ = jittered_programs_.get();
   // Several instants are each drawn once without multisampling, moved by a different fraction
   // of a pixel (Halton points), and with soft shadows lit from a different point of the sun's
-  // disc (Vogel's spiral): their mean is anti-aliased and softly shadowed as well as blurred. The
-  // middle instant is drawn last, so that the occlusion comes from its depth.
+  // disc (Vogel's spiral), and added into the frame's sum: their mean is anti-aliased and softly
+  // shadowed as well as blurred. The middle instant is drawn last, so that the occlusion comes
+  // from its depth.
   targets_->bind_sum();
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   glClear(GL_COLOR_BUFFER_BIT);
@@ -668,30 +667,21 @@ void OsmesaRenderer::render(const DrawList& list, std::span<const FrameSample> s
   const std::size_t middle = instants.size() / 2;
   for (std::size_t k = 0; k < instants.size(); ++k) {
     const std::size_t i = k < middle ? k : (k + 1 < instants.size() ? k + 1 : middle);
-    Eigen::Vector2f jitter = centre;
+    const Eigen::Vector2f jitter(halton(i + 1, 2) - 0.5f, halton(i + 1, 3) - 0.5f);
     Eigen::Vector2f sun_point = centre;
-    if (instants.size() > 1) {
-      jitter = {halton(i + 1, 2) - 0.5f, halton(i + 1, 3) - 0.5f};
-      if (settings_.look.soft_shadows) {
-        const float r =
-            std::sqrt((static_cast<float>(i) + 0.5f) / static_cast<float>(instants.size()));
-        const float angle = 2.39996323f * static_cast<float>(i);  // the golden angle
-        sun_point = {r * std::cos(angle), r * std::sin(angle)};
-      }
+    if (settings_.look.soft_shadows) {
+      const float r =
+          std::sqrt((static_cast<float>(i) + 0.5f) / static_cast<float>(instants.size()));
+      const float angle = 2.39996323f * static_cast<float>(i);  // the golden angle
+      sun_point = {r * std::cos(angle), r * std::sin(angle)};
     }
-    if (instants.size() == 1) {
-      draw_instant(list, instants[i], jitter, sun_point, InstantTarget::kLinear, 1.0f,
-                   clip_from_eye);
-      add_to_sum(weight);
-    } else {
-      draw_instant(list, instants[i], jitter, sun_point, InstantTarget::kAdded, weight,
-                   clip_from_eye);
-    }
+    draw_instant(list, instants[i], jitter, sun_point, InstantTarget::kAdded, weight,
+                 clip_from_eye);
   }
   if (occlusion) {
     draw_occlusion(list, clip_from_eye);
   }
-  finish_sum(occlusion);
+  finish(targets_->sum_texture(), occlusion);
   read_display(image);
 }
 

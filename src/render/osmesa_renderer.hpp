@@ -65,8 +65,9 @@ class OsmesaRenderer final : public Renderer {
   // The uniforms of display.glsl.
   void set_output(const ShaderProgram& program, bool direct) const;
   void draw_occlusion(const DrawList& list, const Mat4f& clip_from_eye);
-  void add_to_sum(float weight);
-  void finish_sum(bool occlusion);  // the sum, dimmed by the occlusion, to OSMesa's buffer
+  // A frame's linear colour (an instant's, or the sum of several) to OSMesa's buffer, dimmed by
+  // the occlusion when asked.
+  void finish(unsigned frame_color, bool occlusion);
   void read_display(Image& image);
 
   GlContext context_;
