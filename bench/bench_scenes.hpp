@@ -1,5 +1,8 @@
 #pragma once
 // Scenes the benchmarks share beside the shipped ones.
+#include <fmt/format.h>
+
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -20,8 +23,42 @@ inline SceneDescription large_flag_scene(bool torsion = false, const std::string
       translation: [0, 0, 1.0]
     material: {density: 1200, youngs_modulus: 5.0e6, radius: 0.001}
     pinned: {box: {min: [-0.01, -0.01, 0], max: [0.01, 0.01, 5]}}
-    torsion: )" + (torsion ? "true" : "false") + "\n",
+    torsion: )" + (torsion ? "true" : "false") +
+                             "\n",
                          std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/large_flag.yaml");
+}
+
+// The two structures of the scale sweep (bench/scale_sweep.cpp), each a 3.6 m square hung from
+// its top edge, seen from a fixed camera:
+//   kCloth: a grid with one diagonal a cell (about 3 n² bars for n × n cells), bending springs,
+//     drawn as cloth;
+//   kWireLattice: a square grid (about 2 n² bars), bending and torsion springs, drawn as wires
+//     of a tenth of the spacing.
+enum class ScaleStructure { kCloth, kWireLattice };
+
+// The structure with about `bars` bars.
+inline SceneDescription scale_scene(ScaleStructure structure, Index bars) {
+  const bool cloth = structure == ScaleStructure::kCloth;
+  const int cells = static_cast<int>(std::lround(std::sqrt(bars / (cloth ? 3.0 : 2.0))));
+  const double spacing = 3.6 / cells;
+  const std::string text = fmt::format(
+      R"(version: 1
+duration: 1
+camera: {{position: [2.6, -5.2, 3.4], look_at: [0, 0, 2.0], fov: 40}}
+objects:
+  - name: {}
+    mesh:
+      grid: {{width: 3.6, height: 3.6, columns: {}, rows: {}, diagonals: {}}}
+      rotation: [90, 0, 0]
+      translation: [-1.8, 0, 0.2]
+    material: {{density: 1200, youngs_modulus: 5.0e6, radius: {}}}
+    pinned: {{box: {{min: [-2, -0.01, 3.79], max: [2, 0.01, 3.81]}}}}
+    torsion: {}
+    style: {}
+)",
+      cloth ? "cloth" : "lattice", cells, cells, cloth ? "one" : "none",
+      cloth ? 0.001 : 0.1 * spacing, cloth ? "false" : "true", cloth ? "surface" : "wire");
+  return read_scene_text(text, std::filesystem::temp_directory_path() / "scale_sweep.yaml");
 }
 
 }  // namespace dinam

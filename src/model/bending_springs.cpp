@@ -15,12 +15,23 @@ constexpr double kStraightRounding = 1e-4;
 }  // namespace
 
 NodeAdjacency node_adjacency(const Model& model, const ModelObject& object) {
-  NodeAdjacency adjacency(object.node_count);
-  for (Index b = object.first_bar; b < object.first_bar + object.bar_count; ++b) {
+  NodeAdjacency adjacency;
+  adjacency.offsets.assign(static_cast<std::size_t>(object.node_count) + 1, 0);
+  const Index last_bar = object.first_bar + object.bar_count;
+  for (Index b = object.first_bar; b < last_bar; ++b) {
+    ++adjacency.offsets[model.bar_nodes[2 * b] - object.first_node + 1];
+    ++adjacency.offsets[model.bar_nodes[2 * b + 1] - object.first_node + 1];
+  }
+  for (Index local = 0; local < object.node_count; ++local) {
+    adjacency.offsets[local + 1] += adjacency.offsets[local];
+  }
+  adjacency.links.resize(static_cast<std::size_t>(adjacency.offsets.back()));
+  std::vector<Index> next(adjacency.offsets.begin(), adjacency.offsets.end() - 1);
+  for (Index b = object.first_bar; b < last_bar; ++b) {
     const Index n0 = model.bar_nodes[2 * b];
     const Index n1 = model.bar_nodes[2 * b + 1];
-    adjacency[n0 - object.first_node].emplace_back(n1, b);
-    adjacency[n1 - object.first_node].emplace_back(n0, b);
+    adjacency.links[next[n0 - object.first_node]++] = {n1, b};
+    adjacency.links[next[n1 - object.first_node]++] = {n0, b};
   }
   return adjacency;
 }
@@ -30,11 +41,12 @@ void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
   if (pairs == BendingPairs::kNone) {
     return;
   }
+  std::vector<std::pair<int, int>> chosen;  // at one node: indices into its bars, first < second
   for (Index local = 0; local < object.node_count; ++local) {
     const Index c = object.first_node + local;
-    const auto& bars = adjacency[local];
+    const auto bars = adjacency[local];
     const Vec3& xc = model.node_initial_x[c];
-    std::vector<std::pair<int, int>> chosen;  // indices into `bars`, first < second
+    chosen.clear();
     // A joint where only wires meet is welded: every pair keeps its angle, or the joint would
     // turn about a member (with three bars in a plane, pairing each with its most collinear
     // partner leaves a T joint free to fold out of the plane). Where a surface's edges meet, each

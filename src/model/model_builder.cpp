@@ -311,13 +311,10 @@ void colour_all_springs(Model& model) {
 // Marks the bars that are an edge of some mesh face, found through each node's bars.
 void mark_bars_on_faces(Model& model) {
   model.bar_on_face.assign(model.bar_count(), 0);
-  std::vector<std::vector<std::pair<Index, Index>>> bars_of_node(model.node_count());
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    const Index n0 = model.bar_nodes[2 * b];
-    const Index n1 = model.bar_nodes[2 * b + 1];
-    bars_of_node[n0].emplace_back(n1, b);
-    bars_of_node[n1].emplace_back(n0, b);
-  }
+  ModelObject everything;
+  everything.node_count = model.node_count();
+  everything.bar_count = model.bar_count();
+  const NodeAdjacency bars_of_node = node_adjacency(model, everything);
   for (Index f = 0; f < model.face_count(); ++f) {
     const Index begin = model.face_offsets[f];
     const Index end = model.face_offsets[f + 1];

@@ -1,6 +1,10 @@
 #pragma once
 // The builders of the springs that span more than one bar. Each works on one object's range of
 // nodes and bars, after its bars exist; adjacency is found from the bars themselves.
+#include <span>
+#include <utility>
+#include <vector>
+
 #include "model/model.hpp"
 
 namespace dinam {
@@ -8,8 +12,20 @@ namespace dinam {
 // The material of each bar of an object (ObjectDesc::parts), by the bar's index in the object.
 using BarMaterials = std::vector<const MaterialDesc*>;  // (object's n_bars)
 
-// The bars at each node of an object, as (other node, bar id).
-using NodeAdjacency = std::vector<std::vector<std::pair<Index, Index>>>;  // (object's n_nodes)
+// The bars at each node of an object, as (other node, bar id) in increasing bar id, in two flat
+// arrays (a list per node would cost a heap block each, which dominated building a
+// million-node model).
+struct NodeAdjacency {
+  using Link = std::pair<Index, Index>;  // (other node, bar id)
+  std::vector<Index> offsets;            // (object's n_nodes + 1) into links
+  std::vector<Link> links;
+
+  Index node_count() const { return static_cast<Index>(offsets.size()) - 1; }
+  // The links of the object's node `local` (its id less the object's first node).
+  std::span<const Link> operator[](Index local) const {
+    return {links.data() + offsets[local], links.data() + offsets[local + 1]};
+  }
+};
 NodeAdjacency node_adjacency(const Model& model, const ModelObject& object);
 
 // Bending springs between the chosen pairs of bars at each node: the two half-bars' bending

@@ -37,7 +37,7 @@ std::vector<Index> run_bars(const Model& model, const NodeAdjacency& adjacency, 
                             Index i, Index j) {
   std::vector<Index> bars;
   Index node = i;
-  while (node != j && bars.size() <= adjacency.size()) {
+  while (node != j && bars.size() <= static_cast<std::size_t>(adjacency.node_count())) {
     Index best_bar = -1;
     Index best_node = -1;
     double best = -std::numeric_limits<double>::infinity();

@@ -68,7 +68,7 @@ Index other_end(const Model& model, Index bar, Index node) {
 // The bar that continues a run through `node` from `bar`, or −1 where the run ends there.
 Index continuation(const Model& model, const NodeAdjacency& adjacency, const ModelObject& object,
                    Index node, Index bar) {
-  const auto& bars = adjacency[node - object.first_node];
+  const auto bars = adjacency[node - object.first_node];
   if (bars.size() != 2) {
     return -1;
   }
