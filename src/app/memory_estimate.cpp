@@ -103,12 +103,15 @@ std::uint64_t model_bytes(const Model& model) {
 // state.hpp's arrays for this model.
 std::uint64_t state_bytes(const Model& model, bool energy) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
-  const auto springs = static_cast<std::uint64_t>(model.bar_count()) +
-                       static_cast<std::uint64_t>(model.bend_count()) +
-                       static_cast<std::uint64_t>(model.torsion_count());
-  std::uint64_t bytes = nodes * 3 * sizeof(Vec3);        // x, v_half, force
-  bytes += springs * sizeof(double);                     // plastic sets
-  bytes += springs / kSpringBlockSize * sizeof(double);  // each block's last flow (at most)
+  // Plastic sets and each block's last flow, for the kinds that can yield.
+  std::uint64_t yielding = 0;
+  for (const SpringColouring* kind :
+       {&model.bar_colours, &model.bend_colours, &model.torsion_colours}) {
+    yielding += kind->any_yield ? static_cast<std::uint64_t>(kind->spring_count) : 0;
+  }
+  std::uint64_t bytes = nodes * 3 * sizeof(Vec3);  // x, v_half, force
+  bytes += yielding * sizeof(double);
+  bytes += yielding / kSpringBlockSize * sizeof(double);
   if (model.wind.field.enabled) {  // each face's and bar's drag, and the wind at each node
     bytes += (model.wind.faces.size() + model.wind.bars.size()) * sizeof(Vec3);
     bytes += model.wind.field.turbulence != 0.0 ? nodes * sizeof(Vec3) : 0;
@@ -120,6 +123,9 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
     bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_previous
   }
   if (model.can_tear()) {  // a broken flag per bar, spring and face, and the list of bars
+    const auto springs = static_cast<std::uint64_t>(model.bar_count()) +
+                         static_cast<std::uint64_t>(model.bend_count()) +
+                         static_cast<std::uint64_t>(model.torsion_count());
     bytes += springs + static_cast<std::uint64_t>(model.clamp_count()) +
              static_cast<std::uint64_t>(model.face_count()) +
              static_cast<std::uint64_t>(model.bar_count()) * sizeof(Index);

@@ -56,7 +56,8 @@ double axial_spring_energy(const Model& model, const State& state) {
     }
     energy += axial_spring(state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
                            model.bar_rest_length[b], model.bar_axial_stiffness[b],
-                           state.bar_plastic_set[b], model.bar_yield_force[b])
+                           plastic_set_of(state.bar_plastic_set, b),
+                           yield_limit(model.bar_yield_force, b))
                   .energy;
   }
   return energy;

@@ -38,7 +38,8 @@ double bending_spring_energy(const Model& model, const State& state) {
     const Index* nodes = &model.bend_nodes[3 * s];
     energy += bending_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]],
                              model.bend_rest_angle[s], model.bend_stiffness[s],
-                             state.bend_plastic_set[s], model.bend_yield_moment[s])
+                             plastic_set_of(state.bend_plastic_set, s),
+                             yield_limit(model.bend_yield_moment, s))
                   .energy;
   }
   return energy;

@@ -127,9 +127,11 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   state.x = model.node_initial_x;
   state.v_half = model.node_initial_v;
   state.force.assign(n, Vec3::Zero());
-  state.bar_plastic_set.assign(model.bar_count(), 0.0);
-  state.bend_plastic_set.assign(model.bend_count(), 0.0);
-  state.torsion_plastic_set.assign(model.torsion_count(), 0.0);
+  // Plastic sets only for the kinds that can yield (model.hpp).
+  state.bar_plastic_set.assign(model.bar_colours.any_yield ? model.bar_count() : 0, 0.0);
+  state.bend_plastic_set.assign(model.bend_colours.any_yield ? model.bend_count() : 0, 0.0);
+  state.torsion_plastic_set.assign(model.torsion_colours.any_yield ? model.torsion_count() : 0,
+                                   0.0);
   state.clamp_plastic_set.assign(model.clamp_count(), 0.0);
   // Scratch for the kinds that can yield, and contact history where there is a ground: an elastic
   // structure in the air carries neither (memory is part of speed for large models).

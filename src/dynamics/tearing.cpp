@@ -25,9 +25,9 @@ bool past_its_limit(const Model& model, const State& state, Index b) {
     return true;
   }
   // The axial spring's tension, as the kernel computes it (clamped at the yield force).
-  const double tension =
-      std::min(model.bar_axial_stiffness[b] * (length - rest - state.bar_plastic_set[b]),
-               model.bar_yield_force[b]);
+  const double tension = std::min(
+      model.bar_axial_stiffness[b] * (length - rest - plastic_set_of(state.bar_plastic_set, b)),
+      yield_limit(model.bar_yield_force, b));
   return tension >= model.bar_breaking_force[b];
 }
 

@@ -40,7 +40,8 @@ double torsion_spring_energy(const Model& model, const State& state) {
     energy +=
         torsion_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]], state.x[nodes[3]],
                        model.torsion_rest_angle[s], model.torsion_stiffness[s],
-                       state.torsion_plastic_set[s], model.torsion_yield_moment[s])
+                       plastic_set_of(state.torsion_plastic_set, s),
+                       yield_limit(model.torsion_yield_moment, s))
             .energy;
   }
   return energy;

@@ -122,6 +122,16 @@ struct WindLoad {
   std::vector<Index> node_items;         // (Σ nodes per face + 2 n_wind_bars)
 };
 
+// A kind of spring none of which can yield keeps no yield limits (its `*_yield_*` array is empty),
+// and the state keeps no plastic sets for it: for a million bars that is 16 bytes a spring.
+// These read either way.
+inline double yield_limit(const std::vector<double>& yield, Index i) {
+  return yield.empty() ? kNoYield : yield[i];
+}
+inline double plastic_set_of(const std::vector<double>& plastic_set, Index i) {
+  return plastic_set.empty() ? 0.0 : plastic_set[i];
+}
+
 struct Model {
   // What building it found worth telling the user, who may want to fix the input (a mesh's
   // degenerate faces, dropped): one line each, "file:line:column: warning: …" as errors read.
@@ -142,7 +152,7 @@ struct Model {
   std::vector<Index> bar_nodes;             // (n_bars × 2) n0, n1
   std::vector<double> bar_rest_length;      // (n_bars) m
   std::vector<double> bar_axial_stiffness;  // (n_bars) N/m, EA / L0
-  std::vector<double> bar_yield_force;      // (n_bars) N; infinite when elastic
+  std::vector<double> bar_yield_force;      // (n_bars, or 0 if none yields) N; ∞ when elastic
   std::vector<double> bar_damping;          // (n_bars) N·s/m, on the relative axial velocity
   bool any_bar_damping = false;             // some bar_damping is not 0
   std::vector<double> bar_radius;           // (n_bars) m, of the round section of equal area
@@ -152,7 +162,7 @@ struct Model {
   std::vector<Index> bend_nodes;          // (n_bends × 3) a, c, b
   std::vector<double> bend_rest_angle;    // (n_bends) rad, in [0, π]
   std::vector<double> bend_stiffness;     // (n_bends) N·m/rad, 2 E I / (L_ca + L_cb)
-  std::vector<double> bend_yield_moment;  // (n_bends) N·m; infinite when elastic
+  std::vector<double> bend_yield_moment;  // (n_bends, or 0 if none yields) N·m; ∞: elastic
 
   // Torsion springs: on bar i–j, the dihedral angle between the planes (a, i, j) and (i, j, b)
   // of its reference neighbours i–a and j–b, weighted by the sines squared of the references'
@@ -160,7 +170,7 @@ struct Model {
   std::vector<Index> torsion_nodes;          // (n_torsions × 4) a, i, j, b
   std::vector<double> torsion_rest_angle;    // (n_torsions) rad, in (−π, π]
   std::vector<double> torsion_stiffness;     // (n_torsions) N·m/rad, G J / (L0 q_a0 q_b0)
-  std::vector<double> torsion_yield_moment;  // (n_torsions) N·m; infinite when elastic
+  std::vector<double> torsion_yield_moment;  // (n_torsions, or 0 if none yields) N·m
   Index bars_without_torsion = 0;            // bars with no usable reference neighbours
 
   // Clamps: at a clamped pinned node c, each bar c–a to a free node a keeps its rest direction, as

@@ -306,6 +306,14 @@ void colour_all_springs(Model& model) {
   model.bend_colours.any_yield = yields(model.bend_yield_moment);
   model.torsion_colours = colour_springs(model.torsion_nodes, 4, n);
   model.torsion_colours.any_yield = yields(model.torsion_yield_moment);
+  // An elastic kind keeps no yield limits (model.hpp).
+  for (auto [colours, yield] : {std::pair{&model.bar_colours, &model.bar_yield_force},
+                                std::pair{&model.bend_colours, &model.bend_yield_moment},
+                                std::pair{&model.torsion_colours, &model.torsion_yield_moment}}) {
+    if (!colours->any_yield) {
+      *yield = {};
+    }
+  }
 }
 
 // Marks the bars that are an edge of some mesh face, found through each node's bars.
