@@ -7,6 +7,7 @@
 
 #include "app/draw_list_from_model.hpp"
 #include "app/frame_source.hpp"
+#include "bench_scenes.hpp"
 #include "dynamics/stability.hpp"
 #include "io/png_file.hpp"
 #include "model/model.hpp"
@@ -81,6 +82,36 @@ BENCHMARK(encode_png)
     ->ArgNames({"level", "filter"})
     ->Args({1, 0})
     ->Args({6, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// The scale sweep's wire lattice (bench_scenes.hpp) from its rest positions, at the default
+// quality and 720p: 10⁵ and 10⁶ bars (issue 16: at most 2 s a frame at a million).
+void draw_wire_lattice(benchmark::State& bench) {
+  const SceneDescription scene =
+      scale_scene(ScaleStructure::kWireLattice, static_cast<Index>(bench.range(0)));
+  const Model model = build_model(scene);
+  std::vector<Vec3f> positions;
+  positions_for_render(model.node_initial_x, positions);
+  Bounds bounds;
+  for (const Vec3f& p : positions) {
+    bounds.add(p);
+  }
+  const DrawList list = make_draw_list(scene, model, bounds);
+  const RenderCamera camera{scene.camera.position.cast<float>(), scene.camera.look_at.cast<float>(),
+                            Vec3f::UnitZ(), static_cast<float>(scene.camera.fov_degrees)};
+  OsmesaRenderer renderer(render_settings(scene));
+  Image image;
+  renderer.render(list, positions, camera, image);  // warm up
+  for (auto _ : bench) {
+    renderer.render(list, positions, camera, image);
+  }
+  bench.counters["bars"] = static_cast<double>(model.bar_count());
+}
+BENCHMARK(draw_wire_lattice)
+    ->ArgName("bars")
+    ->Arg(100'000)
+    ->Arg(1'000'000)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -16,6 +16,12 @@ uniform vec3 view_direction;  // orthographic views; 0 for perspective
 uniform float depth_offset;   // added to the depth written (a depth-only pre-pass's margin)
 uniform float pixel_angle;    // radians a pixel spans (perspective), or metres (orthographic)
 uniform bool multisampled;    // the target has several samples a pixel
+#ifdef LINE_PASS
+// A thin bar's line (capsule.vert) carries its axis, not the pixel's point: the pixel's ray is
+// found from its window position instead.
+uniform mat4 world_from_clip;
+uniform vec2 viewport_size;  // pixels
+#endif
 
 #ifndef DEPTH_ONLY
 out vec4 out_color;
@@ -76,9 +82,17 @@ vec3 nearest_on_segment(vec3 ro, vec3 rd, vec3 pa, vec3 pb, out float t) {
 
 void main() {
   bool orthographic = dot(view_direction, view_direction) > 0.0;
-  vec3 rd = orthographic ? view_direction : normalize(world_position - view_origin);
-  // An orthographic ray starts well before the quad, which lies in front of the capsule.
-  vec3 ro = orthographic ? world_position - rd * (4.0 * capsule_radius) : view_origin;
+#ifdef LINE_PASS
+  vec4 window = world_from_clip * vec4(2.0 * gl_FragCoord.xy / viewport_size - 1.0,
+                                       2.0 * gl_FragCoord.z - 1.0, 1.0);
+  vec3 position = window.xyz / window.w;
+#else
+  vec3 position = world_position;
+#endif
+  vec3 rd = orthographic ? view_direction : normalize(position - view_origin);
+  // An orthographic ray starts well before the quad, which lies in front of the capsule (or, for a
+  // line, at its axis).
+  vec3 ro = orthographic ? position - rd * (4.0 * capsule_radius) : view_origin;
   float t = capsule_hit(ro, rd, capsule_p0, capsule_p1, capsule_radius, flat_ends == 0);
 #ifdef DEPTH_ONLY
   if (t < 0.0) {

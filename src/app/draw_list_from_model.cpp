@@ -70,13 +70,20 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
   const double extent = std::max(static_cast<double>(2.0f * motion.radius()), 1e-3);
   const double min_radius = 0.002 * extent;
 
-  // Which objects show their bars, and their radius.
+  // Which objects show their bars, and their radius: the wire's, but at least 0.2 % of the
+  // scene's size so that a fine wire shows; yet not so much that the bars of a dense mesh (a
+  // million-bar lattice) merge into a solid sheet, so at most a quarter of its median bar.
   std::vector<float> object_radius;
   std::vector<bool> object_wire;
+  std::vector<double> lengths;
   for (std::size_t o = 0; o < model.objects.size(); ++o) {
     const ModelObject& object = model.objects[o];
-    const double r = object.render_radius > 0.0 ? object.render_radius
-                                                : std::max(object.wire_radius, min_radius);
+    const auto first = model.bar_rest_length.begin() + object.first_bar;
+    lengths.assign(first, first + object.bar_count);
+    std::nth_element(lengths.begin(), lengths.begin() + object.bar_count / 2, lengths.end());
+    const double visible = std::min(min_radius, 0.25 * lengths[object.bar_count / 2]);
+    const double r =
+        object.render_radius > 0.0 ? object.render_radius : std::max(object.wire_radius, visible);
     object_radius.push_back(static_cast<float>(r));
     object_wire.push_back(scene.objects[o].style != DrawStyle::kSurface);
   }

@@ -3,6 +3,8 @@
 #define GL_GLEXT_PROTOTYPES
 #include <GL/glcorearb.h>
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -141,6 +143,7 @@ const std::vector<std::string> kDisplayIncludes = {"noise.glsl", "display.glsl"}
 struct OsmesaRenderer::Programs {
   explicit Programs(const std::string& look)
       : bar("capsule.vert", "capsule.frag", kLitIncludes, look),
+        bar_line("capsule.vert", "capsule.frag", kLitIncludes, look + "#define LINE_PASS\n"),
         node("node.vert", "lit.frag", kLitIncludes, look),
         surface("surface.vert", "lit.frag", kLitIncludes, look),
         ground("ground.vert", "ground.frag", kLitIncludes, look),
@@ -148,12 +151,15 @@ struct OsmesaRenderer::Programs {
         finish("full_screen.vert", "finish.frag", kDisplayIncludes, look) {}
 
   ShaderProgram bar;
+  ShaderProgram bar_line;  // the bars narrower than a pixel, as lines (capsule.vert)
   ShaderProgram node;
   ShaderProgram surface;
   ShaderProgram ground;
   ShaderProgram sky;
   ShaderProgram finish;
   ShaderProgram bar_depth{"capsule.vert", "capsule.frag", {}, "#define DEPTH_ONLY\n"};
+  ShaderProgram bar_line_depth{
+      "capsule.vert", "capsule.frag", {}, "#define DEPTH_ONLY\n#define LINE_PASS\n"};
   ShaderProgram node_depth{"node.vert", "depth.frag"};
   ShaderProgram surface_depth{"surface.vert", "depth.frag"};
   ShaderProgram ground_depth{"ground.vert", "depth.frag"};
@@ -368,21 +374,44 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
   };
   const std::size_t n_segments = list.segment_radius.size();
   if (n_segments > 0) {
-    const ShaderProgram& program = depth_only ? programs_in_use_->bar_depth : programs_in_use_->bar;
-    prepare(program);
-    set_vec3(program.uniform("view_origin"), camera.position);
-    set_vec3(program.uniform("view_direction"), orthographic_sight);
-    glUniform1f(program.uniform("depth_offset"), capsule_depth_offset);
-    // The capsule's silhouette is decided in the fragment shader, which gives each pixel its
-    // covered fraction; multisampling turns that into samples (alpha to coverage).
+    // What a pixel spans where a bar is: radians (perspective), or metres across the viewport's
+    // pixels (orthographic: the width the clip transform maps to [−1, 1]).
+    GLint viewport[4] = {0, 0, 1, 1};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    const bool orthographic = orthographic_sight != Vec3f::Zero();
+    const Eigen::Map<const Mat4f> clip(clip_from_world);
     const float pixel_angle =
-        2.0f * std::tan(0.5f * camera.fov_degrees * std::numbers::pi_v<float> / 180.0f) /
-        static_cast<float>(context_.height());
-    glUniform1f(program.uniform("pixel_angle"), pixel_angle);
-    glUniform1i(program.uniform("multisampled"), multisampled_target_ ? 1 : 0);
+        orthographic
+            ? 2.0f / (clip.block<1, 3>(0, 0).norm() * static_cast<float>(viewport[2]))
+            : 2.0f * std::tan(0.5f * camera.fov_degrees * std::numbers::pi_v<float> / 180.0f) /
+                  static_cast<float>(context_.height());
+    const Mat4f world_from_clip = clip.inverse();
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     glBindVertexArray(capsule_vao_);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_segments));
+    // The bars as quads, then those narrower than a pixel as lines (capsule.vert).
+    for (const bool lines : {false, true}) {
+      const Programs& programs = *programs_in_use_;
+      const ShaderProgram& program =
+          lines ? (depth_only ? programs.bar_line_depth : programs.bar_line)
+                : (depth_only ? programs.bar_depth : programs.bar);
+      prepare(program);
+      set_vec3(program.uniform("view_origin"), camera.position);
+      set_vec3(program.uniform("view_direction"), orthographic_sight);
+      glUniform1f(program.uniform("depth_offset"), capsule_depth_offset);
+      // The capsule's silhouette is decided in the fragment shader, which gives each pixel its
+      // covered fraction; multisampling turns that into samples (alpha to coverage).
+      glUniform1f(program.uniform("pixel_angle"), pixel_angle);
+      glUniform1i(program.uniform("multisampled"), multisampled_target_ ? 1 : 0);
+      glUniform1i(program.uniform("line_pass"), lines ? 1 : 0);
+      glUniformMatrix4fv(program.uniform("world_from_clip"), 1, GL_FALSE, world_from_clip.data());
+      glUniform2f(program.uniform("viewport_size"), static_cast<float>(viewport[2]),
+                  static_cast<float>(viewport[3]));
+      if (lines) {
+        glDrawArraysInstanced(GL_LINES, 0, 2, static_cast<GLsizei>(n_segments));
+      } else {
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_segments));
+      }
+    }
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   }
   if (!node_instances_.empty()) {
