@@ -38,6 +38,9 @@ class OsmesaRenderer final : public Renderer {
   int samples() const { return samples_; }
 
  private:
+  // Floats per bar and per joint instance in their buffers (osmesa_buffers.cpp).
+  static constexpr int kBarFloats = 13;
+  static constexpr int kNodeFloats = 10;
   struct Programs;
   void create_buffers();
   void upload_static(const DrawList& list);
