@@ -143,7 +143,7 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
 double max_damping_rate_bound(const Model& model) {
   const Index n = model.node_count();
   std::vector<double> rate(n, model.global_damping);  // α m / m
-  for (Index b = 0; b < model.bar_count(); ++b) {
+  for (Index b = 0; b < static_cast<Index>(model.bar_damping.size()); ++b) {
     const double c = model.bar_damping[b];
     if (c == 0.0) {
       continue;

@@ -153,10 +153,10 @@ struct Model {
   std::vector<double> bar_rest_length;      // (n_bars) m
   std::vector<double> bar_axial_stiffness;  // (n_bars) N/m, EA / L0
   std::vector<double> bar_yield_force;      // (n_bars, or 0 if none yields) N; ∞ when elastic
-  std::vector<double> bar_damping;          // (n_bars) N·s/m, on the relative axial velocity
-  bool any_bar_damping = false;             // some bar_damping is not 0
-  std::vector<double> bar_radius;           // (n_bars) m, of the round section of equal area
-  std::vector<std::uint8_t> bar_on_face;    // (n_bars) 1 when an edge of a mesh face
+  std::vector<double> bar_damping;  // (n_bars; 0 without dampers) N·s/m, on the axial velocity
+  bool any_bar_damping = false;     // some bar_damping is not 0
+  std::vector<double> bar_radius;   // (n_bars) m, of the round section of equal area
+  std::vector<std::uint8_t> bar_on_face;  // (n_bars) 1 when an edge of a mesh face
 
   // Bending springs: at node c between bars c–a and c–b, on the angle θ between them.
   std::vector<Index> bend_nodes;          // (n_bends × 3) a, c, b

@@ -470,6 +470,9 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   for (const ObjectNodes& object : objects) {
     add_axial_damping(object, model);
   }
+  if (!model.any_bar_damping) {
+    model.bar_damping = {};  // no damper anywhere: nothing to keep (model.hpp)
+  }
   std::vector<BarMaterials> bar_materials;
   bar_materials.reserve(objects.size());
   for (const ObjectNodes& object : objects) {
