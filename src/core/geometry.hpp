@@ -2,7 +2,6 @@
 // The angles the springs measure, by vector algebra only (no rotation matrices). Both use atan2
 // of a sine and a cosine, which stays accurate near 0 and π where acos loses precision.
 #include <cmath>
-#include <concepts>
 #include <numbers>
 
 #include "core/types.hpp"
@@ -22,19 +21,6 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b) {
   return {a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
           a.x() * b.y() - a.y() * b.x()};
 }
-// The same in single precision, for the float trial of the spring kernels (docs/performance.md);
-// templates, so that a double expression never takes them.
-template <class V>
-requires std::same_as<V, Vec3f>
-inline float dot3(const V& a, const V& b) {
-  return a.x() * b.x() + a.y() * b.y() + a.z() * b.z();
-}
-template <class V>
-requires std::same_as<V, Vec3f>
-inline Vec3f cross3(const V& a, const V& b) {
-  return {a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
-          a.x() * b.y() - a.y() * b.x()};
-}
 
 // atan2(y, x) in [−π, π], about four times faster than glibc's and within a few ulps of it: the
 // springs take one per spring per step, which made glibc's atan2 half the cost of a step. It is
@@ -42,35 +28,34 @@ inline Vec3f cross3(const V& a, const V& b) {
 // The ratio of the smaller to the larger of |x|, |y| is reduced to |t| ≤ tan(π/8) (atan t =
 // π/4 + atan((t − 1)/(t + 1)) above it), where a rational approximation of atan (Cephes, S. L.
 // Moshier: the coefficients of its atan.c, made for |t| ≤ 0.66) is accurate to an ulp.
-template <class T>
-[[gnu::always_inline]] inline T fast_atan2(T y, T x) {
-  constexpr T kTanPiOver8 = T(0.41421356237309504880);
-  const T ax = std::abs(x);
-  const T ay = std::abs(y);
+[[gnu::always_inline]] inline double fast_atan2(double y, double x) {
+  constexpr double kTanPiOver8 = 0.41421356237309504880;
+  const double ax = std::abs(x);
+  const double ay = std::abs(y);
   const bool steep = ay > ax;
-  const T small = steep ? ax : ay;
-  const T large = steep ? ay : ax;
+  const double small = steep ? ax : ay;
+  const double large = steep ? ay : ax;
   const bool upper = small > kTanPiOver8 * large;
-  const T top = upper ? small - large : small;
-  const T bottom = upper ? small + large : large;
+  const double top = upper ? small - large : small;
+  const double bottom = upper ? small + large : large;
   // bottom is 0 only for x = y = 0, where top is 0 too and the angle is 0.
-  const T t = top / (bottom > T(0) ? bottom : T(1));
-  const T z = t * t;
-  const T p = ((((T(-8.750608600031904122785e-01) * z - T(1.615753718733365076637e+01)) * z -
-                 T(7.500855792314704667340e+01)) *
-                    z -
-                T(1.228866684490136173410e+02)) *
-                   z -
-               T(6.485021904942025371773e+01));
-  const T q = (((((z + T(2.485846490142306297962e+01)) * z + T(1.650270098316988542046e+02)) * z +
-                 T(4.328810604912902668951e+02)) *
-                    z +
-                T(4.853903996359136964868e+02)) *
-                   z +
-               T(1.945506571482613964425e+02));
-  T angle = (upper ? std::numbers::pi_v<T> / 4 : T(0)) + (t + t * (z * p / q));
-  angle = steep ? std::numbers::pi_v<T> / 2 - angle : angle;
-  angle = x < T(0) ? std::numbers::pi_v<T> - angle : angle;
+  const double t = top / (bottom > 0.0 ? bottom : 1.0);
+  const double z = t * t;
+  const double p = ((((-8.750608600031904122785e-01 * z - 1.615753718733365076637e+01) * z -
+                      7.500855792314704667340e+01) *
+                         z -
+                     1.228866684490136173410e+02) *
+                        z -
+                    6.485021904942025371773e+01);
+  const double q = (((((z + 2.485846490142306297962e+01) * z + 1.650270098316988542046e+02) * z +
+                      4.328810604912902668951e+02) *
+                         z +
+                     4.853903996359136964868e+02) *
+                        z +
+                    1.945506571482613964425e+02);
+  double angle = (upper ? std::numbers::pi / 4 : 0.0) + (t + t * (z * p / q));
+  angle = steep ? std::numbers::pi / 2 - angle : angle;
+  angle = x < 0.0 ? std::numbers::pi - angle : angle;
   return std::copysign(angle, y);
 }
 

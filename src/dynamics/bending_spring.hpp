@@ -13,14 +13,12 @@
 
 namespace dinam {
 
-template <class T>
-struct BendingSpringResultT {
-  Eigen::Matrix<T, 3, 1> force_a, force_c, force_b;  // N
-  T energy;                                          // J, ½ k (θ − θ0 − p)²
-  T plastic_set = 0;                                 // rad
-  T dissipated = 0;                                  // J
+struct BendingSpringResult {
+  Vec3 force_a, force_c, force_b;  // N
+  double energy;                   // J, ½ k (θ − θ0 − p)²
+  double plastic_set = 0.0;        // rad
+  double dissipated = 0.0;         // J
 };
-using BendingSpringResult = BendingSpringResultT<double>;
 
 // With e1 = xa − xc, e2 = xb − xc and n = e1 × e2, θ = atan2(|n|, e1·e2) and
 //   ∂θ/∂xa = (e1 × n) / (|e1|² |n|),  ∂θ/∂xb = (n × e2) / (|e2|² |n|),
@@ -32,59 +30,53 @@ using BendingSpringResult = BendingSpringResultT<double>;
 // fades smoothly), and otherwise the force is left out for that one configuration (bounded, no NaN)
 // rather than given a random direction. A bar of zero length leaves the spring at rest. No
 // branches: the spring loop vectorises (spring_block.hpp).
-// (T = float: the single-precision trial, docs/performance.md.)
-template <class T = double>
-[[gnu::always_inline]] inline BendingSpringResultT<T> bending_spring(
-    const Eigen::Matrix<T, 3, 1>& xa, const Eigen::Matrix<T, 3, 1>& xc,
-    const Eigen::Matrix<T, 3, 1>& xb, T rest_angle, T stiffness, T plastic_set = 0,
-    T yield = std::numeric_limits<T>::infinity()) {
-  using V = Eigen::Matrix<T, 3, 1>;
-  constexpr T kPi = std::numbers::pi_v<T>;
+[[gnu::always_inline]] inline BendingSpringResult bending_spring(
+    const Vec3& xa, const Vec3& xc, const Vec3& xb, double rest_angle, double stiffness,
+    double plastic_set = 0.0, double yield = std::numeric_limits<double>::infinity()) {
   // Below this sine of θ, |n| / (|e1| |e2|), the in-plane directions are lost in rounding.
-  constexpr T kMinSine = T(1e-9);
+  constexpr double kMinSine = 1e-9;
   // The widest deflection from straight (rad) over which a bent rest's cone point is rounded.
-  constexpr T kStraightCap = T(0.05);
-  const V e1 = xa - xc;
-  const V e2 = xb - xc;
-  const T l1_squared = dot3(e1, e1);
-  const T l2_squared = dot3(e2, e2);
-  const T lengths_squared = l1_squared * l2_squared;
-  const V n = cross3(e1, e2);
-  const T n_squared = dot3(n, n);
-  const T n_norm = std::sqrt(n_squared);
-  const T measured = fast_atan2(n_norm, dot3(e1, e2));
-  const T angle = lengths_squared > T(0) ? measured : rest_angle + plastic_set;
-  const ElastoplasticResultT<T> r =
-      elastoplastic(angle - rest_angle, plastic_set, stiffness, yield);
+  constexpr double kStraightCap = 0.05;
+  const Vec3 e1 = xa - xc;
+  const Vec3 e2 = xb - xc;
+  const double l1_squared = dot3(e1, e1);
+  const double l2_squared = dot3(e2, e2);
+  const double lengths_squared = l1_squared * l2_squared;
+  const Vec3 n = cross3(e1, e2);
+  const double n_squared = dot3(n, n);
+  const double n_norm = std::sqrt(n_squared);
+  const double measured = fast_atan2(n_norm, dot3(e1, e2));
+  const double angle = lengths_squared > 0.0 ? measured : rest_angle + plastic_set;
+  const ElastoplasticResult r = elastoplastic(angle - rest_angle, plastic_set, stiffness, yield);
   // Near straight, a spring whose rest is bent by ψ0 > 0 would have a cone point (see above);
   // within ψ < w = min(ψ0, kStraightCap) its energy is the even quartic a + b ψ² + c ψ⁴ that meets
   // ½ k (ψ0 − ψ)² at w with the same value, slope and curvature. No plastic flow there: the
   // quartic's moment is at most the line's, and is held to the yield moment.
-  const T rest_deflection = kPi - rest_angle - plastic_set;  // ψ0
-  const T deflection = kPi - angle;                          // ψ
-  const T width = std::min(rest_deflection, kStraightCap);
-  const bool capped = rest_deflection > T(0) && deflection < width;
-  const T w = capped ? width : T(1);
-  const T inverse_width = T(1) / w;
-  const T ratio = rest_deflection * inverse_width;                                 // ψ0 / w ≥ 1
-  const T quartic = T(0.125) * stiffness * ratio * inverse_width * inverse_width;  // k ψ0 / 8w³
-  const T quadratic = stiffness * (T(0.5) - T(0.75) * ratio);                      // b
-  const T psi2 = deflection * deflection;
-  const T cap_moment =
-      std::clamp(-(T(2) * quadratic + T(4) * quartic * psi2) * deflection, -yield, yield);  // dE/dθ
-  const T cap_energy = T(0.5) * stiffness * (rest_deflection - w) * (rest_deflection - w) +
-                       quadratic * (psi2 - w * w) + quartic * (psi2 * psi2 - w * w * w * w);
-  const T moment = capped ? cap_moment : r.force;
+  const double rest_deflection = std::numbers::pi - rest_angle - plastic_set;  // ψ0
+  const double deflection = std::numbers::pi - angle;                          // ψ
+  const double width = std::min(rest_deflection, kStraightCap);
+  const bool capped = rest_deflection > 0.0 && deflection < width;
+  const double w = capped ? width : 1.0;
+  const double inverse_width = 1.0 / w;
+  const double ratio = rest_deflection * inverse_width;  // ψ0 / w ≥ 1
+  const double quartic = 0.125 * stiffness * ratio * inverse_width * inverse_width;  // k ψ0 / 8w³
+  const double quadratic = stiffness * (0.5 - 0.75 * ratio);                         // b
+  const double psi2 = deflection * deflection;
+  const double cap_moment =
+      std::clamp(-(2.0 * quadratic + 4.0 * quartic * psi2) * deflection, -yield, yield);  // dE/dθ
+  const double cap_energy = 0.5 * stiffness * (rest_deflection - w) * (rest_deflection - w) +
+                            quadratic * (psi2 - w * w) + quartic * (psi2 * psi2 - w * w * w * w);
+  const double moment = capped ? cap_moment : r.force;
   const bool has_plane = n_squared > kMinSine * kMinSine * lengths_squared;
-  const T quotient = moment / (has_plane ? n_norm * lengths_squared : T(1));
-  const T scale = has_plane ? quotient : T(0);  // M / (|e1|² |e2|² |n|)
-  BendingSpringResultT<T> result;
+  const double quotient = moment / (has_plane ? n_norm * lengths_squared : 1.0);
+  const double scale = has_plane ? quotient : 0.0;  // M / (|e1|² |e2|² |n|)
+  BendingSpringResult result;
   result.force_a = (-scale * l2_squared) * cross3(e1, n);
   result.force_b = (-scale * l1_squared) * cross3(n, e2);
   result.force_c = -(result.force_a + result.force_b);
   result.energy = capped ? cap_energy : r.energy;
   result.plastic_set = capped ? plastic_set : r.plastic_set;
-  result.dissipated = capped ? T(0) : r.dissipated;
+  result.dissipated = capped ? 0.0 : r.dissipated;
   return result;
 }
 
