@@ -12,6 +12,7 @@
 #include "io/png_file.hpp"
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
+#include "rest_frame.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
@@ -91,20 +92,12 @@ void draw_wire_lattice(benchmark::State& bench) {
   const SceneDescription scene =
       scale_scene(ScaleStructure::kWireLattice, static_cast<Index>(bench.range(0)));
   const Model model = build_model(scene);
-  std::vector<Vec3f> positions;
-  positions_for_render(model.node_initial_x, positions);
-  Bounds bounds;
-  for (const Vec3f& p : positions) {
-    bounds.add(p);
-  }
-  const DrawList list = make_draw_list(scene, model, bounds);
-  const RenderCamera camera{scene.camera.position.cast<float>(), scene.camera.look_at.cast<float>(),
-                            Vec3f::UnitZ(), static_cast<float>(scene.camera.fov_degrees)};
+  const RestFrame frame = rest_frame(scene, model);
   OsmesaRenderer renderer(render_settings(scene));
   Image image;
-  renderer.render(list, positions, camera, image);  // warm up
+  renderer.render(frame.list, frame.positions, frame.camera, image);  // warm up
   for (auto _ : bench) {
-    renderer.render(list, positions, camera, image);
+    renderer.render(frame.list, frame.positions, frame.camera, image);
   }
   bench.counters["bars"] = static_cast<double>(model.bar_count());
 }

@@ -8,7 +8,6 @@
 // model and a state hold per bar, a step's time and spring evaluations per second on 1 and 2
 // threads, and one 1280 × 720 frame drawn at the default quality. Every time is a median.
 #include <fmt/format.h>
-#include <malloc.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -24,20 +23,12 @@
 #include "dynamics/stability.hpp"
 #include "median_time.hpp"
 #include "model/model.hpp"
+#include "model_measures.hpp"
 #include "render/osmesa_renderer.hpp"
+#include "rest_frame.hpp"
 
 namespace dinam {
 namespace {
-
-// Heap in use now, bytes (glibc's mallinfo2: small blocks and mmap'ed large ones).
-double heap_bytes_in_use() {
-  const struct mallinfo2 info = mallinfo2();
-  return static_cast<double>(info.uordblks + info.hblkhd);
-}
-
-Index spring_count(const Model& model) {
-  return model.bar_count() + model.bend_count() + model.torsion_count();
-}
 
 // One row of the table.
 struct Row {
@@ -68,34 +59,19 @@ double step_seconds(const Model& model, double dt, int threads, int repeats) {
 
 double draw_seconds(const SceneDescription& scene, const Model& model, int repeats) {
   omp_set_num_threads(2);
-  std::vector<Vec3f> positions;
-  positions_for_render(model.node_initial_x, positions);
-  Bounds bounds;
-  for (const Vec3f& p : positions) {
-    bounds.add(p);
-  }
-  const DrawList list = make_draw_list(scene, model, bounds);
-  const RenderCamera camera{scene.camera.position.cast<float>(), scene.camera.look_at.cast<float>(),
-                            Vec3f::UnitZ(), static_cast<float>(scene.camera.fov_degrees)};
+  const RestFrame frame = rest_frame(scene, model);
   OsmesaRenderer renderer(render_settings(scene));
   Image image;
-  renderer.render(list, positions, camera, image);  // warm: uploads, shader compilation
-  return median_seconds(repeats, [&] { renderer.render(list, positions, camera, image); });
+  renderer.render(frame.list, frame.positions, frame.camera, image);  // warm: uploads, shaders
+  return median_seconds(repeats,
+                        [&] { renderer.render(frame.list, frame.positions, frame.camera, image); });
 }
 
 Row measure(ScaleStructure structure, Index bars, bool draw, int repeats) {
   const SceneDescription scene = scale_scene(structure, bars);
   Row row;
   const double heap_before = heap_bytes_in_use();
-  {
-    // The build's own median (its model freed each time but the last).
-    std::vector<double> times;
-    for (int r = 0; r < repeats; ++r) {
-      times.push_back(median_seconds(1, [&] { (void)build_model(scene); }));
-    }
-    std::sort(times.begin(), times.end());
-    row.build = times[times.size() / 2];
-  }
+  row.build = median_seconds(repeats, [&] { (void)build_model(scene); });
   const Model model = build_model(scene);
   double dt = 0.0;
   row.timestep = median_seconds(repeats, [&] {

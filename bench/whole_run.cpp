@@ -3,7 +3,6 @@
 // Each time is the median of several repetitions; the machine is shared, so compare figures
 // from one run only.
 #include <fmt/format.h>
-#include <malloc.h>
 #include <omp.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -27,23 +26,12 @@
 #include "io/png_file.hpp"
 #include "median_time.hpp"
 #include "model/model.hpp"
+#include "model_measures.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
 namespace {
-
-// Heap in use now, bytes: what is allocated and not yet freed (glibc's mallinfo2, small blocks
-// and mmap'ed large ones). Unlike the resident set it does not count heap that building the model
-// used, freed and glibc keeps for reuse.
-double heap_bytes_in_use() {
-  const struct mallinfo2 info = mallinfo2();
-  return static_cast<double>(info.uordblks + info.hblkhd);
-}
-
-Index spring_count(const Model& model) {
-  return model.bar_count() + model.bend_count() + model.torsion_count();
-}
 
 // `steps` steps from the model's initial (for the flag: settled) state on `threads` threads.
 double simulate_seconds(const Model& model, double dt, int steps, int threads) {
