@@ -1,6 +1,7 @@
 // The pipeline without OpenGL: a recording Renderer shows what would be drawn, from which camera.
 #include "app/frame_source.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "app/draw_list_from_model.hpp"
@@ -199,6 +200,34 @@ TEST(FrameSource, FollowCameraKeepsItsOffsetFromTheObject) {
     EXPECT_TRUE((p.cameras.frames[k].position - p.cameras.frames[k].look_at)
                     .isApprox(Vec3f(2, -3, 1), 1e-5f));
   }
+}
+
+// A fine wire is drawn at least 0.2 % of the scene's size across, so that it shows; but the bars of
+// a dense mesh no thicker than a quarter of its median bar, so that they stay apart.
+TEST(DrawListFromModel, DrawnWiresAreVisibleYetADenseMeshStaysAMesh) {
+  const auto radius_of = [](int cells) {
+    const SceneDescription scene = test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - name: net
+    mesh: {{grid: {{width: 1, height: 1, columns: {0}, rows: {0}, diagonals: none}}}}
+    material: {{density: 1000, youngs_modulus: 1.0e6, radius: 0.0001}}
+    style: wire
+)",
+                                                                     cells));
+    const Model model = build_model(scene);
+    Bounds bounds;
+    for (const Vec3& p : model.node_initial_x) {
+      bounds.add(p.cast<float>());
+    }
+    const DrawList list = make_draw_list(scene, model, bounds);
+    return static_cast<double>(list.segment_radius.front());
+  };
+  // The scene is about 1.4 m across: at least 0.2 % of it, 2.8 mm, for 0.25 m bars...
+  const double extent = 2.0 * std::sqrt(0.5);
+  EXPECT_NEAR(radius_of(4), 0.002 * extent, 1e-4);
+  // ... but at most a quarter of 1 cm bars, 2.5 mm, and the wire's own 0.1 mm is less.
+  EXPECT_NEAR(radius_of(100), 0.0025, 1e-6);
 }
 
 TEST(DrawListFromModel, SurfacesReplaceBarsForClothAndColoursFollowObjects) {

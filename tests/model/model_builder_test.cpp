@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "model/vertex_welding.hpp"
 #include "test_support.hpp"
@@ -24,6 +25,43 @@ TEST(VertexWelding, PointsFartherThanTheToleranceStayApart) {
   EXPECT_EQ(weld.nodes.size(), 3u);
 }
 
+TEST(VertexWelding, PointsWithinTheToleranceWeldWhereverTheyFallOnTheHashGrid) {
+  // Pairs 0.9 tolerance apart in every direction, around points spread over many grid cells
+  // (cells of two tolerances): each pair is one node, whichever cells its two points fall in.
+  std::vector<Vec3> vertices = {{0, 0, 0}, {1, 1, 1}};  // a 1.7 m diagonal: tolerance 1.7e-6 m
+  const double tolerance = weld_tolerance(vertices);
+  const int pairs = 2000;
+  for (int k = 0; k < pairs; ++k) {
+    const double a = 0.37 * k;
+    const Vec3 centre(0.1 + 0.8 * std::fmod(0.6180339887 * k, 1.0),
+                      0.1 + 0.8 * std::fmod(0.41421356237 * k, 1.0),
+                      0.1 + 0.8 * std::fmod(0.7320508075 * k, 1.0));
+    const Vec3 direction(std::cos(a) * std::sin(1.3 * a), std::sin(a) * std::sin(1.3 * a),
+                         std::cos(1.3 * a));
+    vertices.push_back(centre);
+    vertices.push_back(centre + 0.9 * tolerance * direction);
+  }
+  ASSERT_DOUBLE_EQ(weld_tolerance(vertices), tolerance);
+  const WeldResult weld = weld_vertices(vertices, tolerance);
+  EXPECT_EQ(weld.nodes.size(), static_cast<std::size_t>(2 + pairs));
+  for (int k = 0; k < pairs; ++k) {
+    EXPECT_EQ(weld.node_of_vertex[2 + 2 * k], weld.node_of_vertex[3 + 2 * k]) << k;
+  }
+}
+
+TEST(VertexWelding, AVertexNearTwoKeptOnesJoinsTheEarlier) {
+  // Nodes 0 and 1 are 1.5 tolerances apart (both kept); vertex 2 lies within the tolerance of
+  // both and joins node 0, the earlier, whatever order the grid finds them in.
+  const double t = 1e-6;
+  for (const double x : {0.0, 0.3e-6, 0.7e-6, 1.1e-6, 1.9e-6}) {
+    const std::vector<Vec3> vertices = {{x, 0, 0}, {x + 1.5 * t, 0, 0}, {x + 0.75 * t, 0, 0}};
+    const WeldResult weld = weld_vertices(vertices, t);
+    EXPECT_EQ(weld.node_of_vertex, (std::vector<Index>{0, 1, 0})) << x;
+    const std::vector<Vec3> reversed = {{x + 1.5 * t, 0, 0}, {x, 0, 0}, {x + 0.75 * t, 0, 0}};
+    EXPECT_EQ(weld_vertices(reversed, t).node_of_vertex, (std::vector<Index>{0, 1, 0})) << x;
+  }
+}
+
 const char* const kTwoQuads = R"(version: 1
 duration: 1
 objects:
@@ -40,6 +78,31 @@ TEST(ModelBuilder, SharedEdgeIsOneBar) {
   EXPECT_EQ(model.node_count(), 6);
   EXPECT_EQ(model.bar_count(), 7);
   EXPECT_EQ(model.face_count(), 2);
+}
+
+// What no spring can use is not kept: yield limits and plastic sets of kinds that cannot yield,
+// and per-bar damping without dampers (model.hpp); they are kept, full length, where they can.
+TEST(ModelBuilder, KeepsYieldLimitsPlasticSetsAndDampingOnlyWhereTheyAct) {
+  const Model elastic = build_model(test::scene_from_yaml(kTwoQuads));
+  EXPECT_TRUE(elastic.bar_yield_force.empty());
+  EXPECT_TRUE(elastic.bend_yield_moment.empty());
+  EXPECT_TRUE(elastic.bar_damping.empty());
+  EXPECT_EQ(yield_limit(elastic.bar_yield_force, 3), kNoYield);
+  const State elastic_state = initial_state(elastic, 1e-4);
+  EXPECT_TRUE(elastic_state.bar_plastic_set.empty());
+  EXPECT_TRUE(elastic_state.bend_plastic_set.empty());
+
+  std::string scene = kTwoQuads;
+  scene.replace(scene.find("area: 0.01}"), 11,
+                "area: 0.01, yield_stress: 2.0e5}\n    damping: {axial_ratio: 0.1}");
+  const Model yielding = build_model(test::scene_from_yaml(scene));
+  ASSERT_EQ(yielding.bar_yield_force.size(), static_cast<std::size_t>(yielding.bar_count()));
+  EXPECT_DOUBLE_EQ(yield_limit(yielding.bar_yield_force, 3), 2.0e5 * 0.01);
+  EXPECT_EQ(yielding.bar_damping.size(), static_cast<std::size_t>(yielding.bar_count()));
+  EXPECT_GT(yielding.bar_damping[0], 0.0);
+  const State yielding_state = initial_state(yielding, 1e-4);
+  EXPECT_EQ(yielding_state.bar_plastic_set.size(), static_cast<std::size_t>(yielding.bar_count()));
+  EXPECT_EQ(plastic_set_of(yielding_state.bar_plastic_set, 3), 0.0);
 }
 
 TEST(ModelBuilder, LumpsHalfOfEachBarOnEachEnd) {

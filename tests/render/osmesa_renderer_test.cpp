@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "render/camera.hpp"
@@ -74,6 +75,53 @@ TEST(OsmesaRenderer, BarAppearsWhereTheCameraPutsItWithItsProjectedWidth) {
   // Nothing else is red: the corners show the sky.
   EXPECT_FALSE(is_red(image.pixel(0, 0)));
   EXPECT_FALSE(is_red(image.pixel(width - 1, height - 1)));
+}
+
+// A bar 0.4 pixel across (drawn as a line, capsule.vert) shows in every column it spans, on its
+// row alone, with the shadow pass on and off.
+TEST(OsmesaRenderer, BarNarrowerThanAPixelShowsAlongItsWholeLength) {
+  const int width = 160;
+  const int height = 120;
+  const RenderCamera camera = front_camera();
+  // A pixel spans 2 · 4 tan 20° / 120 = 0.0243 m at 4 m. The bar lies half a pixel above the
+  // image's middle, along the centres of a row of pixels, and is 0.4 pixel wide.
+  const float pixel = 8.0f * std::tan(20.0f * std::numbers::pi_v<float> / 180.0f) / height;
+  const std::vector<Vec3f> positions = {Vec3f(-1, 0, 1 + 0.5f * pixel),
+                                        Vec3f(1, 0, 1 + 0.5f * pixel)};
+  DrawList thin = one_bar();
+  thin.segment_radius = {0.0012f};
+  for (const int shadow_resolution : {0, 512}) {
+    OsmesaRenderer renderer({width, height, 4, shadow_resolution, {}});
+    Image with_bar;
+    renderer.render(thin, positions, camera, with_bar);
+    DrawList empty = thin;
+    empty.segment_points.clear();
+    empty.segment_radius.clear();
+    empty.segment_color.clear();
+    Image without_bar;
+    renderer.render(empty, positions, camera, without_bar);
+    const Eigen::Vector2f left = pixel_from_world(camera, width, height, positions[0]);
+    const Eigen::Vector2f right = pixel_from_world(camera, width, height, positions[1]);
+    const int row = static_cast<int>(std::lround(left.y()));
+    int marked = 0;
+    int columns = 0;
+    for (int x = static_cast<int>(left.x()) + 2; x <= static_cast<int>(right.x()) - 2; ++x) {
+      ++columns;
+      bool differs = false;
+      for (int y = row - 1; y <= row + 1; ++y) {
+        const std::uint8_t* a = with_bar.pixel(x, y);
+        const std::uint8_t* b = without_bar.pixel(x, y);
+        differs = differs || std::abs(int{a[1]} - int{b[1]}) > 20;  // red takes green away
+      }
+      marked += differs ? 1 : 0;
+    }
+    EXPECT_EQ(marked, columns) << "shadow map " << shadow_resolution;
+    // Two rows away, nothing changed.
+    for (const int y : {row - 2, row + 2}) {
+      EXPECT_EQ(brightness(with_bar.pixel(width / 2, y)),
+                brightness(without_bar.pixel(width / 2, y)));
+    }
+  }
 }
 
 // A 1 m square facing the camera, textured with a red left half and a blue right half: each half
