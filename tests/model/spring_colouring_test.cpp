@@ -30,7 +30,9 @@ void expect_valid(const SpringColouring& colouring, const std::vector<Index>& sp
       std::set<Index> block_nodes;
       for (Index s = first; s < first + colouring.block_size(b); ++s) {
         for (int j = 0; j < per_spring; ++j) {
-          block_nodes.insert(spring_nodes[static_cast<std::size_t>(per_spring * s + j)]);
+          block_nodes.insert(
+              spring_nodes[static_cast<std::size_t>(per_spring) * static_cast<std::size_t>(s) +
+                           static_cast<std::size_t>(j)]);
         }
       }
       for (const Index n : block_nodes) {
