@@ -28,7 +28,18 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b) {
 // The ratio of the smaller to the larger of |x|, |y| is reduced to |t| ≤ tan(π/8) (atan t =
 // π/4 + atan((t − 1)/(t + 1)) above it), where a rational approximation of atan (Cephes, S. L.
 // Moshier: the coefficients of its atan.c, made for |t| ≤ 0.66) is accurate to an ulp.
-[[gnu::always_inline]] inline double fast_atan2(double y, double x) {
+//
+// It comes in two halves so that a spring kernel can fold the one quotient of the reduction,
+// t = top / bottom, into a reciprocal it takes anyway (one division where there were several):
+// atan2_reduce gives top and bottom, atan2_finish the angle from t.
+struct Atan2Reduction {
+  double top;     // t's numerator
+  double bottom;  // t's denominator: > 0 (1 for x = y = 0, where top is 0 too)
+  bool steep;     // |y| > |x|
+  bool upper;     // reduced by π/4
+  double x, y;
+};
+[[gnu::always_inline]] inline Atan2Reduction atan2_reduce(double y, double x) {
   constexpr double kTanPiOver8 = 0.41421356237309504880;
   const double ax = std::abs(x);
   const double ay = std::abs(y);
@@ -38,8 +49,9 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b) {
   const bool upper = small > kTanPiOver8 * large;
   const double top = upper ? small - large : small;
   const double bottom = upper ? small + large : large;
-  // bottom is 0 only for x = y = 0, where top is 0 too and the angle is 0.
-  const double t = top / (bottom > 0.0 ? bottom : 1.0);
+  return {top, bottom > 0.0 ? bottom : 1.0, steep, upper, x, y};
+}
+[[gnu::always_inline]] inline double atan2_finish(const Atan2Reduction& r, double t) {
   const double z = t * t;
   const double p = ((((-8.750608600031904122785e-01 * z - 1.615753718733365076637e+01) * z -
                       7.500855792314704667340e+01) *
@@ -53,10 +65,14 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b) {
                      4.853903996359136964868e+02) *
                         z +
                     1.945506571482613964425e+02);
-  double angle = (upper ? std::numbers::pi / 4 : 0.0) + (t + t * (z * p / q));
-  angle = steep ? std::numbers::pi / 2 - angle : angle;
-  angle = x < 0.0 ? std::numbers::pi - angle : angle;
-  return std::copysign(angle, y);
+  double angle = (r.upper ? std::numbers::pi / 4 : 0.0) + (t + t * (z * p / q));
+  angle = r.steep ? std::numbers::pi / 2 - angle : angle;
+  angle = r.x < 0.0 ? std::numbers::pi - angle : angle;
+  return std::copysign(angle, r.y);
+}
+[[gnu::always_inline]] inline double fast_atan2(double y, double x) {
+  const Atan2Reduction r = atan2_reduce(y, x);
+  return atan2_finish(r, r.top / r.bottom);
 }
 
 // The angle at c between the bars c→a and c→b, in [0, π]: π for a straight continuation.
@@ -78,10 +94,13 @@ inline double dihedral_angle(const Vec3& xa, const Vec3& xi, const Vec3& xj, con
   return fast_atan2(b2.norm() * b1.dot(n2), n1.dot(n2));
 }
 
-// An angle difference wrapped into [−π, π), so a twist through ±π is measured the short way.
+// An angle difference wrapped into [−π, π), so a twist through ±π is measured the short way
+// (by a product with 1/2π rather than a quotient: a division costs as much as ten products in
+// the spring loops).
 inline double wrap_angle(double angle) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  return angle - kTwoPi * std::floor((angle + std::numbers::pi) / kTwoPi);
+  constexpr double kInverseTwoPi = 1.0 / kTwoPi;
+  return angle - kTwoPi * std::floor((angle + std::numbers::pi) * kInverseTwoPi);
 }
 
 }  // namespace dinam

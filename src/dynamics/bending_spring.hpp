@@ -24,10 +24,12 @@ struct BendingSpringResult {
 //   ∂θ/∂xa = (e1 × n) / (|e1|² |n|),  ∂θ/∂xb = (n × e2) / (|e2|² |n|),
 //   ∂θ/∂xc = −(∂θ/∂xa + ∂θ/∂xb),
 // each perpendicular to its bar in the plane of the bars, over the bar's length; the force is
-// −M ∇θ with M = k (θ − θ0 − p) flattened at ±My. One square root and three quotients (two of
-// them in the arctangent) per spring, and a fourth only for a spring that can yield. When the bars
-// are (nearly) straight the plane is undefined; then M → 0 for a straight rest angle (the force
-// fades smoothly), and otherwise the force is left out for that one configuration (bounded, no NaN)
+// −M ∇θ with M = k (θ − θ0 − p) flattened at ±My. One square root and two divisions per spring:
+// the three quotients the spring needs (the arctangent's reduction, the cap's 1/w and the
+// force's 1/(|n| |e1|² |e2|²)) come from one reciprocal of their denominators' product, and the
+// arctangent keeps one of its own; a spring that can yield takes a third. When the bars are
+// (nearly) straight the plane is undefined; then M → 0 for a straight rest angle (the force fades
+// smoothly), and otherwise the force is left out for that one configuration (bounded, no NaN)
 // rather than given a random direction. A bar of zero length leaves the spring at rest. No
 // branches: the spring loop vectorises (spring_block.hpp).
 [[gnu::always_inline]] inline BendingSpringResult bending_spring(
@@ -45,31 +47,38 @@ struct BendingSpringResult {
   const Vec3 n = cross3(e1, e2);
   const double n_squared = dot3(n, n);
   const double n_norm = std::sqrt(n_squared);
-  const double measured = fast_atan2(n_norm, dot3(e1, e2));
-  const double angle = lengths_squared > 0.0 ? measured : rest_angle + plastic_set;
-  const ElastoplasticResult r = elastoplastic(angle - rest_angle, plastic_set, stiffness, yield);
+  const bool has_plane = n_squared > kMinSine * kMinSine * lengths_squared;
   // Near straight, a spring whose rest is bent by ψ0 > 0 would have a cone point (see above);
   // within ψ < w = min(ψ0, kStraightCap) its energy is the even quartic a + b ψ² + c ψ⁴ that meets
   // ½ k (ψ0 − ψ)² at w with the same value, slope and curvature. No plastic flow there: the
   // quartic's moment is at most the line's, and is held to the yield moment.
   const double rest_deflection = std::numbers::pi - rest_angle - plastic_set;  // ψ0
-  const double deflection = std::numbers::pi - angle;                          // ψ
-  const double width = std::min(rest_deflection, kStraightCap);
+  const double width = rest_deflection > 0.0 ? std::min(rest_deflection, kStraightCap) : 1.0;
+  // The reciprocal of the three denominators' product, and each quotient from it.
+  const Atan2Reduction reduced = atan2_reduce(n_norm, dot3(e1, e2));
+  const double force_denominator = has_plane ? n_norm * lengths_squared : 1.0;
+  const double reciprocal = 1.0 / (reduced.bottom * width * force_denominator);
+  const double measured =
+      atan2_finish(reduced, reduced.top * (width * force_denominator * reciprocal));
+  const double inverse_width = reduced.bottom * force_denominator * reciprocal;
+  const double inverse_force_denominator = reduced.bottom * width * reciprocal;
+
+  const double angle = lengths_squared > 0.0 ? measured : rest_angle + plastic_set;
+  const ElastoplasticResult r = elastoplastic(angle - rest_angle, plastic_set, stiffness, yield);
+  const double deflection = std::numbers::pi - angle;  // ψ
   const bool capped = rest_deflection > 0.0 && deflection < width;
-  const double w = capped ? width : 1.0;
-  const double inverse_width = 1.0 / w;
   const double ratio = rest_deflection * inverse_width;  // ψ0 / w ≥ 1
   const double quartic = 0.125 * stiffness * ratio * inverse_width * inverse_width;  // k ψ0 / 8w³
   const double quadratic = stiffness * (0.5 - 0.75 * ratio);                         // b
   const double psi2 = deflection * deflection;
   const double cap_moment =
       std::clamp(-(2.0 * quadratic + 4.0 * quartic * psi2) * deflection, -yield, yield);  // dE/dθ
-  const double cap_energy = 0.5 * stiffness * (rest_deflection - w) * (rest_deflection - w) +
-                            quadratic * (psi2 - w * w) + quartic * (psi2 * psi2 - w * w * w * w);
+  const double cap_energy =
+      0.5 * stiffness * (rest_deflection - width) * (rest_deflection - width) +
+      quadratic * (psi2 - width * width) + quartic * (psi2 * psi2 - width * width * width * width);
   const double moment = capped ? cap_moment : r.force;
-  const bool has_plane = n_squared > kMinSine * kMinSine * lengths_squared;
-  const double quotient = moment / (has_plane ? n_norm * lengths_squared : 1.0);
-  const double scale = has_plane ? quotient : 0.0;  // M / (|e1|² |e2|² |n|)
+  const double scale =
+      has_plane ? moment * inverse_force_denominator : 0.0;  // M / (|e1|² |e2|² |n|)
   BendingSpringResult result;
   result.force_a = (-scale * l2_squared) * cross3(e1, n);
   result.force_b = (-scale * l1_squared) * cross3(n, e2);

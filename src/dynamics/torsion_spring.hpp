@@ -36,19 +36,20 @@ struct TorsionSpringResult {
 // as 1/q_a, 25-fold before the fade began. The force is
 //   f = −w T ∇φ − ½ k e² ∇w,   T = k e flattened at ±Ty/w (so that w T stays within ±Ty).
 
-// q = sin² of the angle between u and v, q = 1 − (u·v)²/(|u|²|v|²), and its gradients
-// ∂q/∂u = (2 u·v / (|u|²|v|²)) ((u·v/|u|²) u − v), ∂q/∂v likewise with u and v swapped.
+// q = sin² of the angle between u and v, q = |u × v|²/(|u|²|v|²) = 1 − (u·v)²/(|u|²|v|²)
+// (taken from the cross product, exact near collinear where 1 − cos² is all rounding), and its
+// gradients ∂q/∂u = (2 u·v / (|u|²|v|²)) ((u·v/|u|²) u − v), ∂q/∂v likewise with u and v
+// swapped, given |u × v|² and inverse = 1 / (|u|²|v|²) (the caller's, from a shared reciprocal).
 struct Sin2Gradient {
   double sin2;
   Vec3 d_u, d_v;
 };
-[[gnu::always_inline]] inline Sin2Gradient sin2_between(const Vec3& u, const Vec3& v) {
-  const double uu = dot3(u, u);
-  const double vv = dot3(v, v);
+[[gnu::always_inline]] inline Sin2Gradient sin2_between(const Vec3& u, const Vec3& v, double uu,
+                                                        double vv, double cross_squared,
+                                                        double inverse) {
   const double uv = dot3(u, v);
-  const double inverse = 1.0 / (uu * vv > 0.0 ? uu * vv : 1.0);  // the one division
   const double scale = 2.0 * uv * inverse;
-  return {1.0 - uv * uv * inverse, scale * ((uv * vv * inverse) * u - v),
+  return {cross_squared * inverse, scale * ((uv * vv * inverse) * u - v),
           scale * ((uv * uu * inverse) * v - u)};
 }
 
@@ -60,6 +61,10 @@ struct Sin2Gradient {
 //   ∂φ/∂xj = −(1 + b3·b2/|b2|²) ∂φ/∂xb + (b1·b2/|b2|²) ∂φ/∂xa,
 // which sum to zero (a rigid translation does not twist); tests/dynamics/kernels_test.cpp checks
 // the forces against finite differences of the energy, near-collinear references included.
+// Six quotients (the weights' 1/(|b1|²|b2|²) and 1/(|b3|²|b2|²), 1/|b2|², 1/|n1|², 1/|n2|² and
+// the arctangent's reduction) come from two reciprocals of products (one would underflow for a
+// nearly collinear reference on a short bar), so a spring takes three divisions and a square
+// root; one that can yield, two divisions more.
 // No branches: the spring loop vectorises (spring_block.hpp), provided the kernel is inlined into
 // it, which the compiler would not do by itself for one this long.
 [[gnu::always_inline]] inline TorsionSpringResult torsion_spring(
@@ -71,12 +76,31 @@ struct Sin2Gradient {
   const Vec3 b3 = xb - xj;
   const Vec3 n1 = cross3(b1, b2);
   const Vec3 n2 = cross3(b2, b3);
+  const double b1_squared = dot3(b1, b1);
   const double b2_squared = dot3(b2, b2);
+  const double b3_squared = dot3(b3, b3);
   const double b2_norm = std::sqrt(b2_squared);
+  const double n1_squared = dot3(n1, n1);
+  const double n2_squared = dot3(n2, n2);
+
+  // The reciprocals. Where a product is 0 (a bar of no length, a reference in line) its factor
+  // stands in as 1: the weight or the guards below make what it feeds irrelevant there.
+  const double a_product = b1_squared * b2_squared;  // |b1|²|b2|²
+  const double b_product = b3_squared * b2_squared;  // |b3|²|b2|²
+  const double safe_a = a_product > 0.0 ? a_product : 1.0;
+  const double safe_b = b_product > 0.0 ? b_product : 1.0;
+  const double safe_b2 = b2_squared > 0.0 ? b2_squared : 1.0;
+  const double lengths_reciprocal = 1.0 / (safe_a * safe_b * safe_b2);
+  const Atan2Reduction reduced = atan2_reduce(b2_norm * dot3(b1, n2), dot3(n1, n2));
+  const double safe_n1 = n1_squared > 0.0 ? n1_squared : 1.0;
+  const double safe_n2 = n2_squared > 0.0 ? n2_squared : 1.0;
+  const double planes_reciprocal = 1.0 / (safe_n1 * safe_n2 * reduced.bottom);
 
   // The weight w = q_a q_b and its gradient.
-  const Sin2Gradient qa = sin2_between(b1, b2);
-  const Sin2Gradient qb = sin2_between(b3, b2);
+  const Sin2Gradient qa = sin2_between(b1, b2, b1_squared, b2_squared, n1_squared,
+                                       safe_b * safe_b2 * lengths_reciprocal);
+  const Sin2Gradient qb = sin2_between(b3, b2, b3_squared, b2_squared, n2_squared,
+                                       safe_a * safe_b2 * lengths_reciprocal);
   const double weight = qa.sin2 * qb.sin2;
   const double wa = qb.sin2;  // ∂w/∂q_a
   const double wb = qa.sin2;  // ∂w/∂q_b
@@ -86,22 +110,22 @@ struct Sin2Gradient {
   const Vec3 dw_j = wa * qa.d_v + wb * (qb.d_v - qb.d_u);
   const Vec3 dw_b = wb * qb.d_u;
 
-  const double angle = fast_atan2(b2_norm * dot3(b1, n2), dot3(n1, n2));
+  const double angle = atan2_finish(reduced, reduced.top * (safe_n1 * safe_n2 * planes_reciprocal));
   // The plastic set accumulates unwrapped; only the elastic part is taken the short way round.
   const double deformation = plastic_set + wrap_angle(angle - rest_angle - plastic_set);
+  // (An elastic spring's yield is the constant ∞, which the compiler then carries through.)
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const double weighted_yield =
-      weight > 0.0 ? yield / weight : std::numeric_limits<double>::infinity();
+      yield == kInfinity ? kInfinity : (weight > 0.0 ? yield / weight : kInfinity);
   const ElastoplasticResult r = elastoplastic(deformation, plastic_set, stiffness, weighted_yield);
-  const double n1_squared = dot3(n1, n1);
-  const double n2_squared = dot3(n2, n2);
   // Where a weight is zero the planes may be undefined; the guards keep the arithmetic finite.
   const bool has_planes = weight > 0.0 && b2_norm > 0.0 && n1_squared > 0.0 && n2_squared > 0.0;
-  const double safe_b2_squared = has_planes ? b2_squared : 1.0;
+  const double inverse_b2_squared = safe_a * safe_b * lengths_reciprocal;
   const double moment = has_planes ? weight * r.force : 0.0;
-  const Vec3 grad_a = -(b2_norm / (has_planes ? n1_squared : 1.0)) * n1;
-  const Vec3 grad_b = (b2_norm / (has_planes ? n2_squared : 1.0)) * n2;
-  const double s1 = dot3(b1, b2) / safe_b2_squared;
-  const double s3 = dot3(b3, b2) / safe_b2_squared;
+  const Vec3 grad_a = -(b2_norm * safe_n2 * reduced.bottom * planes_reciprocal) * n1;
+  const Vec3 grad_b = (b2_norm * safe_n1 * reduced.bottom * planes_reciprocal) * n2;
+  const double s1 = dot3(b1, b2) * inverse_b2_squared;
+  const double s3 = dot3(b3, b2) * inverse_b2_squared;
   const Vec3 grad_i = -(1.0 + s1) * grad_a + s3 * grad_b;
   const Vec3 grad_j = -(1.0 + s3) * grad_b + s1 * grad_a;
   const double elastic_energy = r.energy;  // ½ k e², before weighting
