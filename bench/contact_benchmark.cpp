@@ -10,13 +10,13 @@
 //    pairs per bar), and the same sheets without contact.
 //   cmake --build build --target bench_contact && build/bench/bench_contact
 #include <benchmark/benchmark.h>
-#include <omp.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "bench_scenes.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -96,7 +96,7 @@ objects:
 void flag_step_with_contact(benchmark::State& bench) {
   const auto which = static_cast<Case>(bench.range(0));
   const Model model = build_model(contact_scene(which));
-  omp_set_num_threads(static_cast<int>(bench.range(1)));
+  set_thread_count(static_cast<int>(bench.range(1)));
   const double dt = kAutoTimestepSafety * critical_timestep(model);
   State state = initial_state(model, dt);
   for (int s = 0; s < 200; ++s) {

@@ -9,7 +9,6 @@
 // spring, a node, a face or a bar in the wind), and as a ratio to the axial springs' cost per bar
 // on the same thread count.
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,6 +21,7 @@
 #include <cstdlib>
 #include <regex>
 
+#include "core/thread_team.hpp"
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/bending_spring.hpp"
 #include "dynamics/clamp_spring.hpp"
@@ -32,6 +32,7 @@
 #include "dynamics/stability.hpp"
 #include "dynamics/torsion_spring.hpp"
 #include "dynamics/wind.hpp"
+#include "dynamics/work_split.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
@@ -155,18 +156,31 @@ struct Row {
   double ns_per_item[2];  // 1 and 2 threads
 };
 
-// The cost of one kind's add function over the model, history kept (as a step does).
+// The cost of one kind's add function over the model, history kept (as a step does), run as a
+// step runs it: one job of the thread team, each member its share (dynamics/work_split.hpp).
 template <class Add>
 double add_seconds(Loaded& loaded, const Add& add) {
   State state = loaded.state;  // a copy: plastic sets and anchors move on in it, not in `loaded`
-  ForceContext context{loaded.model, state, state.force, true};
-  return seconds_per_call([&] { add(context); });
+  const WorkSplit split = split_work(loaded.model, thread_count());
+  return seconds_per_call([&] {
+    thread_team().run([&](const TeamMember& member) {
+      ForceContext context{loaded.model, state,   state.force,
+                           true,         nullptr, {member, thread_count() > 1 ? &split : nullptr}};
+      add(context);
+    });
+  });
+}
+
+// The wind as a step adds it: the drag on the items, then each node's share.
+void add_all_wind_forces(ForceContext& context) {
+  compute_wind_drag(context);
+  add_wind_forces(context);
 }
 
 // Whole renders, as a user runs them: `dinam render` of the shipped windy flag, and of that
 // flag's cloth refined to 120 × 120 cells (14 641 nodes, 43 440 bars, 130 797 springs) for
-// 0.13 s, with the forces added one by one. Median of 3 wall times, s, on the threads OpenMP is
-// given.
+// 0.13 s, with the forces added one by one. Median of 3 wall times, s, on the threads the
+// program chooses.
 void report_whole_renders(const std::string& program) {
   const std::filesystem::path source = DINAM_SOURCE_DIR;
   const std::filesystem::path folder = std::filesystem::temp_directory_path() / "force_costs";
@@ -235,8 +249,7 @@ int main(int argc, char** argv) {
       program = argument;
     }
   }
-  fmt::print("dinam force-cost benchmark: the large flag, OpenMP max threads {}\n\n",
-             omp_get_max_threads());
+  fmt::print("dinam force-cost benchmark: the large flag, threads {}\n\n", thread_count());
   Loaded elastic(flag_scene(kSteadyWind), 50);
   Loaded yielding(flag_scene("", ", yield_stress: 1.0e5"), 50);
   Loaded turbulent(flag_scene(kTurbulentWind), 0);
@@ -263,7 +276,7 @@ int main(int argc, char** argv) {
     }
     Row row{kind, item, items, {0.0, 0.0}};
     for (const int threads : {1, 2}) {
-      omp_set_num_threads(threads);
+      set_thread_count(threads);
       row.ns_per_item[threads - 1] = 1e9 * seconds() / static_cast<double>(items);
     }
     rows.push_back(row);
@@ -294,14 +307,14 @@ int main(int argc, char** argv) {
                                [](ForceContext& context) { add_ground_contact_forces(context); });
           });
   measure("wind on faces, steady with gusts", "face", static_cast<Index>(flag.wind.faces.size()),
-          add(elastic, add_wind_forces));
+          add(elastic, add_all_wind_forces));
   measure("wind on faces, turbulent", "face", static_cast<Index>(turbulent.model.wind.faces.size()),
-          add(turbulent, add_wind_forces));
+          add(turbulent, add_all_wind_forces));
   measure("wind on bars, steady with gusts", "bar",
-          static_cast<Index>(lattice.model.wind.bars.size()), add(lattice, add_wind_forces));
+          static_cast<Index>(lattice.model.wind.bars.size()), add(lattice, add_all_wind_forces));
   measure("wind on bars, turbulent", "bar",
           static_cast<Index>(turbulent_lattice.model.wind.bars.size()),
-          add(turbulent_lattice, add_wind_forces));
+          add(turbulent_lattice, add_all_wind_forces));
   // The integrator alone: a step with every force switched off clears the forces, updates the
   // velocities and positions and checks that they are finite.
   measure("integrator and finite check", "node", nodes, [&] {
@@ -326,7 +339,7 @@ int main(int argc, char** argv) {
                row.ns_per_item[1] / axial.ns_per_item[1]);
   }
   if (!program.empty()) {  // the whole renders, with the dinam program given
-    omp_set_num_threads(2);
+    set_thread_count(2);
     fmt::print("\n| `dinam render`, 2 threads | wall time |\n|---|---|\n");
     std::fflush(stdout);
     report_whole_renders(program);

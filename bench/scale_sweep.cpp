@@ -8,7 +8,6 @@
 // model and a state hold per bar, a step's time and spring evaluations per second on 1 and 2
 // threads, and one 1280 × 720 frame drawn at the default quality. Every time is a median.
 #include <fmt/format.h>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +18,7 @@
 
 #include "app/draw_list_from_model.hpp"
 #include "bench_scenes.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "median_time.hpp"
@@ -44,7 +44,7 @@ struct Row {
 // A step's time on `threads` threads: the median over `repeats` runs of enough steps to take
 // about a tenth of a second.
 double step_seconds(const Model& model, double dt, int threads, int repeats) {
-  omp_set_num_threads(threads);
+  set_thread_count(threads);
   State state = initial_state(model, dt);
   const int steps = std::max(2, static_cast<int>(1e7 / static_cast<double>(spring_count(model))));
   step(model, dt, {}, state);  // first touch of every array
@@ -58,7 +58,7 @@ double step_seconds(const Model& model, double dt, int threads, int repeats) {
 }
 
 double draw_seconds(const SceneDescription& scene, const Model& model, int repeats) {
-  omp_set_num_threads(2);
+  set_thread_count(2);
   const RestFrame frame = rest_frame(scene, model);
   OsmesaRenderer renderer(render_settings(scene));
   Image image;
@@ -177,8 +177,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  fmt::print("dinam scale sweep; OpenMP max threads {}, medians of {}\n", omp_get_max_threads(),
-             repeats);
+  fmt::print("dinam scale sweep; threads {}, medians of {}\n", thread_count(), repeats);
   for (const std::string& kind : kinds) {
     const bool cloth = kind == "cloth";
     std::vector<Row> rows;

@@ -4,14 +4,15 @@
 // movie at that rate); the kernel benchmarks add one kind of spring force over the large flag
 // (about 100 000 of each kind), on 1 and 2 OpenMP threads, as spring evaluations per second.
 #include <benchmark/benchmark.h>
-#include <omp.h>
 
 #include "bench_scenes.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/bending_spring.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "dynamics/torsion_spring.hpp"
+#include "dynamics/work_split.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
@@ -66,10 +67,14 @@ template <void (*AddForces)(ForceContext&), Index (Model::*Count)() const>
 void spring_kernel(benchmark::State& bench) {
   const LargeFlag& flag = large_flag();
   State state = flag.state;
-  omp_set_num_threads(static_cast<int>(bench.range(0)));
-  ForceContext context{flag.model, state, state.force, false};
+  set_thread_count(static_cast<int>(bench.range(0)));
+  const WorkSplit split = split_work(flag.model, thread_count());
   for (auto _ : bench) {
-    AddForces(context);
+    thread_team().run([&](const TeamMember& member) {
+      ForceContext context{flag.model, state,   state.force,
+                           false,      nullptr, {member, thread_count() > 1 ? &split : nullptr}};
+      AddForces(context);
+    });
     benchmark::DoNotOptimize(state.force.data());
     benchmark::ClobberMemory();
   }

@@ -3,7 +3,6 @@
 // Each time is the median of several repetitions; the machine is shared, so compare figures
 // from one run only.
 #include <fmt/format.h>
-#include <omp.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -21,6 +20,7 @@
 #include "bench_scenes.hpp"
 #include "cache/motion_cache.hpp"
 #include "cache/motion_cache_writer.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "io/png_file.hpp"
@@ -35,7 +35,7 @@ namespace {
 
 // `steps` steps from the model's initial (for the flag: settled) state on `threads` threads.
 double simulate_seconds(const Model& model, double dt, int steps, int threads) {
-  omp_set_num_threads(threads);
+  set_thread_count(threads);
   State state = initial_state(model, dt);
   return median_seconds(5, [&] {
     for (int s = 0; s < steps; ++s) {
@@ -60,8 +60,8 @@ int main(int argc, char** argv) {
   using namespace dinam;
   const std::filesystem::path source = DINAM_SOURCE_DIR;
   const std::string program = argc > 1 ? argv[1] : (source / "build/dinam").string();
-  fmt::print("dinam whole-run benchmark; {} cores, OpenMP max threads {}\n\n",
-             sysconf(_SC_NPROCESSORS_ONLN), omp_get_max_threads());
+  fmt::print("dinam whole-run benchmark; {} cores, threads {}\n\n", sysconf(_SC_NPROCESSORS_ONLN),
+             thread_count());
 
   // 1. The paper's flag: 12 000 steps of 0.5 ms from its settled shape.
   const SceneDescription flag_scene = read_scene(source / "scenes/flag.yaml");
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
   report_simulation("large flag", large, dt, 200);
 
   // 3. Drawing and PNG encoding of the flag at 1280 × 720 with the scene's quality.
-  omp_set_num_threads(2);
+  set_thread_count(2);
   const SimulatedFrames frames = simulate_frames(flag, flag_step, flag_scene.frame_count(), false);
   const std::vector<RenderCamera> cameras = frame_cameras(flag_scene, flag, frames).frames;
   const DrawList list = make_draw_list(flag_scene, flag, motion_bounds(frames.positions));

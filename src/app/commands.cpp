@@ -21,6 +21,7 @@
 #include "app/run_estimate.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/error.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "io/movie_encoder.hpp"
 #include "io/png_file.hpp"
@@ -94,7 +95,8 @@ int run_render(const RenderOptions& options) {
                                          scene.image_height, instants}),
                         available_memory(), options.force);
   if (timestep) {
-    refuse_long_run(options.scene, scene, model, *timestep, options.force);
+    refuse_if_too_long(options.scene, model, *timestep,
+                       estimate_run(scene, model, *timestep, thread_count()), options.force);
   }
   std::vector<Image> textures = read_textures(scene);
   const std::filesystem::path folder = options.output.value_or(scene.output);

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "core/cpu_share.hpp"
 #include "io/image_compare.hpp"
 
 namespace dinam {
@@ -57,9 +58,11 @@ struct MovieOptions {
 // movie's frames.
 int run_movie(const MovieOptions& options);
 
-// Prints the model summary to stdout, as text or as one JSON object. Throws UserError for a bad
-// scene.
-int run_info(const std::filesystem::path& scene, bool json = false);
+// Prints the model summary to stdout, as text or as one JSON object, with the run's estimates on
+// the process's threads (core/thread_team.hpp) and `threads`' reason for their count. Throws
+// UserError for a bad scene.
+int run_info(const std::filesystem::path& scene, bool json = false,
+             const ThreadChoice& threads = {});
 
 struct SnapshotOptions {
   std::filesystem::path scene;

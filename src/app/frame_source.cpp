@@ -1,5 +1,6 @@
 #include "app/frame_source.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -29,6 +30,9 @@ std::vector<int> shutter_offsets(const MotionBlurDesc& blur, int steps_per_frame
   return offsets;
 }
 
+// Steps taken between two checks for SIGINT or SIGTERM.
+constexpr std::int64_t kStepsBetweenStopChecks = 256;
+
 void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool track_energy,
                   const std::function<void(int, const State&)>& on_frame,
                   const std::vector<int>& shutter,
@@ -50,11 +54,7 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
   State state = initial_state(model, timestep.dt, {}, track_energy);
   int frame = 1;
   std::size_t instant = 0;
-  for (std::int64_t n = 0; n <= final_step; ++n) {
-    if (n > 0) {
-      stop_if_asked();  // within a step of SIGINT or SIGTERM, however long a frame takes
-      step(model, timestep.dt, {}, state);
-    }
+  for (std::int64_t n = 0;;) {
     for (; instant < instants && instant_step(instant) == n; ++instant) {
       on_instant(static_cast<int>(instant / shutter.size()) + 1,
                  static_cast<int>(instant % shutter.size()), state);
@@ -62,6 +62,22 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
     if (frame <= last && frame_step(frame) == n) {
       on_frame(frame++, state);
     }
+    if (n == final_step) {
+      break;
+    }
+    // On to the next frame or instant, in runs of steps that the thread team takes in one go
+    // (dynamics/integrator.hpp), short enough to stop soon after SIGINT or SIGTERM however long
+    // a frame takes.
+    std::int64_t next = std::min(final_step, n + kStepsBetweenStopChecks);
+    if (instant < instants) {
+      next = std::min(next, instant_step(instant));
+    }
+    if (frame <= last) {
+      next = std::min(next, frame_step(frame));
+    }
+    stop_if_asked();
+    advance_steps(model, timestep.dt, {}, state, next - n);
+    n = next;
   }
 }
 

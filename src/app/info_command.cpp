@@ -12,6 +12,7 @@
 #include "app/memory_estimate.hpp"
 #include "app/run_estimate.hpp"
 #include "app/step_limits.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
@@ -49,8 +50,16 @@ nlohmann::ordered_json json_vec3(const Vec3& v) {
   return {v.x(), v.y(), v.z()};
 }
 
+// What `info` says about the run's time: the estimate from the model and what a step measures
+// on this machine now.
+struct RunFigures {
+  RunEstimate estimate;
+  MeasuredStep measured;
+  ThreadChoice threads;
+};
+
 void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
-                Index pinned, const RunEstimate& run) {
+                Index pinned, const RunFigures& run) {
   const MemoryFigures memory = memory_figures(scene, model);
   const StepLimits limits = find_step_limits(model);
   const std::pair<Vec3, Vec3> box = bounding_box(model);
@@ -88,9 +97,13 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"duration_s", scene.duration},
       {"settle_s", model.settle.enabled ? model.settle.duration : 0.0},
       {"settle_residual", model.settle.enabled ? model.settle.residual : 0.0},
-      {"steps", run.steps},
-      {"seconds_per_step", run.seconds_per_step},
-      {"estimated_run_s", run.seconds},
+      {"steps", run.estimate.steps},
+      {"threads", run.estimate.step.threads},
+      {"threads_chosen", run.threads.threads},
+      {"threads_reason", run.threads.reason},
+      {"seconds_per_step", run.estimate.step.seconds},
+      {"estimated_run_s", run.estimate.seconds},
+      {"measured_seconds_per_step", run.measured.seconds_per_step},
       {"memory_render_bytes", memory.render.peak()},
       {"memory_simulate_bytes", memory.simulate.peak()},
       {"memory_available_bytes", memory.available.bytes},
@@ -131,7 +144,7 @@ void print_step_limits(const Model& model) {
 }
 
 void print_text(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
-                Index pinned, const RunEstimate& run) {
+                Index pinned, const RunFigures& run) {
   const int frames = scene.frame_count();
   fmt::print("scene            {} ('{}')\n", scene.source.string(), scene.name);
   fmt::print("objects          {}\n", model.objects.size());
@@ -181,16 +194,27 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
         model.settle.residual, model.settle.duration,
         std::llround(model.settle.duration / timestep.dt));
   }
-  fmt::print("steps in all     {}{}\n", run.steps,
+  fmt::print("steps in all     {}{}\n", run.estimate.steps,
              model.settle.enabled ? " at most (settling stops once it has converged)" : "");
+  const StepCost& cost = run.estimate.step;
+  fmt::print("threads          {} ({}){}\n", run.threads.threads,
+             run.threads.reason.empty() ? "set by the program" : run.threads.reason,
+             cost.threads < run.threads.threads
+                 ? std::string("; this model's steps run on 1, too small to share")
+                 : std::string());
   fmt::print(
-      "run time         about {} to simulate on this machine ({:.3g} ms a step, from {} "
-      "steps measured; drawing comes on top){}\n",
-      duration_text(run.seconds), 1e3 * run.seconds_per_step, run.probe_steps,
-      run.long_run() ? fmt::format("; over {}, so render and simulate refuse it without "
-                                   "--force",
-                                   duration_text(kLongRunSeconds))
-                     : "");
+      "run time         about {} to simulate ({:.3g} ms a step on {} thread{}, estimated from "
+      "the model's springs and nodes; drawing comes on top){}\n",
+      duration_text(run.estimate.seconds), 1e3 * cost.seconds, cost.threads,
+      cost.threads == 1 ? "" : "s",
+      run.estimate.long_run() ? fmt::format("; over {}, so render and simulate refuse it "
+                                            "without --force",
+                                            duration_text(kLongRunSeconds))
+                              : "");
+  fmt::print(
+      "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
+      "now\n",
+      1e3 * run.measured.seconds_per_step, run.measured.steps);
   const MemoryFigures memory = memory_figures(scene, model);
   fmt::print("memory, render   about {} at {}×{}\n", memory.render.summary(), scene.image_width,
              scene.image_height);
@@ -203,11 +227,12 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
 
 }  // namespace
 
-int run_info(const std::filesystem::path& scene_path, bool json) {
+int run_info(const std::filesystem::path& scene_path, bool json, const ThreadChoice& threads) {
   const SceneDescription scene = read_scene(scene_path);
   const Model model = build_model_telling_warnings(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  const RunEstimate run = estimate_run_time(scene, model, timestep);
+  const RunFigures run{estimate_run(scene, model, timestep, thread_count()),
+                       measure_step_now(model, timestep), threads};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     pinned += model.pinned(i) ? 1 : 0;

@@ -4,11 +4,14 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
+#include "core/cpu_share.hpp"
 #include "core/error.hpp"
+#include "core/thread_team.hpp"
 #include "core/version.hpp"
 
 namespace {
@@ -36,6 +39,17 @@ int run(int argc, char** argv) {
       "model, explicit central differences, off-screen OpenGL)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dinam ") + kVersion);
+  // The commands that simulate take the thread count; without it, DINAM_THREADS, else the CPUs
+  // the process is given (core/cpu_share.hpp).
+  std::optional<int> threads;
+  auto add_threads_option = [&threads](CLI::App* command) {
+    command
+        ->add_option("--threads", threads,
+                     "Threads to simulate on (default: DINAM_THREADS, else the CPUs this process "
+                     "is given: its affinity mask, cgroup quota and SLURM_CPUS_PER_TASK; "
+                     "'dinam info' says which); the motion is the same for any count")
+        ->check(CLI::Range(1, 4096));
+  };
 
   RenderOptions render;
   std::string output;
@@ -65,6 +79,7 @@ int run(int argc, char** argv) {
   render_command->add_flag("--force", render.force,
                            "Run even when the memory the run needs (see 'dinam info') passes "
                            "what the machine has available, or its run time an hour");
+  add_threads_option(render_command);
 
   SimulateOptions simulate;
   std::string simulate_output;
@@ -87,6 +102,7 @@ int run(int argc, char** argv) {
   simulate_command->add_flag("--force", simulate.force,
                              "Run even when the memory the run needs (see 'dinam info') passes "
                              "what the machine has available, or its run time an hour");
+  add_threads_option(simulate_command);
 
   MovieOptions movie;
   CLI::App* movie_command = app.add_subcommand(
@@ -135,6 +151,7 @@ int run(int argc, char** argv) {
       ->default_val(snapshot.tolerance.max_mean_error)
       ->check(CLI::Range(0.0, 255.0));
   snapshot_command->add_flag("-q,--quiet", snapshot.quiet, "Print only differences and errors");
+  add_threads_option(snapshot_command);
 
   std::filesystem::path info_scene;
   CLI::App* info_command =
@@ -144,6 +161,7 @@ int run(int argc, char** argv) {
   info_command->add_option("scene", info_scene, "Scene file (YAML)")->required();
   bool info_json = false;
   info_command->add_flag("--json", info_json, "Print one JSON object, for scripts");
+  add_threads_option(info_command);
 
   try {
     app.parse(argc, argv);
@@ -160,6 +178,8 @@ int run(int argc, char** argv) {
   }
 
   try {
+    const ThreadChoice thread_choice = choose_threads(threads);
+    set_thread_count(thread_choice.threads);
     if (*render_command) {
       if (!output.empty()) {
         render.output = output;
@@ -190,7 +210,7 @@ int run(int argc, char** argv) {
       }
       return run_snapshot(snapshot);
     }
-    return run_info(info_scene, info_json);
+    return run_info(info_scene, info_json, thread_choice);
   } catch (const Interrupted& e) {
     fmt::print(stderr, "dinam: {}\n", e.what());
     return 128 + e.signal();

@@ -11,6 +11,8 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "core/thread_team.hpp"
+#include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
@@ -64,10 +66,6 @@ std::uint64_t scene_bytes(const SceneDescription& scene) {
   return bytes;
 }
 
-std::uint64_t colouring_bytes(const SpringColouring& colouring) {
-  return bytes_of(colouring.blocks) + bytes_of(colouring.offsets);
-}
-
 // Every array of model.hpp, as allocated.
 std::uint64_t model_bytes(const Model& model) {
   std::uint64_t bytes = bytes_of(model.node_initial_x) + bytes_of(model.node_initial_v) +
@@ -86,8 +84,6 @@ std::uint64_t model_bytes(const Model& model) {
   bytes += bytes_of(model.bar_breaking_strain) + bytes_of(model.bar_breaking_force) +
            bytes_of(model.bar_spring_offsets) + bytes_of(model.bar_springs) +
            bytes_of(model.bar_face_offsets) + bytes_of(model.bar_faces);
-  bytes += colouring_bytes(model.bar_colours) + colouring_bytes(model.bend_colours) +
-           colouring_bytes(model.torsion_colours);
   for (const FieldForce& field : model.fields) {
     bytes += bytes_of(field.nodes);
   }
@@ -103,15 +99,20 @@ std::uint64_t model_bytes(const Model& model) {
 // state.hpp's arrays for this model.
 std::uint64_t state_bytes(const Model& model, bool energy) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
-  // Plastic sets and each block's last flow, for the kinds that can yield.
-  std::uint64_t yielding = 0;
-  for (const SpringColouring* kind :
-       {&model.bar_colours, &model.bend_colours, &model.torsion_colours}) {
-    yielding += kind->any_yield ? static_cast<std::uint64_t>(kind->spring_count) : 0;
-  }
+  // Plastic sets for the kinds that can yield, and while the energy is tracked each one's flow.
+  const std::uint64_t yielding =
+      (model.bars_yield ? static_cast<std::uint64_t>(model.bar_count()) : 0) +
+      (model.bends_yield ? static_cast<std::uint64_t>(model.bend_count()) : 0) +
+      (model.torsions_yield ? static_cast<std::uint64_t>(model.torsion_count()) : 0);
   std::uint64_t bytes = nodes * 3 * sizeof(Vec3);  // x, v_half, force
-  bytes += yielding * sizeof(double);
-  bytes += yielding / kSpringBlockSize * sizeof(double);
+  bytes += yielding * sizeof(double) * (energy ? 2 : 1);
+  // The split of the work between the threads (work_split.hpp): an owner and a list entry a
+  // node, a list entry a spring (a few more for springs at the borders).
+  if (thread_count() > 1 && worth_sharing(model)) {
+    const auto springs =
+        static_cast<std::uint64_t>(model.bar_count() + model.bend_count() + model.torsion_count());
+    bytes += nodes * (sizeof(std::uint16_t) + sizeof(Index)) + springs * sizeof(Index);
+  }
   if (model.wind.field.enabled) {  // each face's and bar's drag, and the wind at each node
     bytes += (model.wind.faces.size() + model.wind.bars.size()) * sizeof(Vec3);
     bytes += model.wind.field.turbulence != 0.0 ? nodes * sizeof(Vec3) : 0;

@@ -13,12 +13,6 @@
 #include "scene/scene_description.hpp"
 
 namespace dinam {
-namespace {
-
-// Steps timed before a quick probe may decide; a fourfold margin covers their noise.
-constexpr int kFewSteps = 5;
-
-}  // namespace
 
 long long steps_in_all(const SceneDescription& scene, const Model& model,
                        const TimeStep& timestep) {
@@ -27,30 +21,29 @@ long long steps_in_all(const SceneDescription& scene, const Model& model,
   return static_cast<long long>(scene.frame_count()) * timestep.steps_per_frame + settling;
 }
 
-RunEstimate estimate_run_time(const SceneDescription& scene, const Model& model,
-                              const TimeStep& timestep, double probe_seconds, int max_probe_steps,
-                              double enough_below) {
+RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
+                         const TimeStep& timestep, int threads) {
   RunEstimate estimate;
   estimate.steps = steps_in_all(scene, model, timestep);
-  State state = initial_state(model, timestep.dt);
+  estimate.step = estimate_step_cost(model, threads);
+  estimate.seconds = estimate.step.seconds * static_cast<double>(estimate.steps);
+  return estimate;
+}
+
+MeasuredStep measure_step_now(const Model& model, const TimeStep& timestep, double probe_seconds,
+                              int max_probe_steps) {
+  MeasuredStep measured;
+  State state = initial_state(model, timestep.dt, {}, false, Settling::kSkip);
   step(model, timestep.dt, {}, state);  // the first step touches every array once: not timed
   const auto start = Clock::now();
   double elapsed = 0.0;
-  const int most = static_cast<int>(std::min<long long>(max_probe_steps, estimate.steps));
-  while (estimate.probe_steps < std::max(most, 1)) {
+  while (measured.steps < std::max(max_probe_steps, 1) && elapsed < probe_seconds) {
     step(model, timestep.dt, {}, state);
-    ++estimate.probe_steps;
+    ++measured.steps;
     elapsed = seconds_since(start);
-    const bool sure_below =
-        enough_below > 0.0 && estimate.probe_steps >= kFewSteps &&
-        elapsed / estimate.probe_steps * static_cast<double>(estimate.steps) < 0.25 * enough_below;
-    if (elapsed >= probe_seconds || sure_below) {
-      break;
-    }
   }
-  estimate.seconds_per_step = elapsed / estimate.probe_steps;
-  estimate.seconds = estimate.seconds_per_step * static_cast<double>(estimate.steps);
-  return estimate;
+  measured.seconds_per_step = elapsed / measured.steps;
+  return measured;
 }
 
 std::string duration_text(double seconds) {
@@ -87,23 +80,16 @@ void refuse_if_too_long(const std::filesystem::path& scene_path, const Model& mo
   const auto max_steps = static_cast<long long>(
       std::floor(static_cast<double>(estimate.steps) * kLongRunSeconds / estimate.seconds));
   throw_user_error({},
-                   "{}: this run needs {} steps of {:.3g} s{} and would take about {} on this "
-                   "machine ({:.3g} ms a step, measured), more than {}; aim the step with "
+                   "{}: this run needs {} steps of {:.3g} s{} and would take about {} ({:.3g} ms "
+                   "a step on {} thread{}, estimated from the model's springs and nodes), more "
+                   "than {}; aim the step with "
                    "'timestep: {{max_steps: {}}}' (mass scaling and collapsing the shortest bars), "
                    "collapse short bars with 'mesh: {{weld: 0.1}}', use a softer material, or "
                    "pass --force to run it anyway",
                    scene_path.string(), estimate.steps, timestep.dt, cause,
-                   duration_text(estimate.seconds), 1e3 * estimate.seconds_per_step,
+                   duration_text(estimate.seconds), 1e3 * estimate.step.seconds,
+                   estimate.step.threads, estimate.step.threads == 1 ? "" : "s",
                    duration_text(kLongRunSeconds), max_steps);
-}
-
-void refuse_long_run(const std::filesystem::path& scene_path, const SceneDescription& scene,
-                     const Model& model, const TimeStep& timestep, bool force) {
-  if (force) {
-    return;
-  }
-  refuse_if_too_long(scene_path, model, timestep,
-                     estimate_run_time(scene, model, timestep, 0.2, 2000, kLongRunSeconds), force);
 }
 
 }  // namespace dinam

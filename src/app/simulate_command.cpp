@@ -15,6 +15,7 @@
 #include "app/torn_drawing.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
@@ -65,7 +66,8 @@ int run_simulate(const SimulateOptions& options) {
   // One frame's positions at a time: each goes to the files as soon as it is simulated.
   refuse_if_over_budget(options.scene, estimate_memory(scene, model, {2, options.energy, 0, 0}),
                         available_memory(), options.force);
-  refuse_long_run(options.scene, scene, model, timestep, options.force);
+  refuse_if_too_long(options.scene, model, timestep,
+                     estimate_run(scene, model, timestep, thread_count()), options.force);
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
   SettleOutcome settled;

@@ -8,13 +8,16 @@ namespace dinam {
 
 void add_axial_spring_forces(ForceContext& context) {
   const Model& model = context.model;
-  const SpringArrays springs{model.bar_colours,
+  const SpringArrays springs{model.bar_count(),
+                             model.bars_yield,
+                             &MemberShare::bars,
                              model.bar_nodes,
                              model.bar_rest_length,
                              model.bar_axial_stiffness,
                              model.bar_yield_force,
                              context.state.bar_plastic_set,
-                             broken_flags(context.state.bar_broken)};
+                             broken_flags(context.state.bar_broken),
+                             flow_record(context, context.state.energy_workspace.bar_flow)};
   add_spring_forces<2>(
       context, springs,
       [](SpringBlock<2> & block, Index k, double rest, double stiffness, double plastic_set,
@@ -35,17 +38,26 @@ void add_axial_damper_forces(ForceContext& context) {
   if (!model.any_bar_damping) {
     return;
   }
-  for_each_spring(model.bar_colours, [&](Index b) {
-    if (model.bar_damping[b] == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
-      return;
-    }
-    const Index n0 = model.bar_nodes[2 * b];
-    const Index n1 = model.bar_nodes[2 * b + 1];
-    const Vec3 f0 = axial_damper(state.x[n0], state.x[n1], state.v_half[n0], state.v_half[n1],
-                                 model.bar_damping[b]);
-    context.add(n0, f0);
-    context.add(n1, -f0);
-  });
+  const Worker& worker = context.worker;
+  for_each_spring_chunk(worker, &MemberShare::bars, model.bar_count(), kSpringBlockSize,
+                        [&](Index first, Index count) {
+                          for (Index b = first; b < first + count; ++b) {
+                            if (model.bar_damping[b] == 0.0 ||
+                                (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
+                              continue;
+                            }
+                            const Index n0 = model.bar_nodes[2 * b];
+                            const Index n1 = model.bar_nodes[2 * b + 1];
+                            const Vec3 f0 = axial_damper(state.x[n0], state.x[n1], state.v_half[n0],
+                                                         state.v_half[n1], model.bar_damping[b]);
+                            if (worker.owns(n0)) {
+                              context.add(n0, f0);
+                            }
+                            if (worker.owns(n1)) {
+                              context.add(n1, -f0);
+                            }
+                          }
+                        });
 }
 
 double axial_spring_energy(const Model& model, const State& state) {

@@ -7,13 +7,16 @@ namespace dinam {
 
 void add_bending_spring_forces(ForceContext& context) {
   const Model& model = context.model;
-  const SpringArrays springs{model.bend_colours,
+  const SpringArrays springs{model.bend_count(),
+                             model.bends_yield,
+                             &MemberShare::bends,
                              model.bend_nodes,
                              model.bend_rest_angle,
                              model.bend_stiffness,
                              model.bend_yield_moment,
                              context.state.bend_plastic_set,
-                             broken_flags(context.state.bend_broken)};
+                             broken_flags(context.state.bend_broken),
+                             flow_record(context, context.state.energy_workspace.bend_flow)};
   add_spring_forces<3>(
       context, springs,
       [](SpringBlock<3> & block, Index k, double rest, double stiffness, double plastic_set,

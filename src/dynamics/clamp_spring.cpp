@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "dynamics/bending_spring.hpp"
+#include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -21,15 +22,25 @@ BendingSpringResult clamp_spring(const Model& model, const State& state, Index s
 void add_clamp_forces(ForceContext& context) {
   const Model& model = context.model;
   State& state = context.state;
+  EnergyWorkspace& ledger = state.energy_workspace;
   for (Index s = 0; s < model.clamp_count(); ++s) {
+    const Index a = model.clamp_nodes[2 * s + 1];
+    if (!context.worker.owns(a)) {
+      continue;
+    }
     if (!state.clamp_broken.empty() && state.clamp_broken[s] != 0) {
+      if (context.update_history && ledger.enabled) {
+        ledger.clamp_flow[s] = 0.0;
+      }
       continue;
     }
     const BendingSpringResult r = clamp_spring(model, state, s);
-    context.add(model.clamp_nodes[2 * s + 1], r.force_a);
+    context.add(a, r.force_a);
     if (context.update_history) {
       state.clamp_plastic_set[s] = r.plastic_set;
-      state.energy.plastic_dissipation += r.dissipated;
+      if (ledger.enabled) {
+        ledger.clamp_flow[s] = r.dissipated;
+      }
     }
   }
 }

@@ -8,7 +8,8 @@ namespace dinam {
 
 struct Model;
 
-// A few springs at the supports: one serial loop, in clamp order.
+// A few springs at the supports: one loop in clamp order, each worker the clamps of its own free
+// nodes.
 void add_clamp_forces(ForceContext& context);
 double clamp_spring_energy(const Model& model, const State& state);
 

@@ -1,16 +1,29 @@
 #include "dynamics/contact_pairs.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <optional>
 
+#include "core/thread_team.hpp"
 #include "dynamics/contact_geometry.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
 namespace {
+
+// body(i) for every item in [0, count), each writing only data of its own: on the team when
+// there are enough of them.
+template <class Body>
+void for_each_item(Index count, const Body& body) {
+  thread_team().run(
+      [&](const TeamMember& member) {
+        const auto [first, last] = member.share(count, 8);
+        for (Index i = first; i < last; ++i) {
+          body(i);
+        }
+      },
+      count < kMinParallelItems);
+}
 
 std::uint64_t pair_key(std::uint64_t kind, Index a, Index b) {
   return kind << 63 | static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint64_t>(b);
@@ -112,7 +125,7 @@ void file_boxes(const Model& model, State& state) {
   const double skin = work.skin;
   work.bar_boxes.resize(model.bar_count());
   work.bar_used.assign(model.bar_count(), 0);
-  for_each_index(static_cast<Index>(contact.bars.size()), [&](Index k) {
+  for_each_item(static_cast<Index>(contact.bars.size()), [&](Index k) {
     const Index b = contact.bars[k];
     if (!bar_broken(state, b)) {
       work.bar_boxes[b] = box_of(x[model.bar_nodes[2 * b]], x[model.bar_nodes[2 * b + 1]],
@@ -123,7 +136,7 @@ void file_boxes(const Model& model, State& state) {
   const auto triangles = static_cast<Index>(contact.triangle_face.size());
   work.triangle_boxes.resize(triangles);
   work.triangle_used.assign(triangles, 0);
-  for_each_index(triangles, [&](Index t) {
+  for_each_item(triangles, [&](Index t) {
     if (!triangle_broken(contact, state, t)) {
       const Index* corners = &contact.triangles[3 * t];
       const double grow = contact.triangle_radius[t] + skin;
@@ -143,8 +156,9 @@ void file_boxes(const Model& model, State& state) {
 }
 
 // gather(item, list) for every item in [0, count), appending what it finds to `list`; in
-// contiguous runs of items, one per thread, each into its own list of `per_thread`, which are
-// then appended to `out` in order: the same elements in the same order for any thread count.
+// contiguous runs of items, one per member of the team, each into its own list of `per_thread`,
+// which are then appended to `out` in order: the same elements in the same order for any thread
+// count.
 template <class Element, class Gather>
 void gather_in_parallel(Index count, std::vector<std::vector<Element>>& per_thread,
                         std::vector<Element>& out, const Gather& gather) {
@@ -154,23 +168,20 @@ void gather_in_parallel(Index count, std::vector<std::vector<Element>>& per_thre
     }
     return;
   }
-  const auto threads = static_cast<std::size_t>(omp_get_max_threads());
-  if (per_thread.size() < threads) {
-    per_thread.resize(threads);
+  ThreadTeam& team = thread_team();
+  if (per_thread.size() < static_cast<std::size_t>(team.size())) {
+    per_thread.resize(static_cast<std::size_t>(team.size()));
   }
-  for (std::vector<Element>& list : per_thread) {
+  team.run([&](const TeamMember& member) {
+    std::vector<Element>& list = per_thread[static_cast<std::size_t>(member.index())];
     list.clear();
-  }
-#pragma omp parallel
-  {
-    const auto thread = static_cast<Index>(omp_get_thread_num());
-    const auto team = static_cast<Index>(omp_get_num_threads());
-    std::vector<Element>& list = per_thread[thread];
-    for (Index i = count * thread / team; i < count * (thread + 1) / team; ++i) {
+    const auto [first, last] = member.share(count);
+    for (Index i = first; i < last; ++i) {
       gather(i, list);
     }
-  }
-  for (const std::vector<Element>& list : per_thread) {
+  });
+  for (int m = 0; m < team.size(); ++m) {
+    const std::vector<Element>& list = per_thread[static_cast<std::size_t>(m)];
     out.insert(out.end(), list.begin(), list.end());
   }
 }

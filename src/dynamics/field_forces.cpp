@@ -7,8 +7,8 @@ namespace dinam {
 
 void add_gravity_forces(ForceContext& context) {
   const Model& model = context.model;
-  for_each_index(model.node_count(),
-                 [&](Index i) { context.force[i] += model.node_mass[i] * model.gravity; });
+  for_each_own_node(context.worker, model.node_count(),
+                    [&](Index i) { context.force[i] += model.node_mass[i] * model.gravity; });
 }
 
 void add_field_forces(ForceContext& context) {
@@ -16,7 +16,9 @@ void add_field_forces(ForceContext& context) {
   for (const FieldForce& field : model.fields) {
     const Vec3 value = field.profile(context.state.time) * field.value;
     for (const Index i : field.nodes) {
-      context.add(i, field.per_unit_mass ? Vec3(model.node_mass[i] * value) : value);
+      if (context.worker.owns(i)) {
+        context.add(i, field.per_unit_mass ? Vec3(model.node_mass[i] * value) : value);
+      }
     }
   }
 }

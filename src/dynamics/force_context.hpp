@@ -1,10 +1,10 @@
 #pragma once
 // What every force loop receives: the model, the state it reads (and, for plastic sets and
-// contact anchors, updates), and where to add its forces.
+// contact anchors, updates), where to add its forces, and which part of the work is its own.
 #include <vector>
 
+#include "dynamics/parallel_loops.hpp"
 #include "dynamics/state.hpp"
-#include "model/spring_colouring.hpp"
 
 namespace dinam {
 
@@ -21,33 +21,21 @@ struct ForceContext {
   // its forces to its own array here, whose work the report books; null otherwise. The total is
   // summed in the same order either way, so tracking cannot change a bit of the motion.
   std::vector<Vec3>* ledger = nullptr;
+  // The thread running this part of the loops and what is its own (parallel_loops.hpp); by
+  // default one thread that does everything.
+  Worker worker;
+
+  // Keeps `value` aside to write to `slot` once the team has met (spring_block.hpp).
+  void put_aside(double* slot, double value) {
+    state.plastic_set_updates[static_cast<std::size_t>(worker.member.index())].push_back(
+        {slot, value});
+  }
 
   // Adds f to the node's total force and, while tracked, to the kind's ledger.
   void add(Index node, const Vec3& f) {
     force[node] += f;
     if (ledger != nullptr) {
       (*ledger)[node] += f;
-    }
-  }
-
-  // The work that the plastic flow of one block of springs dissipated in this evaluation (J),
-  // kept only when the context advances history. Safe from parallel loops: each block writes its
-  // own slot.
-  void record_plastic_flow(Index block, double dissipated) {
-    if (update_history) {
-      state.plastic_flow[static_cast<std::size_t>(block)] = dissipated;
-    }
-  }
-
-  // After a loop over the springs of one kind: books the dissipation of their flow, summed block
-  // by block in spring order, so that the total does not depend on the threads. Nothing to do
-  // for a kind that cannot yield.
-  void book_plastic_flow(const SpringColouring& springs) {
-    if (update_history && springs.any_yield) {
-      const Index blocks = (springs.spring_count + kSpringBlockSize - 1) / kSpringBlockSize;
-      for (Index b = 0; b < blocks; ++b) {
-        state.energy.plastic_dissipation += state.plastic_flow[static_cast<std::size_t>(b)];
-      }
     }
   }
 };

@@ -11,7 +11,7 @@ void add_global_damping_forces(ForceContext& context) {
   if (alpha == 0.0) {
     return;
   }
-  for_each_index(model.node_count(), [&](Index i) {
+  for_each_own_node(context.worker, model.node_count(), [&](Index i) {
     context.add(i, -(alpha * model.node_mass[i]) * context.state.v_half[i]);
   });
 }

@@ -5,6 +5,7 @@
 
 namespace dinam {
 
+// On the context worker's own nodes (parallel_loops.hpp).
 void add_global_damping_forces(ForceContext& context);
 
 }  // namespace dinam

@@ -38,68 +38,70 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     return;
   }
   State& state = context.state;
-  for_each_block(model.node_count(), kGroundBlock, [&](Index first, Index size) {
-    // 1. Gather the nodes below the plane, packed; a block above it (the usual case) ends here.
-    Index touching[kGroundBlock];
-    double distance[kGroundBlock];
-    Index count = 0;
-    for (Index i = first; i < first + size; ++i) {
-      const double d = dot3(state.x[i] - ground.point, ground.normal);
-      if (d < 0.0 && !model.pinned(i)) {
-        distance[count] = d;
-        touching[count++] = i;
-      } else if (context.update_history) {
-        state.contact_touching[i] = 0;
-        state.contact_sliding[i] = 0;
-      }
-    }
-    if (count == 0) {
-      return;
-    }
-    GroundBlock block;
-    for (Index k = 0; k < count; ++k) {
-      const Index i = touching[k];
-      block.x.set(k, state.x[i]);
-      block.v.set(k, state.v_half[i]);
-      // A node that has just touched is anchored at its foot on the plane.
-      block.anchor.set(k, state.contact_touching[i] != 0
-                              ? state.contact_anchor[i]
-                              : Vec3(state.x[i] - distance[k] * ground.normal));
-      block.sliding[k] = state.contact_sliding[i] != 0 ? 1.0 : 0.0;
-      block.stiffness[k] = ground.node_stiffness[i];
-      block.damping[k] = ground.node_damping[i];
-    }
-    // 2. The contact forces, one node per lane (vectorised by GCC without `omp simd`, which would
-    //    put the Vec3 temporaries in per-lane arrays in memory and keep it from vectorising).
-    for (Index k = 0; k < count; ++k) {
-      const ContactForces f =
-          ground_contact(ground, block.stiffness[k], block.damping[k], block.x.get(k),
-                         block.v.get(k), block.anchor.get(k), block.sliding[k] != 0.0);
-      block.elastic.set(k, f.normal_elastic);
-      block.normal_damping.set(k, f.normal_damping);
-      block.friction.set(k, f.friction);
-      block.new_anchor.set(k, f.anchor);
-      block.new_sliding[k] = f.sliding ? 1.0 : 0.0;
-    }
-    // 3. The elastic push, the normal damping and the friction, in that order; the history.
-    for (Index k = 0; k < count; ++k) {
-      const Index i = touching[k];
-      const Vec3 damping = block.normal_damping.get(k);
-      const Vec3 friction = block.friction.get(k);
-      context.force[i] += block.elastic.get(k);
-      context.force[i] += damping;
-      context.force[i] += friction;
-      if (damping_ledger != nullptr) {
-        (*damping_ledger)[i] += damping;
-        (*friction_ledger)[i] += friction;
-      }
-      if (context.update_history) {
-        state.contact_touching[i] = 1;
-        state.contact_anchor[i] = block.new_anchor.get(k);
-        state.contact_sliding[i] = block.new_sliding[k] != 0.0 ? 1 : 0;
-      }
-    }
-  });
+  for_each_own_node_chunk(
+      context.worker, model.node_count(), kGroundBlock, [&](Index first, Index size) {
+        // 1. Gather the nodes below the plane, packed; a block above it (the usual case) ends here.
+        Index touching[kGroundBlock];
+        double distance[kGroundBlock];
+        Index count = 0;
+        for (Index i = first; i < first + size; ++i) {
+          const double d = dot3(state.x[i] - ground.point, ground.normal);
+          if (d < 0.0 && !model.pinned(i)) {
+            distance[count] = d;
+            touching[count++] = i;
+          } else if (context.update_history) {
+            state.contact_touching[i] = 0;
+            state.contact_sliding[i] = 0;
+          }
+        }
+        if (count == 0) {
+          return;
+        }
+        GroundBlock block;
+        for (Index k = 0; k < count; ++k) {
+          const Index i = touching[k];
+          block.x.set(k, state.x[i]);
+          block.v.set(k, state.v_half[i]);
+          // A node that has just touched is anchored at its foot on the plane.
+          block.anchor.set(k, state.contact_touching[i] != 0
+                                  ? state.contact_anchor[i]
+                                  : Vec3(state.x[i] - distance[k] * ground.normal));
+          block.sliding[k] = state.contact_sliding[i] != 0 ? 1.0 : 0.0;
+          block.stiffness[k] = ground.node_stiffness[i];
+          block.damping[k] = ground.node_damping[i];
+        }
+        // 2. The contact forces, one node per lane (vectorised by GCC without `omp simd`, which
+        // would
+        //    put the Vec3 temporaries in per-lane arrays in memory and keep it from vectorising).
+        for (Index k = 0; k < count; ++k) {
+          const ContactForces f =
+              ground_contact(ground, block.stiffness[k], block.damping[k], block.x.get(k),
+                             block.v.get(k), block.anchor.get(k), block.sliding[k] != 0.0);
+          block.elastic.set(k, f.normal_elastic);
+          block.normal_damping.set(k, f.normal_damping);
+          block.friction.set(k, f.friction);
+          block.new_anchor.set(k, f.anchor);
+          block.new_sliding[k] = f.sliding ? 1.0 : 0.0;
+        }
+        // 3. The elastic push, the normal damping and the friction, in that order; the history.
+        for (Index k = 0; k < count; ++k) {
+          const Index i = touching[k];
+          const Vec3 damping = block.normal_damping.get(k);
+          const Vec3 friction = block.friction.get(k);
+          context.force[i] += block.elastic.get(k);
+          context.force[i] += damping;
+          context.force[i] += friction;
+          if (damping_ledger != nullptr) {
+            (*damping_ledger)[i] += damping;
+            (*friction_ledger)[i] += friction;
+          }
+          if (context.update_history) {
+            state.contact_touching[i] = 1;
+            state.contact_anchor[i] = block.new_anchor.get(k);
+            state.contact_sliding[i] = block.new_sliding[k] != 0.0 ? 1 : 0;
+          }
+        }
+      });
 }
 
 double ground_contact_energy(const Model& model, const State& state) {

@@ -71,8 +71,9 @@ struct ContactForces {
   return result;
 }
 
-// Adds the contact forces of every free node below the plane to context.force: the elastic
-// push, the normal damping and the friction, in that order. While the energy is tracked the
+// Adds the contact forces of every free node below the plane to context.force, on the context
+// worker's own nodes (parallel_loops.hpp): the elastic push, the normal damping and the friction,
+// in that order. While the energy is tracked the
 // damping and the friction also go to their ledgers (both given or both null).
 void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger = nullptr,
                                std::vector<Vec3>* friction_ledger = nullptr);

@@ -1,9 +1,11 @@
 #include "dynamics/integrator.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/bending_spring.hpp"
 #include "dynamics/clamp_spring.hpp"
@@ -25,13 +27,13 @@ namespace {
 
 // Pinned nodes are skipped: they cannot diverge by themselves (only through 0 × ∞ once a
 // neighbour's force has overflowed), and naming the free node that did is what helps the user.
-bool diverged(const Model& model, const State& state, Index i) {
+bool diverged_at(const Model& model, const State& state, Index i) {
   return !model.pinned(i) && !(state.x[i].allFinite() && state.v_half[i].allFinite());
 }
 
 [[noreturn]] void report_divergence(const Model& model, const State& state) {
   Index i = 0;
-  while (!diverged(model, state, i)) {
+  while (!diverged_at(model, state, i)) {
     ++i;
   }
   throw RuntimeError(fmt::format(
@@ -39,10 +41,6 @@ bool diverged(const Model& model, const State& state, Index i) {
       "at step {} (t = {:.6g} s). The time step is too long for the forces at work; use "
       "'timestep: auto' or a shorter step",
       i, model.objects[model.node_object[i]].name, state.step, state.time));
-}
-
-void clear(std::vector<Vec3>& forces) {
-  for_each_index(static_cast<Index>(forces.size()), [&](Index i) { forces[i].setZero(); });
 }
 
 // Δt Σ F_i · v_i with the whole-step velocity v_n = ½ (v_{n−½} + v_{n+½}): the work of a force
@@ -57,27 +55,68 @@ double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_whole, do
   return w * dt;
 }
 
-}  // namespace
-
-void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
-                    bool update_history) {
-  // Every kind adds to the total in this fixed order. While the energy is tracked, the
-  // dissipative and driving kinds also keep their own forces in the ledger's arrays, for the
-  // work they do; that does not change the order of the total's sums.
-  EnergyWorkspace& ledger = state.energy_workspace;
-  auto kind = [&](std::vector<Vec3>& part) {
-    return ForceContext{model, state, state.force, update_history,
-                        ledger.enabled ? &part : nullptr};
-  };
-  clear(state.force);
-  if (ledger.enabled) {
-    for (std::vector<Vec3>* part : ledger.force_parts()) {
-      clear(*part);
+// The split of the work for this step: null when one thread does it all, else the state's split,
+// made again when the team's size has changed.
+const WorkSplit* work_split(const Model& model, State& state, bool alone) {
+  if (alone) {
+    return nullptr;
+  }
+  const int members = thread_team().size();
+  if (state.work_split.members != members) {
+    state.work_split = split_work(model, members);
+    state.plastic_set_updates.assign(static_cast<std::size_t>(members), {});
+    for (std::vector<PlasticSetUpdate>& updates : state.plastic_set_updates) {
+      updates.reserve(static_cast<std::size_t>(state.work_split.shared_springs));
     }
   }
-  ForceContext total{model, state, state.force, update_history};
+  return &state.work_split;
+}
 
-  // 1. External fields: gravity (a potential) and the scene's fields at t_n.
+// Writes the plastic sets that one member put aside (spring_block.hpp), once every member has
+// read the old ones.
+void commit_plastic_set_updates(const TeamMember& member, State& state) {
+  if (state.plastic_set_updates.empty()) {
+    return;
+  }
+  std::vector<PlasticSetUpdate>& updates =
+      state.plastic_set_updates[static_cast<std::size_t>(member.index())];
+  for (const PlasticSetUpdate& update : updates) {
+    *update.slot = update.value;
+  }
+  updates.clear();
+}
+
+// The forces at (x_n, v_{n−½}, t_n) into state.force, but for contact between objects, by one
+// worker (each member of the team runs it, on the nodes and springs of its own). Every kind adds
+// to each node's total in this fixed order. While the energy is tracked, the dissipative and
+// driving kinds also keep their own forces in the ledger's arrays, for the work they do; that
+// does not change the order of the total's sums.
+void add_forces(const Worker& worker, const Model& model, const ForceSwitches& switches,
+                State& state, bool update_history) {
+  EnergyWorkspace& ledger = state.energy_workspace;
+  auto kind = [&](std::vector<Vec3>& part) {
+    return ForceContext{model, state, state.force, update_history, ledger.enabled ? &part : nullptr,
+                        worker};
+  };
+  ForceContext total{model, state, state.force, update_history, nullptr, worker};
+  ForceContext wind = kind(ledger.wind);
+  ForceContext damping = kind(ledger.damping);
+
+  // 1. Aerodynamic drag on each face and bar in the wind, into the wind's own arrays (the team
+  //    meets after it).
+  if (switches.wind) {
+    compute_wind_drag(wind);
+  }
+  // 2. Node by node: the total starts at zero, then gravity, the scene's fields at t_n, the
+  //    wind's drag, global viscous friction and the ground.
+  for_each_own_node(worker, model.node_count(), [&](Index i) {
+    state.force[i].setZero();
+    if (ledger.enabled) {
+      for (std::vector<Vec3>* part : ledger.force_parts()) {
+        (*part)[i].setZero();
+      }
+    }
+  });
   if (switches.gravity) {
     add_gravity_forces(total);
   }
@@ -85,12 +124,17 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
     ForceContext fields = kind(ledger.field);
     add_field_forces(fields);
   }
-  // 2. Aerodynamic drag.
   if (switches.wind) {
-    ForceContext wind = kind(ledger.wind);
     add_wind_forces(wind);
   }
-  // 3. Internal elastoplastic springs.
+  if (switches.global_damping) {
+    add_global_damping_forces(damping);
+  }
+  if (switches.ground) {
+    add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
+                              ledger.enabled ? &ledger.friction : nullptr);
+  }
+  // 3. The springs, kind by kind in spring order, then the bars' dampers.
   if (switches.axial_springs) {
     add_axial_spring_forces(total);
   }
@@ -101,47 +145,124 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   if (switches.torsion) {
     add_torsion_spring_forces(total);
   }
-  // 4. Viscous damping: axial dampers and global friction.
-  ForceContext damping = kind(ledger.damping);
   if (switches.axial_dampers) {
     add_axial_damper_forces(damping);
   }
-  if (switches.global_damping) {
-    add_global_damping_forces(damping);
+}
+
+// 4. Contact between objects and within one, after the team's forces: its search shares its
+//    loops with the team by itself, then the pairs' forces are added on the calling thread.
+void add_contact_forces(const Model& model, const ForceSwitches& switches, State& state,
+                        bool update_history) {
+  if (!switches.object_contact || !model.contact.enabled) {
+    return;
   }
-  // 5. Boundary conditions: the ground, then contact between objects and within one.
-  if (switches.ground) {
-    add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
-                              ledger.enabled ? &ledger.friction : nullptr);
+  EnergyWorkspace& ledger = state.energy_workspace;
+  ForceContext total{model, state, state.force, update_history, nullptr, {}};
+  add_object_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
+                            ledger.enabled ? &ledger.friction : nullptr);
+}
+
+// The work that the springs' plastic flow dissipated in the step just taken, booked kind by kind
+// in spring order while the energy is tracked: the same sum for any thread count.
+void book_plastic_flow(State& state) {
+  EnergyWorkspace& ledger = state.energy_workspace;
+  if (!ledger.enabled) {
+    return;
   }
-  if (switches.object_contact) {
-    add_object_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
-                              ledger.enabled ? &ledger.friction : nullptr);
+  for (const std::vector<double>* flow :
+       {&ledger.bar_flow, &ledger.bend_flow, &ledger.clamp_flow, &ledger.torsion_flow}) {
+    for (const double work : *flow) {
+      state.energy.plastic_dissipation += work;
+    }
   }
 }
 
-State initial_state(const Model& model, double dt, const ForceSwitches& switches,
-                    bool track_energy) {
+// The integrator's half of a step, by one worker: velocities to n + ½, the energy at t_n while it
+// is tracked, positions to n + 1. Sets `diverged` where a free node's position or velocity has
+// stopped being finite.
+void advance(const Worker& worker, const Model& model, double dt, State& state,
+             std::atomic<bool>& diverged) {
+  EnergyWorkspace& ledger = state.energy_workspace;
+  const TeamMember& member = worker.member;
+  const Index n = model.node_count();
+  // 0. The plastic sets of springs shared with another worker, which has read them by now.
+  commit_plastic_set_updates(member, state);
+  // 1. Velocities to n + ½. Pinned nodes have zero inverse mass and zero velocity.
+  for_each_own_node(worker, n, [&](Index i) {
+    if (ledger.enabled) {
+      ledger.v_previous[i] = state.v_half[i];
+    }
+    state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i];
+  });
+  // 2. Pinned nodes that follow a path take the velocity that brings them onto it at t_{n+1}.
+  set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state,
+                        [&](Index i) { return worker.owns(i); });
+  // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
+  //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
+  if (ledger.enabled) {
+    member.barrier();
+    on_leader(member, [&] {
+      book_plastic_flow(state);
+      for (Index i = 0; i < n; ++i) {
+        ledger.v_previous[i] = 0.5 * (ledger.v_previous[i] + state.v_half[i]);
+      }
+      const std::vector<Vec3>& v_whole = ledger.v_previous;
+      EnergyAccounts step_work;
+      step_work.damping_work = work(ledger.damping, v_whole, dt);
+      step_work.contact_damping_work = work(ledger.contact_damping, v_whole, dt);
+      step_work.friction_work = work(ledger.friction, v_whole, dt);
+      step_work.wind_work = work(ledger.wind, v_whole, dt);
+      step_work.field_work = work(ledger.field, v_whole, dt);
+      state.energy.add_works(step_work, 0.5);
+      ledger.last = energy_report(model, state, v_whole);
+      state.energy.add_works(step_work, 0.5);
+    });
+  }
+  // 4. Positions to n + 1, checked on the way.
+  bool any = false;
+  for_each_own_node(worker, n, [&](Index i) {
+    state.x[i] += dt * state.v_half[i];
+    any = diverged_at(model, state, i) || any;
+  });
+  if (any) {
+    diverged.store(true, std::memory_order_relaxed);
+  }
+}
+
+}  // namespace
+
+void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
+                    bool update_history) {
+  const bool alone = !step_runs_in_parallel(model);
+  const WorkSplit* split = work_split(model, state, alone);
+  thread_team().run(
+      [&](const TeamMember& member) {
+        add_forces({member, split}, model, switches, state, update_history);
+        member.barrier();
+        commit_plastic_set_updates(member, state);
+      },
+      alone);
+  add_contact_forces(model, switches, state, update_history);
+  if (update_history) {
+    book_plastic_flow(state);
+  }
+}
+
+State initial_state(const Model& model, double dt, const ForceSwitches& switches, bool track_energy,
+                    Settling settling) {
   const std::size_t n = model.node_count();
   State state;
   state.x = model.node_initial_x;
   state.v_half = model.node_initial_v;
   state.force.assign(n, Vec3::Zero());
   // Plastic sets only for the kinds that can yield (model.hpp).
-  state.bar_plastic_set.assign(model.bar_colours.any_yield ? model.bar_count() : 0, 0.0);
-  state.bend_plastic_set.assign(model.bend_colours.any_yield ? model.bend_count() : 0, 0.0);
-  state.torsion_plastic_set.assign(model.torsion_colours.any_yield ? model.torsion_count() : 0,
-                                   0.0);
+  state.bar_plastic_set.assign(model.bars_yield ? model.bar_count() : 0, 0.0);
+  state.bend_plastic_set.assign(model.bends_yield ? model.bend_count() : 0, 0.0);
+  state.torsion_plastic_set.assign(model.torsions_yield ? model.torsion_count() : 0, 0.0);
   state.clamp_plastic_set.assign(model.clamp_count(), 0.0);
-  // Scratch for the kinds that can yield, and contact history where there is a ground: an elastic
-  // structure in the air carries neither (memory is part of speed for large models).
-  Index yielding = 0;
-  for (const SpringColouring* kind :
-       {&model.bar_colours, &model.bend_colours, &model.torsion_colours}) {
-    yielding = kind->any_yield ? std::max(yielding, kind->spring_count) : yielding;
-  }
-  state.plastic_flow.assign(
-      static_cast<std::size_t>((yielding + kSpringBlockSize - 1) / kSpringBlockSize), 0.0);
+  // Contact history where there is a ground: an elastic structure in the air carries none
+  // (memory is part of speed for large models).
   if (model.ground.enabled) {
     state.contact_anchor.assign(n, Vec3::Zero());
     state.contact_touching.assign(n, 0);
@@ -150,7 +271,9 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   prepare_tearing(model, state);
   prepare_wind(model, state);
   place_driven_nodes(model, 0.0, state);
-  settle_under_gravity(model, dt, switches, state);
+  if (settling == Settling::kRun) {
+    settle_under_gravity(model, dt, switches, state);
+  }
   EnergyWorkspace& ledger = state.energy_workspace;
   ledger.enabled = track_energy;
   if (track_energy) {  // the ledger's arrays exist only then (memory: 144 bytes per node)
@@ -158,6 +281,11 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
       part->assign(n, Vec3::Zero());
     }
     ledger.v_previous.assign(n, Vec3::Zero());
+    // The flow's work of each spring of the kinds that can yield.
+    ledger.bar_flow.assign(model.bars_yield ? model.bar_count() : 0, 0.0);
+    ledger.bend_flow.assign(model.bends_yield ? model.bend_count() : 0, 0.0);
+    ledger.torsion_flow.assign(model.torsions_yield ? model.torsion_count() : 0, 0.0);
+    ledger.clamp_flow.assign(model.clamp_count(), 0.0);
   }
   state.object_contact.dt = dt;
   compute_forces(model, switches, state, false);
@@ -170,46 +298,75 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   return state;
 }
 
+bool worth_sharing(const Model& model) {
+  return model.bar_count() + model.bend_count() + model.torsion_count() >= kMinParallelItems;
+}
+
+bool step_runs_in_parallel(const Model& model) {
+  return thread_team().size() > 1 && worth_sharing(model);
+}
+
 void step(const Model& model, double dt, const ForceSwitches& switches, State& state) {
-  EnergyWorkspace& ledger = state.energy_workspace;
-  // 0. Bars strained past their breaking limit at x_n break, with what stands on them.
-  break_overloaded_bars(model, state);
-  state.object_contact.dt = dt;
-  // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
-  compute_forces(model, switches, state, true);
-  if (ledger.enabled) {
-    ledger.v_previous = state.v_half;
-  }
-  // 2. Velocities to n + ½. Pinned nodes have zero inverse mass and zero velocity.
-  const Index n = model.node_count();
-  for_each_index(
-      n, [&](Index i) { state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i]; });
-  set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state);
-  // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
-  //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
-  if (ledger.enabled) {
-    for (Index i = 0; i < n; ++i) {
-      ledger.v_previous[i] = 0.5 * (ledger.v_previous[i] + state.v_half[i]);
+  advance_steps(model, dt, switches, state, 1);
+}
+
+void advance_steps(const Model& model, double dt, const ForceSwitches& switches, State& state,
+                   std::int64_t steps) {
+  const bool alone = !step_runs_in_parallel(model);
+  const WorkSplit* split = work_split(model, state, alone);
+  std::atomic<bool> diverged{false};
+  // Between two steps, once: the step count moves on.
+  auto next_step = [&] {
+    state.step += 1;
+    state.time = static_cast<double>(state.step) * dt;
+  };
+  if (switches.object_contact && model.contact.enabled) {
+    // Contact between objects searches for its pairs between two jobs of the team.
+    for (std::int64_t s = 0; s < steps && !diverged.load(std::memory_order_relaxed); ++s) {
+      state.object_contact.dt = dt;
+      thread_team().run(
+          [&](const TeamMember& member) {
+            if (model.can_tear()) {
+              on_leader(member, [&] { break_overloaded_bars(model, state); });
+            }
+            add_forces({member, split}, model, switches, state, true);
+          },
+          alone);
+      add_contact_forces(model, switches, state, true);
+      thread_team().run(
+          [&](const TeamMember& member) {
+            advance({member, split}, model, dt, state, diverged);
+          },
+          alone);
+      next_step();
     }
-    const std::vector<Vec3>& v_whole = ledger.v_previous;
-    EnergyAccounts step_work;
-    step_work.damping_work = work(ledger.damping, v_whole, dt);
-    step_work.contact_damping_work = work(ledger.contact_damping, v_whole, dt);
-    step_work.friction_work = work(ledger.friction, v_whole, dt);
-    step_work.wind_work = work(ledger.wind, v_whole, dt);
-    step_work.field_work = work(ledger.field, v_whole, dt);
-    state.energy.add_works(step_work, 0.5);
-    ledger.last = energy_report(model, state, v_whole);
-    state.energy.add_works(step_work, 0.5);
+  } else {
+    // One job of the team for all the steps: each worker computes its own nodes' forces and
+    // moves them on, so the threads meet twice a step, once every worker has read the positions
+    // and velocities its springs and dampers need and once every node has moved (and after the
+    // wind's drag, and around what the leader does alone).
+    thread_team().run(
+        [&](const TeamMember& member) {
+          const Worker worker{member, split};
+          for (std::int64_t s = 0; s < steps; ++s) {
+            // 0. Bars strained past their breaking limit at x_n break, with what stands on them.
+            if (model.can_tear()) {
+              on_leader(member, [&] { break_overloaded_bars(model, state); });
+            }
+            // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
+            add_forces(worker, model, switches, state, true);
+            member.barrier();
+            // 2. Velocities to n + ½, positions to n + 1.
+            advance(worker, model, dt, state, diverged);
+            member.barrier(next_step);
+            if (diverged.load(std::memory_order_relaxed)) {
+              break;  // every member sees it here, after the barrier
+            }
+          }
+        },
+        alone);
   }
-  // 4. Positions to n + 1, checked on the way.
-  const bool any_diverged = any_index(n, [&](Index i) {
-    state.x[i] += dt * state.v_half[i];
-    return diverged(model, state, i);
-  });
-  state.step += 1;
-  state.time = static_cast<double>(state.step) * dt;
-  if (any_diverged) {
+  if (diverged.load(std::memory_order_relaxed)) {
     report_divergence(model, state);
   }
 }

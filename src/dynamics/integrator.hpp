@@ -3,6 +3,8 @@
 //   a_n = M⁻¹ F(x_n, v_{n−½}, t_n),  v_{n+½} = v_{n−½} + Δt a_n,  x_{n+1} = x_n + Δt v_{n+½}.
 // Velocity-dependent forces (dampers, friction, drag) use v_{n−½}, the latest velocity known
 // before the step; the stability bound accounts for the lag.
+#include <cstdint>
+
 #include "dynamics/state.hpp"
 
 namespace dinam {
@@ -23,16 +25,32 @@ struct ForceSwitches {
   bool object_contact = true;  // between objects and within one
 };
 
+// Whether initial_state runs the model's settling phase (settle.hpp), or starts from the mesh
+// as it is (to measure a step's cost, say).
+enum class Settling { kRun, kSkip };
+
 // The state at t = 0: x_0 and v_0 from the model, and v_{−½} = v_0 − ½Δt a_0 so that the first
 // half-step velocity is v_{½} = v_0 + ½Δt a_0. With `track_energy`, every step also keeps the
 // energy accounts and report (at some cost).
 State initial_state(const Model& model, double dt, const ForceSwitches& switches = {},
-                    bool track_energy = false);
+                    bool track_energy = false, Settling settling = Settling::kRun);
 
 // Computes the total force on every node at (x_n, v_{n−½}, t_n) into state.force. With
 // update_history false, plastic sets and contact anchors are left as they are.
 void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
                     bool update_history = false);
+
+// Whether a step of `model` has enough work to pay for sharing it between threads
+// (kMinParallelItems springs), and whether it does: where the process's team (core/
+// thread_team.hpp) has several threads.
+bool worth_sharing(const Model& model);
+bool step_runs_in_parallel(const Model& model);
+
+// Advances the state by `steps` steps of dt, bit for bit as that many calls of step() would, in
+// one job of the thread team (core/thread_team.hpp), whose threads then meet twice a step instead
+// of being woken and gathered for each. Throws as step() does, at the step that diverged.
+void advance_steps(const Model& model, double dt, const ForceSwitches& switches, State& state,
+                   std::int64_t steps);
 
 // Advances the state by one step of dt. Allocates nothing. Throws RuntimeError naming the node,
 // the step and the time if a position or velocity stops being finite.

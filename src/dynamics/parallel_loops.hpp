@@ -1,109 +1,112 @@
 #pragma once
-// The two ways the force loops and the integrator share work between OpenMP threads without
-// changing a bit of the result: per-node loops, where each iteration writes only its own node,
-// and spring loops taken colour by colour (model/spring_colouring.hpp), where the blocks of
-// springs of one colour touch disjoint nodes. No sum anywhere depends on how iterations are
-// scheduled.
+// How the members of the thread team (core/thread_team.hpp) share a step's loops without
+// changing a bit of the result (work_split.hpp):
+//  - node loops: each member takes the range of nodes it owns, the same in every node loop of a
+//    step and of the next, so node loops follow one another without meeting;
+//  - spring loops: each member evaluates the springs with a node of its own, in spring order,
+//    and adds their forces to its own nodes only;
+//  - item loops into arrays of their own (the wind's drag on faces and bars): each member a
+//    share, then a barrier before anyone reads them.
+// Called on one thread (no split), every loop runs whole, in the same order.
 #include <algorithm>
+#include <utility>
 
+#include "core/thread_team.hpp"
 #include "core/types.hpp"
-#include "model/spring_colouring.hpp"
+#include "dynamics/work_split.hpp"
 
 namespace dinam {
 
-// Loops shorter than this run on the calling thread alone: below it, waking the other threads
-// costs more than they save (a few microseconds per loop with libgomp).
+// A step shares its work between the threads only where it has at least this many springs:
+// below it, waking the team costs more than the threads save (bench_threads).
 inline constexpr Index kMinParallelItems = 4096;
 
-// body(i) for i in [0, count), each i writing only data of its own: shared between the threads
-// when `parallel`, on the calling thread otherwise.
-// (Short loops never enter the OpenMP runtime at all: even a parallel region that the `if`
-// clause turns off costs about a microsecond, which a small model's step cannot afford.)
-template <class Body>
-void for_each_index_if(Index count, bool parallel, const Body& body) {
-  if (!parallel) {
-    for (Index i = 0; i < count; ++i) {
-      body(i);
-    }
-    return;
+// One thread's place in a step: its member of the team and, when the team shares the work, the
+// split that says what is its own.
+struct Worker {
+  TeamMember member = solo_member();
+  const WorkSplit* split = nullptr;  // null: this thread does all the work
+
+  const MemberShare* share() const {
+    return split == nullptr ? nullptr : &split->shares[static_cast<std::size_t>(member.index())];
   }
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < count; ++i) {
+  // Whether it writes the node (its force, velocity, position and history).
+  bool owns(Index node) const {
+    const MemberShare* own = share();
+    return own == nullptr || own->owns(node);
+  }
+  // The nodes it writes: [first, last).
+  std::pair<Index, Index> own_nodes(Index node_count) const {
+    const MemberShare* own = share();
+    return own == nullptr ? std::pair<Index, Index>{0, node_count}
+                          : std::pair<Index, Index>{own->first_node, own->end_node};
+  }
+};
+
+// body(i) for every node the worker owns, ascending.
+template <class Body>
+void for_each_own_node(const Worker& worker, Index node_count, const Body& body) {
+  const auto [first, last] = worker.own_nodes(node_count);
+  for (Index i = first; i < last; ++i) {
     body(i);
   }
 }
 
-// body(i) for i in [0, count), each i writing only data of its own.
+// body(first, size) for the nodes the worker owns, ascending, `chunk` at a time: for loops that
+// gather a few nodes, compute them in SIMD lanes and store them (the ground).
 template <class Body>
-void for_each_index(Index count, const Body& body) {
-  for_each_index_if(count, count >= kMinParallelItems, body);
+void for_each_own_node_chunk(const Worker& worker, Index node_count, Index chunk,
+                             const Body& body) {
+  const auto [first, last] = worker.own_nodes(node_count);
+  for (Index i = first; i < last; i += chunk) {
+    body(i, std::min(chunk, last - i));
+  }
 }
 
-// Whether body(i) is true for any i in [0, count), body(i) run for every i (each writing only
-// data of its own): a logical OR, so the answer does not depend on the threads either.
+// body(first, size) for the springs of one kind that the worker evaluates, in spring order,
+// `chunk` at a time, [first, first + size) each: its runs of the kind (`runs`, a member of
+// MemberShare), or on one thread all `count` springs.
 template <class Body>
-bool any_index(Index count, const Body& body) {
-  bool any = false;
-  if (count < kMinParallelItems) {
-    for (Index i = 0; i < count; ++i) {
-      any = body(i) || any;
+void for_each_spring_chunk(const Worker& worker, std::vector<SpringRun> MemberShare::*runs,
+                           Index count, Index chunk, const Body& body) {
+  auto run = [&](const SpringRun& springs) {
+    const Index end = springs.first + springs.count;
+    for (Index first = springs.first; first < end; first += chunk) {
+      body(first, std::min(chunk, end - first));
     }
-    return any;
+  };
+  if (const MemberShare* share = worker.share()) {
+    for (const SpringRun& springs : share->*runs) {
+      run(springs);
+    }
+    return;
   }
-#pragma omp parallel for schedule(static) reduction(|| : any)
-  for (Index i = 0; i < count; ++i) {
-    any = body(i) || any;
-  }
-  return any;
+  run({0, count});
 }
 
-// body(first, size) for the blocks [first, first + size) of at most `block_size` items that
-// cover [0, count), each block writing only data of its own: for loops that gather a block of
-// items, compute it in SIMD lanes and store it (the wind's nodes and faces, the ground's nodes).
-// The blocks do not depend on the thread count, so neither does anything computed in them.
+// body(first, size) for the member's share of the blocks [first, first + size) of at most
+// `block_size` items that cover [0, count), each block writing only data of its own: the wind's
+// nodes, faces and bars. The blocks do not depend on the thread count, so neither does anything
+// computed in them. No barrier: the caller meets the others before it reads what they wrote.
 template <class Body>
-void for_each_block(Index count, Index block_size, const Body& body) {
+void for_each_block_share(const TeamMember& member, Index count, Index block_size,
+                          const Body& body) {
   const Index blocks = (count + block_size - 1) / block_size;
-  for_each_index_if(blocks, count >= kMinParallelItems, [&](Index b) {
+  const auto [begin, end] = member.share(blocks);
+  for (Index b = begin; b < end; ++b) {
     const Index first = b * block_size;
     body(first, std::min(block_size, count - first));
-  });
-}
-
-// body(first, count) for every block of springs (model/spring_colouring.hpp), the springs
-// [first, first + count) in one call, colour after colour; the blocks of a colour in parallel.
-// A kind with fewer springs than kMinParallelItems runs on the calling thread, in the same order.
-template <class Body>
-void for_each_spring_block(const SpringColouring& colouring, const Body& body) {
-  auto run_block = [&](Index k) {
-    const Index block = colouring.blocks[k];
-    body(SpringColouring::first_spring(block), colouring.block_size(block));
-  };
-  const bool parallel = colouring.spring_count >= kMinParallelItems;
-  for (Index c = 0; c < colouring.colour_count(); ++c) {
-    const Index begin = colouring.offsets[c];
-    const Index end = colouring.offsets[c + 1];
-    if (!parallel) {
-      for (Index k = begin; k < end; ++k) {
-        run_block(k);
-      }
-      continue;
-    }
-#pragma omp parallel for schedule(static)
-    for (Index k = begin; k < end; ++k) {
-      run_block(k);
-    }
   }
 }
 
-// body(s) for every spring, in the order and with the sharing of for_each_spring_block.
+// What the leader alone must do, between barriers: body() on member 0, then every member waits
+// for it.
 template <class Body>
-void for_each_spring(const SpringColouring& colouring, const Body& body) {
-  for_each_spring_block(colouring, [&](Index first, Index count) {
-    for (Index s = first; s < first + count; ++s) {
-      body(s);
-    }
-  });
+void on_leader(const TeamMember& member, const Body& body) {
+  if (member.leader()) {
+    body();
+  }
+  member.barrier();
 }
 
 }  // namespace dinam

@@ -13,11 +13,14 @@ void place_driven_nodes(const Model& model, double t, State& state) {
   }
 }
 
-void set_driven_velocities(const Model& model, double t_next, double dt, State& state) {
+void set_driven_velocities(const Model& model, double t_next, double dt, State& state,
+                           const std::function<bool(Index)>& owns) {
   for (const PinMotion& motion : model.pin_motions) {
     const Vec3 offset = motion.profile(t_next) * motion.displacement;
     for (const Index node : motion.nodes) {
-      state.v_half[node] = (model.node_initial_x[node] + offset - state.x[node]) / dt;
+      if (!owns || owns(node)) {
+        state.v_half[node] = (model.node_initial_x[node] + offset - state.x[node]) / dt;
+      }
     }
   }
 }

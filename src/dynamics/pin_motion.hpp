@@ -3,6 +3,8 @@
 // They keep zero inverse mass, so no force moves them; their half-step velocity is set to the
 // path's secant, which carries them along it through the ordinary position update and lets
 // dampers, drag and the ground see how fast they move.
+#include <functional>
+
 #include "dynamics/state.hpp"
 
 namespace dinam {
@@ -12,7 +14,9 @@ struct Model;
 // Where the driven nodes are at time t.
 void place_driven_nodes(const Model& model, double t, State& state);
 
-// v_{n+½} of every driven node, so that x_{n+1} = x_n + Δt v_{n+½} lands on the path at t_{n+1}.
-void set_driven_velocities(const Model& model, double t_next, double dt, State& state);
+// v_{n+½} of every driven node, so that x_{n+1} = x_n + Δt v_{n+½} lands on the path at t_{n+1};
+// with `owns`, only of the nodes for which it is true (a worker's own, parallel_loops.hpp).
+void set_driven_velocities(const Model& model, double t_next, double dt, State& state,
+                           const std::function<bool(Index)>& owns = {});
 
 }  // namespace dinam

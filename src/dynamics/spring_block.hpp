@@ -1,11 +1,11 @@
 #pragma once
-// Spring forces by blocks of consecutive springs (model/spring_colouring.hpp), in three passes
-// per block:
-//   1. gather: copy each spring's node positions into the block, one array per coordinate of
-//      each node (structure of arrays);
+// Spring forces by blocks of springs, in three passes per block:
+//   1. gather: copy each spring's node positions and parameters into the block, one array per
+//      coordinate of each node (structure of arrays);
 //   2. compute: run the spring's kernel on every spring of the block, one spring per SIMD lane;
 //      the loop reads and writes only the block's arrays, without branches, so it vectorises;
-//   3. scatter: add the forces to the nodes and keep the plastic flow.
+//   3. scatter: add the forces to the nodes (a worker of a team, to its own nodes only) and keep
+//      the plastic sets.
 // Passes 1 and 3 are scalar loads and stores through the node ids; pass 2, where the arithmetic
 // is, would not vectorise with them inside (the compiler cannot scatter to the nodes, and the
 // x86-64 baseline has no gather either).
@@ -23,14 +23,27 @@ namespace dinam {
 // One kind of elastoplastic spring as the model and state hold it: kNodes node ids per spring,
 // and one value per spring of each parameter.
 struct SpringArrays {
-  const SpringColouring& colouring;
-  const std::vector<Index>& nodes;       // (n_springs × kNodes)
-  const std::vector<double>& rest;       // (n_springs) m or rad
-  const std::vector<double>& stiffness;  // (n_springs) N/m or N·m/rad
-  const std::vector<double>& yield;      // (n_springs) N or N·m; infinite when elastic
-  std::vector<double>& plastic_set;      // (n_springs) m or rad
+  Index count = 0;
+  bool any_yield = false;                           // some spring of this kind can flow plastically
+  std::vector<SpringRun> MemberShare::*share_runs;  // a worker's springs of this kind
+  const std::vector<Index>& nodes;                  // (n_springs × kNodes)
+  const std::vector<double>& rest;                  // (n_springs) m or rad
+  const std::vector<double>& stiffness;             // (n_springs) N/m or N·m/rad
+  const std::vector<double>& yield;                 // (n_springs) N or N·m; infinite when elastic
+  std::vector<double>& plastic_set;                 // (n_springs) m or rad
   const std::uint8_t* broken = nullptr;  // (n_springs) 1 for a torn spring; null: none can tear
+  std::vector<double>* flow = nullptr;   // (n_springs) J dissipated, while the energy is tracked
 };
+
+// Springs per block. A block's gathered inputs and its results stay in the first-level cache
+// between the passes over it.
+inline constexpr Index kSpringBlockSize = 64;
+
+// Where a kind's springs record the work of their flow: its array while the energy is tracked and
+// the context advances history (the array is empty for a kind that cannot yield); null otherwise.
+inline std::vector<double>* flow_record(const ForceContext& context, std::vector<double>& flow) {
+  return context.update_history && !flow.empty() ? &flow : nullptr;
+}
 
 // The broken flags of one kind of spring, or null when the model cannot tear.
 inline const std::uint8_t* broken_flags(const std::vector<std::uint8_t>& flags) {
@@ -54,17 +67,17 @@ struct SpringBlock {
 };
 
 // Pass 2: kernel(block, k, rest, stiffness, plastic_set, yield) for the block's springs k in
-// [0, count), whose parameters it reads straight from the (contiguous) model and state arrays.
-// The kernel must be a lambda without captures and must not branch, or the loop will not
-// vectorise. For a kind that cannot yield, every plastic set stays 0: the kernel then gets the
-// constants 0 and ∞, and the compiler drops the plastic branch of elastoplastic() with its
-// division.
+// [0, count), the springs [first, first + count), whose parameters it reads straight from the
+// (contiguous) model and state arrays. The kernel must be a lambda without captures and must not
+// branch, or the loop will not vectorise. For a kind that cannot yield, every plastic set stays
+// 0: the kernel then gets the constants 0 and ∞, and the compiler drops the plastic branch of
+// elastoplastic() with its division.
 template <int kNodes, class Kernel>
 void compute_spring_block(SpringBlock<kNodes>& block, const SpringArrays& springs, Index first,
                           Index count, const Kernel& kernel) {
   const double* rest = springs.rest.data() + first;
   const double* stiffness = springs.stiffness.data() + first;
-  if (springs.colouring.any_yield) {
+  if (springs.any_yield) {
     const double* plastic_set = springs.plastic_set.data() + first;
     const double* yield = springs.yield.data() + first;
 #pragma omp simd
@@ -80,46 +93,57 @@ void compute_spring_block(SpringBlock<kNodes>& block, const SpringArrays& spring
   }
 }
 
-// Adds the forces of every spring of one kind to context.force, block by block in the colouring's
-// order, and keeps the plastic flow when the context advances history.
+// Adds the forces of every spring of one kind that the context's worker evaluates to its nodes,
+// block by block in spring order, and keeps the plastic sets (and, while the energy is tracked,
+// each spring's dissipation) of the springs whose first node it owns, when the context advances
+// history. A spring that another worker evaluates too has its new plastic set put aside
+// (State::plastic_set_updates) until every worker has read the old one: the worker that owns it
+// commits it after the team has met (commit_plastic_set_updates).
 template <int kNodes, class Kernel>
 void add_spring_forces(ForceContext& context, const SpringArrays& springs, const Kernel& kernel) {
-  const bool may_yield = springs.colouring.any_yield;
+  const bool may_yield = springs.any_yield;
   const Vec3* x = context.state.x.data();
   Vec3* force = context.force.data();
-  for_each_spring_block(springs.colouring, [&](Index first, Index count) {
-    const Index* spring_nodes = &springs.nodes[static_cast<std::size_t>(kNodes) * first];
-    SpringBlock<kNodes> block;
-    for (Index k = 0; k < count; ++k) {
-      for (int j = 0; j < kNodes; ++j) {
-        block.position[j].set(k, x[spring_nodes[kNodes * k + j]]);
-      }
-    }
-    compute_spring_block(block, springs, first, count, kernel);
-    const std::uint8_t* broken = springs.broken == nullptr ? nullptr : springs.broken + first;
-    for (Index k = 0; k < count; ++k) {
-      if (broken != nullptr && broken[k] != 0) {
-        continue;  // torn: computed with the block, but it acts no more
-      }
-      for (int j = 0; j < kNodes; ++j) {
-        force[spring_nodes[kNodes * k + j]] += block.node_force(j, k);
-      }
-    }
-    if (may_yield && context.update_history) {
-      // The new plastic sets, and the flow's work summed in four interleaved partial sums (a
-      // fixed order, which the compiler may keep in one vector register).
-      double* plastic_set = &springs.plastic_set[first];
-      double partial[4] = {0.0, 0.0, 0.0, 0.0};
-      for (Index k = 0; k < count; ++k) {
-        const bool acts = broken == nullptr || broken[k] == 0;
-        plastic_set[k] = acts ? block.new_plastic_set[k] : plastic_set[k];
-        partial[k & 3] += acts ? block.dissipated[k] : 0.0;
-      }
-      context.record_plastic_flow(first / kSpringBlockSize,
-                                  (partial[0] + partial[1]) + (partial[2] + partial[3]));
-    }
-  });
-  context.book_plastic_flow(springs.colouring);
+  const auto [own_first, own_end] =
+      context.worker.own_nodes(static_cast<Index>(context.state.x.size()));
+  auto owns = [own_first, own_end](Index node) { return node >= own_first && node < own_end; };
+  for_each_spring_chunk(
+      context.worker, springs.share_runs, springs.count, kSpringBlockSize,
+      [&](Index first, Index count) {
+        const Index* spring_nodes = &springs.nodes[static_cast<std::size_t>(kNodes) * first];
+        SpringBlock<kNodes> block;
+        for (Index k = 0; k < count; ++k) {
+          for (int j = 0; j < kNodes; ++j) {
+            block.position[j].set(k, x[spring_nodes[kNodes * k + j]]);
+          }
+        }
+        compute_spring_block(block, springs, first, count, kernel);
+        for (Index k = 0; k < count; ++k) {
+          const Index s = first + k;
+          // A torn spring is computed with the block, but it acts no more.
+          const bool acts = springs.broken == nullptr || springs.broken[s] == 0;
+          const Index* nodes = &springs.nodes[static_cast<std::size_t>(kNodes) * s];
+          bool all_own = true;
+          for (int j = 0; j < kNodes; ++j) {
+            const bool own = owns(nodes[j]);
+            all_own = all_own && own;
+            if (acts && own) {
+              force[nodes[j]] += block.node_force(j, k);
+            }
+          }
+          if (may_yield && context.update_history && owns(nodes[0])) {
+            const double plastic_set = acts ? block.new_plastic_set[k] : springs.plastic_set[s];
+            if (all_own) {
+              springs.plastic_set[s] = plastic_set;
+            } else {
+              context.put_aside(&springs.plastic_set[s], plastic_set);
+            }
+            if (springs.flow != nullptr) {
+              (*springs.flow)[s] = acts ? block.dissipated[k] : 0.0;
+            }
+          }
+        }
+      });
 }
 
 }  // namespace dinam

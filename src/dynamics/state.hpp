@@ -6,6 +6,7 @@
 
 #include "core/types.hpp"
 #include "dynamics/object_contact_state.hpp"
+#include "dynamics/work_split.hpp"
 
 namespace dinam {
 
@@ -53,7 +54,13 @@ struct EnergyWorkspace {
   std::vector<Vec3> wind;             // (n_nodes) N
   std::vector<Vec3> field;            // (n_nodes) N
   std::vector<Vec3> v_previous;       // (n_nodes) m/s, v_{n−½} during a step
-  EnergyReport last;                  // at the last step taken
+  // The work each spring's plastic flow dissipated in the last step, J, for the kinds that can
+  // yield (empty for the others), booked in spring order after the step whatever the threads.
+  std::vector<double> bar_flow;      // (n_bars)
+  std::vector<double> bend_flow;     // (n_bends)
+  std::vector<double> torsion_flow;  // (n_torsions)
+  std::vector<double> clamp_flow;    // (n_clamps)
+  EnergyReport last;                 // at the last step taken
 
   // The five per-kind force arrays, to clear or size them together.
   std::array<std::vector<Vec3>*, 5> force_parts() {
@@ -78,6 +85,12 @@ struct WindWorkspace {
   std::vector<Vec3> item_force;  // (n_wind_faces + n_wind_bars) N, on each of the item's nodes
 };
 
+// A plastic set to write once the threads have met.
+struct PlasticSetUpdate {
+  double* slot;
+  double value;
+};
+
 // Leapfrog state at step n: positions at whole steps, velocities at half steps.
 struct State {
   double time = 0.0;         // s, t_n
@@ -97,9 +110,6 @@ struct State {
   std::vector<std::uint8_t> clamp_broken;    // (n_clamps)
   std::vector<std::uint8_t> face_broken;     // (n_faces) faces with a broken edge
   std::vector<Index> broken_bars;            // in the order they broke
-  // (most blocks of springs of a kind that yields) J, scratch: the work each block's plastic
-  // flow dissipated in the last step (spring_block.hpp).
-  std::vector<double> plastic_flow;
 
   // Ground contact history (empty without a ground): where each node's stick spring is anchored
   // on the plane, and whether it is sliding (kinetic friction) or sticking (static).
@@ -108,6 +118,13 @@ struct State {
   std::vector<std::uint8_t> contact_sliding;   // (n_nodes) 1 while sliding
 
   WindWorkspace wind;
+  // Which thread owns which nodes and evaluates which springs, for the team size it was made for
+  // (made at the first step that shares its work; work_split.hpp).
+  WorkSplit work_split;
+  // (n_threads) the new plastic sets of springs that two threads evaluate, put aside by the one
+  // that keeps them until the other has read the old ones (spring_block.hpp); room for every
+  // spring that is shared, so that no step allocates.
+  std::vector<std::vector<PlasticSetUpdate>> plastic_set_updates;
   // Contact between objects (empty unless the model has it).
   ObjectContactWorkspace object_contact;
   EnergyAccounts energy;

@@ -7,13 +7,16 @@ namespace dinam {
 
 void add_torsion_spring_forces(ForceContext& context) {
   const Model& model = context.model;
-  const SpringArrays springs{model.torsion_colours,
+  const SpringArrays springs{model.torsion_count(),
+                             model.torsions_yield,
+                             &MemberShare::torsions,
                              model.torsion_nodes,
                              model.torsion_rest_angle,
                              model.torsion_stiffness,
                              model.torsion_yield_moment,
                              context.state.torsion_plastic_set,
-                             broken_flags(context.state.torsion_broken)};
+                             broken_flags(context.state.torsion_broken),
+                             flow_record(context, context.state.energy_workspace.torsion_flow)};
   add_spring_forces<4>(
       context, springs,
       [](SpringBlock<4> & block, Index k, double rest, double stiffness, double plastic_set,

@@ -30,10 +30,11 @@ bool torn(const std::vector<std::uint8_t>& broken, Index item) {
 }
 
 // The wind at every node in the wind, when it is turbulent (uniform otherwise: no node needs it).
-void evaluate_node_winds(const WindLoad& wind, const Vec3& uniform, State& state) {
+void evaluate_node_winds(const TeamMember& member, const WindLoad& wind, const Vec3& uniform,
+                         State& state) {
   const TurbulencePhases phases = turbulence_phases(wind, state.time);
   const Index count = static_cast<Index>(wind.nodes.size());
-  for_each_block(count, kWindBlock, [&](Index first, Index size) {
+  for_each_block_share(member, count, kWindBlock, [&](Index first, Index size) {
     Vec3Lanes<kWindBlock> x = {};  // (zeroed: the compiler cannot see that size > 0)
     Vec3Lanes<kWindBlock> u;
     for (Index k = 0; k < size; ++k) {
@@ -88,11 +89,11 @@ Vec3 face_area_vector(const Model& model, const std::vector<Vec3>& x, Index begi
   return area_vector;
 }
 
-void face_forces(const Model& model, const Vec3& uniform, State& state) {
+void face_forces(const TeamMember& member, const Model& model, const Vec3& uniform, State& state) {
   const WindLoad& wind = model.wind;
   const bool turbulent = wind.field.turbulence != 0.0;
   const Index count = static_cast<Index>(wind.faces.size());
-  for_each_block(count, kWindBlock, [&](Index first, Index size) {
+  for_each_block_share(member, count, kWindBlock, [&](Index first, Index size) {
     DragBlock block;
     for (Index k = 0; k < size; ++k) {
       const Index f = wind.faces[first + k];
@@ -131,12 +132,12 @@ void face_forces(const Model& model, const Vec3& uniform, State& state) {
   });
 }
 
-void bar_forces(const Model& model, const Vec3& uniform, State& state) {
+void bar_forces(const TeamMember& member, const Model& model, const Vec3& uniform, State& state) {
   const WindLoad& wind = model.wind;
   const bool turbulent = wind.field.turbulence != 0.0;
   const Index count = static_cast<Index>(wind.bars.size());
   Vec3* out = state.wind.item_force.data() + wind.faces.size();  // the bars follow the faces
-  for_each_block(count, kWindBlock, [&](Index first, Index size) {
+  for_each_block_share(member, count, kWindBlock, [&](Index first, Index size) {
     DragBlock block;
     for (Index k = 0; k < size; ++k) {
       const Index b = wind.bars[first + k];
@@ -174,27 +175,42 @@ void prepare_wind(const Model& model, State& state) {
   }
 }
 
-void add_wind_forces(ForceContext& context) {
+void compute_wind_drag(ForceContext& context) {
   const Model& model = context.model;
   const WindLoad& wind = model.wind;
   if (!wind.field.enabled) {
     return;
   }
   State& state = context.state;
+  const TeamMember& member = context.worker.member;
   const Vec3 uniform = uniform_wind_velocity(wind.field, state.time);
   if (wind.field.turbulence != 0.0) {
-    evaluate_node_winds(wind, uniform, state);
+    evaluate_node_winds(member, wind, uniform, state);
+    member.barrier();
   }
-  face_forces(model, uniform, state);
-  bar_forces(model, uniform, state);
+  face_forces(member, model, uniform, state);
+  bar_forces(member, model, uniform, state);
+  member.barrier();
+}
+
+void add_wind_forces(ForceContext& context) {
+  const Model& model = context.model;
+  const WindLoad& wind = model.wind;
+  if (!wind.field.enabled) {
+    return;
+  }
   // Each node adds its faces' drag, then its bars', in ascending order (WindLoad::node_items).
-  const std::vector<Vec3>& item_force = state.wind.item_force;
-  for_each_index(static_cast<Index>(wind.nodes.size()), [&](Index k) {
+  const std::vector<Vec3>& item_force = context.state.wind.item_force;
+  const auto count = static_cast<Index>(wind.nodes.size());
+  for (Index k = 0; k < count; ++k) {
     const Index node = wind.nodes[k];
+    if (!context.worker.owns(node)) {
+      continue;
+    }
     for (Index j = wind.node_item_offsets[k]; j < wind.node_item_offsets[k + 1]; ++j) {
       context.add(node, item_force[wind.node_items[j]]);
     }
-  });
+  }
 }
 
 }  // namespace dinam

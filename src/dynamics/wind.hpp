@@ -37,10 +37,15 @@ namespace dinam {
 // Sizes the wind's scratch in the state (State::wind) for the model.
 void prepare_wind(const Model& model, State& state);
 
-// Adds the drag on every face and bare bar in the wind, each shared equally by its nodes. A face
-// feels the mean of its nodes' velocities and of the wind at its nodes; a bar the same of its two
-// ends. Threads share the nodes (when turbulent), then the faces and bars, then the nodes again,
-// each gathering its items' forces in a fixed order: the result does not depend on the threads.
+// The drag on every face and bare bar in the wind, into the state's wind scratch, each to be
+// shared equally by its nodes. A face feels the mean of its nodes' velocities and of the wind at
+// its nodes; a bar the same of its two ends. The context's team shares the nodes (when turbulent),
+// then the faces and bars, and meets at a barrier after each.
+void compute_wind_drag(ForceContext& context);
+
+// Adds the drag that compute_wind_drag found to the context worker's own nodes
+// (parallel_loops.hpp), each node its items' in a fixed order: the result does not depend on the
+// threads.
 void add_wind_forces(ForceContext& context);
 
 }  // namespace dinam

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/thread_team.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -117,17 +118,21 @@ NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact) 
   NodeFrequencyRows rows;
   rows.own.assign(n, 0.0);
   rows.coupling.assign(n, 0.0);
-  // Each node on its own: on every thread.
-#pragma omp parallel for schedule(static) if (n >= 4096)
-  for (Index i = 0; i < n; ++i) {
-    if (model.pinned(i)) {
-      continue;
-    }
-    Eigen::SelfAdjointEigenSolver<Mat3> solver;
-    solver.computeDirect(sums.diagonal[i], Eigen::EigenvaluesOnly);
-    rows.own[i] = solver.eigenvalues().maxCoeff() * model.node_inv_mass[i];
-    rows.coupling[i] = sums.coupling[i];
-  }
+  // Each node on its own: on every thread of the team, for a model large enough to pay for it.
+  thread_team().run(
+      [&](const TeamMember& member) {
+        const auto [first, last] = member.share(n, 8);
+        for (Index i = first; i < last; ++i) {
+          if (model.pinned(i)) {
+            continue;
+          }
+          Eigen::SelfAdjointEigenSolver<Mat3> solver;
+          solver.computeDirect(sums.diagonal[i], Eigen::EigenvaluesOnly);
+          rows.own[i] = solver.eigenvalues().maxCoeff() * model.node_inv_mass[i];
+          rows.coupling[i] = sums.coupling[i];
+        }
+      },
+      n < 4096);
   return rows;
 }
 

@@ -11,7 +11,6 @@
 
 #include "core/types.hpp"
 #include "model/mass_scaling.hpp"
-#include "model/spring_colouring.hpp"
 #include "model/wind_load.hpp"
 #include "scene/scene_description.hpp"
 
@@ -199,10 +198,10 @@ struct Model {
   std::vector<Index> face_offsets;  // (n_faces + 1)
   std::vector<Index> face_nodes;    // (sum of face sizes)
 
-  // The order the force loops visit each kind in (spring_colouring.hpp).
-  SpringColouring bar_colours;
-  SpringColouring bend_colours;
-  SpringColouring torsion_colours;
+  // Whether some spring of each kind can flow plastically (else its yield array is empty).
+  bool bars_yield = false;
+  bool bends_yield = false;
+  bool torsions_yield = false;
 
   std::vector<ModelObject> objects;
   Vec3 gravity = Vec3::Zero();  // m/s²

@@ -295,25 +295,19 @@ void add_axial_damping(const ObjectNodes& object, Model& model) {
   }
 }
 
-void colour_all_springs(Model& model) {
-  const Index n = model.node_count();
-  auto yields = [](const std::vector<double>& yield) {
-    return std::any_of(yield.begin(), yield.end(), [](double y) { return y != kNoYield; });
-  };
-  model.bar_colours = colour_springs(model.bar_nodes, 2, n);
-  model.bar_colours.any_yield = yields(model.bar_yield_force);
-  model.bend_colours = colour_springs(model.bend_nodes, 3, n);
-  model.bend_colours.any_yield = yields(model.bend_yield_moment);
-  model.torsion_colours = colour_springs(model.torsion_nodes, 4, n);
-  model.torsion_colours.any_yield = yields(model.torsion_yield_moment);
-  // An elastic kind keeps no yield limits (model.hpp).
-  for (auto [colours, yield] : {std::pair{&model.bar_colours, &model.bar_yield_force},
-                                std::pair{&model.bend_colours, &model.bend_yield_moment},
-                                std::pair{&model.torsion_colours, &model.torsion_yield_moment}}) {
-    if (!colours->any_yield) {
-      *yield = {};
+// Which kinds of spring can yield; an elastic kind keeps no yield limits (model.hpp).
+void note_yielding_kinds(Model& model) {
+  auto yields = [](std::vector<double>& yield) {
+    const bool any =
+        std::any_of(yield.begin(), yield.end(), [](double y) { return y != kNoYield; });
+    if (!any) {
+      yield = {};
     }
-  }
+    return any;
+  };
+  model.bars_yield = yields(model.bar_yield_force);
+  model.bends_yield = yields(model.bend_yield_moment);
+  model.torsions_yield = yields(model.torsion_yield_moment);
 }
 
 // Marks the bars that are an edge of some mesh face, found through each node's bars.
@@ -483,7 +477,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   add_wind(scene, model);
   add_ground(scene, model);
   add_object_contact(scene, model);
-  colour_all_springs(model);
+  note_yielding_kinds(model);
   release_spare_capacity(model);
   check_derived_quantities(model, scene);
   return model;

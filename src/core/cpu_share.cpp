@@ -1,0 +1,207 @@
+#include "core/cpu_share.hpp"
+
+#include <fmt/format.h>
+#include <sched.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace dinam {
+namespace {
+
+std::optional<std::string> read_text(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) {
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A whole number from 1 up that is the whole of `text` (surrounding blanks aside).
+std::optional<long long> positive_whole(std::string text) {
+  const auto first = text.find_first_not_of(" \t\n");
+  const auto last = text.find_last_not_of(" \t\n");
+  if (first == std::string::npos) {
+    return std::nullopt;
+  }
+  text = text.substr(first, last - first + 1);
+  long long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < 1) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+// v1: the quota over the period, where a quota is set (-1 is none).
+std::optional<double> cfs_quota(const std::filesystem::path& folder) {
+  const std::optional<std::string> quota = read_text(folder / "cpu.cfs_quota_us");
+  const std::optional<std::string> period = read_text(folder / "cpu.cfs_period_us");
+  if (!quota || !period) {
+    return std::nullopt;
+  }
+  const std::optional<long long> q = positive_whole(*quota);
+  const std::optional<long long> p = positive_whole(*period);
+  if (!q || !p) {
+    return std::nullopt;
+  }
+  return static_cast<double>(*q) / static_cast<double>(*p);
+}
+
+// The folders of a cgroup and of its parents up to the hierarchy's root, under `mount`.
+std::vector<std::filesystem::path> cgroup_and_parents(const std::filesystem::path& mount,
+                                                      const std::string& path) {
+  std::vector<std::filesystem::path> folders;
+  std::filesystem::path relative = std::filesystem::path(path).relative_path();
+  for (;;) {
+    folders.push_back(mount / relative);
+    if (relative.empty()) {
+      break;
+    }
+    relative = relative.parent_path();
+  }
+  return folders;
+}
+
+struct Quota {
+  std::optional<double> cpus;
+  std::string source;
+};
+
+void tighten(Quota& quota, std::optional<double> cpus, const std::filesystem::path& file) {
+  if (cpus && (!quota.cpus || *cpus < *quota.cpus)) {
+    quota.cpus = cpus;
+    quota.source = file.string();
+  }
+}
+
+// The tightest quota of the process's cgroups (v2, and v1's cpu controller).
+Quota read_quota(const std::filesystem::path& root, const std::filesystem::path& proc_cgroup) {
+  Quota quota;
+  const std::optional<std::string> listing = read_text(proc_cgroup);
+  if (!listing) {
+    return quota;
+  }
+  std::istringstream lines(*listing);
+  std::string line;
+  while (std::getline(lines, line)) {
+    // "hierarchy-id:controllers:path"; v2 is "0::path".
+    const auto first = line.find(':');
+    const auto second = line.find(':', first + 1);
+    if (first == std::string::npos || second == std::string::npos) {
+      continue;
+    }
+    const std::string controllers = line.substr(first + 1, second - first - 1);
+    const std::string path = line.substr(second + 1);
+    if (controllers.empty()) {
+      for (const std::filesystem::path& folder : cgroup_and_parents(root, path)) {
+        const std::optional<std::string> text = read_text(folder / "cpu.max");
+        tighten(quota, text ? cpu_max_quota(*text) : std::nullopt, folder / "cpu.max");
+      }
+      continue;
+    }
+    std::istringstream names(controllers);
+    std::string name;
+    bool cpu = false;
+    while (std::getline(names, name, ',')) {
+      cpu = cpu || name == "cpu";
+    }
+    if (!cpu) {
+      continue;
+    }
+    for (const char* mount : {"cpu,cpuacct", "cpu", "cpuacct,cpu"}) {
+      for (const std::filesystem::path& folder : cgroup_and_parents(root / mount, path)) {
+        tighten(quota, cfs_quota(folder), folder / "cpu.cfs_quota_us");
+      }
+    }
+  }
+  return quota;
+}
+
+}  // namespace
+
+std::optional<double> cpu_max_quota(const std::string& text) {
+  std::istringstream in(text);
+  std::string quota;
+  std::string period;
+  if (!(in >> quota >> period)) {
+    return std::nullopt;
+  }
+  const std::optional<long long> q = positive_whole(quota);
+  const std::optional<long long> p = positive_whole(period);
+  if (!q || !p) {
+    return std::nullopt;  // "max": no quota
+  }
+  return static_cast<double>(*q) / static_cast<double>(*p);
+}
+
+CpuShare read_cpu_share(const std::filesystem::path& cgroup_root,
+                        const std::filesystem::path& proc_cgroup) {
+  CpuShare share;
+  share.online_cpus = std::max(1, static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN)));
+  share.affinity_cpus = share.online_cpus;
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  if (sched_getaffinity(0, sizeof(mask), &mask) == 0) {
+    share.affinity_cpus = std::max(1, CPU_COUNT(&mask));
+  }
+  const Quota quota = read_quota(cgroup_root, proc_cgroup);
+  share.quota_cpus = quota.cpus;
+  share.quota_source = quota.source;
+  if (const char* slurm = std::getenv("SLURM_CPUS_PER_TASK")) {
+    if (const std::optional<long long> cpus = positive_whole(slurm)) {
+      share.slurm_cpus = static_cast<int>(std::min<long long>(*cpus, 1 << 20));
+    }
+  }
+  return share;
+}
+
+ThreadChoice choose_threads(const CpuShare& share, std::optional<int> requested,
+                            const char* dinam_threads) {
+  if (requested) {
+    return {std::max(1, *requested), fmt::format("--threads {}", *requested)};
+  }
+  if (dinam_threads != nullptr) {
+    const std::optional<long long> threads = positive_whole(dinam_threads);
+    if (!threads || *threads > 4096) {
+      throw_user_error({},
+                       "DINAM_THREADS is '{}', not a thread count; give a whole number from 1 "
+                       "to 4096 (e.g. DINAM_THREADS=2), or unset it to use the CPUs this process "
+                       "is given",
+                       dinam_threads);
+    }
+    return {static_cast<int>(*threads), fmt::format("DINAM_THREADS={}", *threads)};
+  }
+  int threads = share.affinity_cpus;
+  std::string reason = fmt::format("{} of the machine's {} CPUs in the affinity mask",
+                                   share.affinity_cpus, share.online_cpus);
+  if (share.quota_cpus) {
+    const int quota = std::max(1, static_cast<int>(std::ceil(*share.quota_cpus - 1e-9)));
+    reason +=
+        fmt::format("; a cgroup quota of {:.3g} CPUs ({})", *share.quota_cpus, share.quota_source);
+    threads = std::min(threads, quota);
+  } else {
+    reason += "; no cgroup CPU quota";
+  }
+  if (share.slurm_cpus) {
+    reason += fmt::format("; SLURM_CPUS_PER_TASK={}", *share.slurm_cpus);
+    threads = std::min(threads, *share.slurm_cpus);
+  }
+  return {std::max(1, threads), reason};
+}
+
+ThreadChoice choose_threads(std::optional<int> requested) {
+  return choose_threads(read_cpu_share(), requested, std::getenv("DINAM_THREADS"));
+}
+
+}  // namespace dinam

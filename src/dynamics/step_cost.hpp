@@ -1,0 +1,35 @@
+#pragma once
+// What a step of a model costs, estimated from what it holds (springs of each kind, nodes, faces
+// in the wind, contact primitives) and a cost per item of each force kind, measured once by the
+// benchmark (bench/force_costs.cpp, one thread) and kept here. The estimate does not depend on
+// how busy the machine is now, so the same scene gets the same answer on a quiet machine and on
+// a shared one (a test or a refusal can rest on it); it is the time on a machine like the one the
+// costs were measured on (docs/performance.md), which a faster or slower machine scales.
+#include <string>
+#include <vector>
+
+namespace dinam {
+
+struct Model;
+
+// One force kind's share of a step.
+struct StepCostPart {
+  std::string kind;  // "torsion springs", "integrator", …
+  double items = 0;  // springs, nodes, faces … that the kind loops over
+  double ns = 0.0;   // a step's time for them on one thread, ns
+};
+
+struct StepCost {
+  std::vector<StepCostPart> parts;
+  double serial_ns = 0.0;  // Σ parts: one thread
+  int threads = 1;         // the threads it was scaled to (1 where the model is too small)
+  double seconds = 0.0;    // a step on `threads` threads, s
+};
+
+// The cost of a step of `model` on `threads` threads. The spring, node and drag loops are split
+// between the threads where the model is large enough for that to pay (the step's own rule), at
+// the efficiency bench_threads measures on two idle cores; contact between objects is counted at
+// the cost of watching for it, which a scene whose objects press on many places exceeds.
+StepCost estimate_step_cost(const Model& model, int threads);
+
+}  // namespace dinam
