@@ -161,12 +161,15 @@ struct Row {
 template <class Add>
 double add_seconds(Loaded& loaded, const Add& add) {
   State state = loaded.state;  // a copy: plastic sets and anchors move on in it, not in `loaded`
-  const WorkSplit split = split_work(loaded.model, thread_count());
+  const WorkSplit* split = share_work(loaded.model, state);
   return seconds_per_call([&] {
     thread_team().run([&](const TeamMember& member) {
-      ForceContext context{loaded.model, state,   state.force,
-                           true,         nullptr, {member, thread_count() > 1 ? &split : nullptr}};
+      ForceContext context{loaded.model, state, state.force, true, nullptr, {member, split}};
       add(context);
+      // The plastic sets of shared springs that a step would commit after its meeting: dropped.
+      if (split != nullptr) {
+        state.plastic_set_updates[static_cast<std::size_t>(member.index())].clear();
+      }
     });
   });
 }

@@ -68,11 +68,10 @@ void spring_kernel(benchmark::State& bench) {
   const LargeFlag& flag = large_flag();
   State state = flag.state;
   set_thread_count(static_cast<int>(bench.range(0)));
-  const WorkSplit split = split_work(flag.model, thread_count());
+  const WorkSplit* split = share_work(flag.model, state);
   for (auto _ : bench) {
     thread_team().run([&](const TeamMember& member) {
-      ForceContext context{flag.model, state,   state.force,
-                           false,      nullptr, {member, thread_count() > 1 ? &split : nullptr}};
+      ForceContext context{flag.model, state, state.force, false, nullptr, {member, split}};
       AddForces(context);
     });
     benchmark::DoNotOptimize(state.force.data());

@@ -55,23 +55,6 @@ double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_whole, do
   return w * dt;
 }
 
-// The split of the work for this step: null when one thread does it all, else the state's split,
-// made again when the team's size has changed.
-const WorkSplit* work_split(const Model& model, State& state, bool alone) {
-  if (alone) {
-    return nullptr;
-  }
-  const int members = thread_team().size();
-  if (state.work_split.members != members) {
-    state.work_split = split_work(model, members);
-    state.plastic_set_updates.assign(static_cast<std::size_t>(members), {});
-    for (std::vector<PlasticSetUpdate>& updates : state.plastic_set_updates) {
-      updates.reserve(static_cast<std::size_t>(state.work_split.shared_springs));
-    }
-  }
-  return &state.work_split;
-}
-
 // Writes the plastic sets that one member put aside (spring_block.hpp), once every member has
 // read the old ones.
 void commit_plastic_set_updates(const TeamMember& member, State& state) {
@@ -235,7 +218,7 @@ void advance(const Worker& worker, const Model& model, double dt, State& state,
 void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
                     bool update_history) {
   const bool alone = !step_runs_in_parallel(model);
-  const WorkSplit* split = work_split(model, state, alone);
+  const WorkSplit* split = share_work(model, state);
   thread_team().run(
       [&](const TeamMember& member) {
         add_forces({member, split}, model, switches, state, update_history);
@@ -306,6 +289,21 @@ bool step_runs_in_parallel(const Model& model) {
   return thread_team().size() > 1 && worth_sharing(model);
 }
 
+const WorkSplit* share_work(const Model& model, State& state) {
+  if (!step_runs_in_parallel(model)) {
+    return nullptr;
+  }
+  const int members = thread_team().size();
+  if (state.work_split.members != members) {
+    state.work_split = split_work(model, members);
+    state.plastic_set_updates.assign(static_cast<std::size_t>(members), {});
+    for (std::vector<PlasticSetUpdate>& updates : state.plastic_set_updates) {
+      updates.reserve(static_cast<std::size_t>(state.work_split.shared_springs));
+    }
+  }
+  return &state.work_split;
+}
+
 void step(const Model& model, double dt, const ForceSwitches& switches, State& state) {
   advance_steps(model, dt, switches, state, 1);
 }
@@ -313,7 +311,7 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
 void advance_steps(const Model& model, double dt, const ForceSwitches& switches, State& state,
                    std::int64_t steps) {
   const bool alone = !step_runs_in_parallel(model);
-  const WorkSplit* split = work_split(model, state, alone);
+  const WorkSplit* split = share_work(model, state);
   std::atomic<bool> diverged{false};
   // Between two steps, once: the step count moves on.
   auto next_step = [&] {

@@ -46,6 +46,10 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
 bool worth_sharing(const Model& model);
 bool step_runs_in_parallel(const Model& model);
 
+// How the team shares the work on `state` (work_split.hpp), made for the team's size when it is
+// not yet; null when a step of the model runs on one thread.
+const WorkSplit* share_work(const Model& model, State& state);
+
 // Advances the state by `steps` steps of dt, bit for bit as that many calls of step() would, in
 // one job of the thread team (core/thread_team.hpp), whose threads then meet twice a step instead
 // of being woken and gathered for each. Throws as step() does, at the step that diverged.

@@ -107,6 +107,7 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
   const auto [own_first, own_end] =
       context.worker.own_nodes(static_cast<Index>(context.state.x.size()));
   auto owns = [own_first, own_end](Index node) { return node >= own_first && node < own_end; };
+  const bool whole = context.worker.split == nullptr;  // one thread evaluates every spring
   for_each_spring_chunk(
       context.worker, springs.share_runs, springs.count, kSpringBlockSize,
       [&](Index first, Index count) {
@@ -118,29 +119,47 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
           }
         }
         compute_spring_block(block, springs, first, count, kernel);
+        // The forces, each to a node of this worker's own.
         for (Index k = 0; k < count; ++k) {
           const Index s = first + k;
           // A torn spring is computed with the block, but it acts no more.
-          const bool acts = springs.broken == nullptr || springs.broken[s] == 0;
+          if (springs.broken != nullptr && springs.broken[s] != 0) {
+            continue;
+          }
           const Index* nodes = &springs.nodes[static_cast<std::size_t>(kNodes) * s];
-          bool all_own = true;
           for (int j = 0; j < kNodes; ++j) {
-            const bool own = owns(nodes[j]);
-            all_own = all_own && own;
-            if (acts && own) {
+            if (whole || owns(nodes[j])) {
               force[nodes[j]] += block.node_force(j, k);
             }
           }
-          if (may_yield && context.update_history && owns(nodes[0])) {
-            const double plastic_set = acts ? block.new_plastic_set[k] : springs.plastic_set[s];
+        }
+        if (!may_yield || !context.update_history) {
+          return;
+        }
+        // The history: on one thread in one plain loop; in a team, only for the springs whose
+        // first node is this worker's, put aside where another worker reads them too.
+        for (Index k = 0; k < count; ++k) {
+          const Index s = first + k;
+          const bool acts = springs.broken == nullptr || springs.broken[s] == 0;
+          const double plastic_set = acts ? block.new_plastic_set[k] : springs.plastic_set[s];
+          const Index* nodes = &springs.nodes[static_cast<std::size_t>(kNodes) * s];
+          if (whole) {
+            springs.plastic_set[s] = plastic_set;
+          } else if (owns(nodes[0])) {
+            bool all_own = true;
+            for (int j = 1; j < kNodes; ++j) {
+              all_own = all_own && owns(nodes[j]);
+            }
             if (all_own) {
               springs.plastic_set[s] = plastic_set;
             } else {
               context.put_aside(&springs.plastic_set[s], plastic_set);
             }
-            if (springs.flow != nullptr) {
-              (*springs.flow)[s] = acts ? block.dissipated[k] : 0.0;
-            }
+          } else {
+            continue;
+          }
+          if (springs.flow != nullptr) {
+            (*springs.flow)[s] = acts ? block.dissipated[k] : 0.0;
           }
         }
       });

@@ -13,12 +13,12 @@ namespace {
 // springs"). Measure again and update them when a kernel changes: nothing else depends on them
 // but the estimates that `info` prints and `render` and `simulate` refuse long runs on.
 struct ItemCosts {
-  double axial = 5.7;           // a bar's elastic axial spring
-  double axial_yielding = 7.1;  // … of a kind that can yield
-  double bending = 15.9;        // a bending spring
-  double bending_yielding = 18.7;
-  double torsion = 26.0;  // a torsion spring
-  double torsion_yielding = 28.2;
+  double axial = 5.5;           // a bar's elastic axial spring
+  double axial_yielding = 6.6;  // … of a kind that can yield
+  double bending = 14.5;        // a bending spring
+  double bending_yielding = 18.2;
+  double torsion = 23.2;  // a torsion spring
+  double torsion_yielding = 25.0;
   double clamp = 20.0;          // a clamp: a bending spring on one side, serial
   double damper = 5.3;          // a bar's axial damper
   double node = 5.4;            // gravity, clearing and the integrator, per node
