@@ -104,7 +104,7 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
       (model.bars_yield ? static_cast<std::uint64_t>(model.bar_count()) : 0) +
       (model.bends_yield ? static_cast<std::uint64_t>(model.bend_count()) : 0) +
       (model.torsions_yield ? static_cast<std::uint64_t>(model.torsion_count()) : 0);
-  std::uint64_t bytes = nodes * 3 * sizeof(Vec3);  // x, v_half, force
+  std::uint64_t bytes = nodes * 5 * sizeof(Vec3);  // x, v_half, force, x_next, v_next
   bytes += yielding * sizeof(double) * (energy ? 2 : 1);
   // The split of the work between the threads (work_split.hpp): an owner and a list entry a
   // node, a list entry a spring (a few more for springs at the borders).
@@ -121,7 +121,7 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
     bytes += nodes * (sizeof(Vec3) + 2 * sizeof(std::uint8_t));  // anchors, touching, sliding
   }
   if (energy) {
-    bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_previous
+    bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_whole
   }
   if (model.can_tear()) {  // a broken flag per bar, spring and face, and the list of bars
     const auto springs = static_cast<std::uint64_t>(model.bar_count()) +

@@ -55,18 +55,15 @@ double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_whole, do
   return w * dt;
 }
 
-// Writes the plastic sets that one member put aside (spring_block.hpp), once every member has
-// read the old ones.
-void commit_plastic_set_updates(const TeamMember& member, State& state) {
-  if (state.plastic_set_updates.empty()) {
-    return;
+// Writes the plastic sets of shared springs that the workers put aside (spring_block.hpp), once
+// every worker has read the old ones.
+void write_plastic_sets_put_aside(State& state) {
+  for (std::vector<PlasticSetUpdate>& updates : state.plastic_set_updates) {
+    for (const PlasticSetUpdate& update : updates) {
+      *update.slot = update.value;
+    }
+    updates.clear();
   }
-  std::vector<PlasticSetUpdate>& updates =
-      state.plastic_set_updates[static_cast<std::size_t>(member.index())];
-  for (const PlasticSetUpdate& update : updates) {
-    *update.slot = update.value;
-  }
-  updates.clear();
 }
 
 // The forces at (x_n, v_{n−½}, t_n) into state.force, but for contact between objects, by one
@@ -162,24 +159,19 @@ void book_plastic_flow(State& state) {
 }
 
 // The integrator's half of a step, by one worker: velocities to n + ½, the energy at t_n while it
-// is tracked, positions to n + 1. Sets `diverged` where a free node's position or velocity has
-// stopped being finite.
+// is tracked, positions to n + 1, into state.v_next and state.x_next (its own nodes); the step's
+// end swaps them in. Sets `diverged` where a free node's position or velocity is not finite.
 void advance(const Worker& worker, const Model& model, double dt, State& state,
              std::atomic<bool>& diverged) {
   EnergyWorkspace& ledger = state.energy_workspace;
   const TeamMember& member = worker.member;
   const Index n = model.node_count();
-  // 0. The plastic sets of springs shared with another worker, which has read them by now.
-  commit_plastic_set_updates(member, state);
   // 1. Velocities to n + ½. Pinned nodes have zero inverse mass and zero velocity.
   for_each_own_node(worker, n, [&](Index i) {
-    if (ledger.enabled) {
-      ledger.v_previous[i] = state.v_half[i];
-    }
-    state.v_half[i] += (dt * model.node_inv_mass[i]) * state.force[i];
+    state.v_next[i] = state.v_half[i] + (dt * model.node_inv_mass[i]) * state.force[i];
   });
   // 2. Pinned nodes that follow a path take the velocity that brings them onto it at t_{n+1}.
-  set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state,
+  set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state.x, state.v_next,
                         [&](Index i) { return worker.owns(i); });
   // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
   //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
@@ -188,29 +180,41 @@ void advance(const Worker& worker, const Model& model, double dt, State& state,
     on_leader(member, [&] {
       book_plastic_flow(state);
       for (Index i = 0; i < n; ++i) {
-        ledger.v_previous[i] = 0.5 * (ledger.v_previous[i] + state.v_half[i]);
+        ledger.v_whole[i] = 0.5 * (state.v_half[i] + state.v_next[i]);
       }
-      const std::vector<Vec3>& v_whole = ledger.v_previous;
       EnergyAccounts step_work;
-      step_work.damping_work = work(ledger.damping, v_whole, dt);
-      step_work.contact_damping_work = work(ledger.contact_damping, v_whole, dt);
-      step_work.friction_work = work(ledger.friction, v_whole, dt);
-      step_work.wind_work = work(ledger.wind, v_whole, dt);
-      step_work.field_work = work(ledger.field, v_whole, dt);
+      step_work.damping_work = work(ledger.damping, ledger.v_whole, dt);
+      step_work.contact_damping_work = work(ledger.contact_damping, ledger.v_whole, dt);
+      step_work.friction_work = work(ledger.friction, ledger.v_whole, dt);
+      step_work.wind_work = work(ledger.wind, ledger.v_whole, dt);
+      step_work.field_work = work(ledger.field, ledger.v_whole, dt);
       state.energy.add_works(step_work, 0.5);
-      ledger.last = energy_report(model, state, v_whole);
+      ledger.last = energy_report(model, state, ledger.v_whole);
       state.energy.add_works(step_work, 0.5);
     });
   }
-  // 4. Positions to n + 1, checked on the way.
+  // 4. Positions to n + 1, checked on the way. (Pinned nodes are skipped: they cannot diverge by
+  //    themselves, only through 0 × ∞ once a neighbour's force has overflowed.)
   bool any = false;
   for_each_own_node(worker, n, [&](Index i) {
-    state.x[i] += dt * state.v_half[i];
-    any = diverged_at(model, state, i) || any;
+    state.x_next[i] = state.x[i] + dt * state.v_next[i];
+    any =
+        (!model.pinned(i) && !(state.x_next[i].allFinite() && state.v_next[i].allFinite())) || any;
   });
   if (any) {
     diverged.store(true, std::memory_order_relaxed);
   }
+}
+
+// Between two steps, once, with every worker waiting: the plastic sets put aside are written
+// (every worker has read the old ones), the new positions and velocities swapped in, the step
+// counted.
+void end_step(State& state, double dt) {
+  write_plastic_sets_put_aside(state);
+  std::swap(state.x, state.x_next);
+  std::swap(state.v_half, state.v_next);
+  state.step += 1;
+  state.time = static_cast<double>(state.step) * dt;
 }
 
 }  // namespace
@@ -222,10 +226,9 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   thread_team().run(
       [&](const TeamMember& member) {
         add_forces({member, split}, model, switches, state, update_history);
-        member.barrier();
-        commit_plastic_set_updates(member, state);
       },
       alone);
+  write_plastic_sets_put_aside(state);
   add_contact_forces(model, switches, state, update_history);
   if (update_history) {
     book_plastic_flow(state);
@@ -239,6 +242,8 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   state.x = model.node_initial_x;
   state.v_half = model.node_initial_v;
   state.force.assign(n, Vec3::Zero());
+  state.x_next.assign(n, Vec3::Zero());
+  state.v_next.assign(n, Vec3::Zero());
   // Plastic sets only for the kinds that can yield (model.hpp).
   state.bar_plastic_set.assign(model.bars_yield ? model.bar_count() : 0, 0.0);
   state.bend_plastic_set.assign(model.bends_yield ? model.bend_count() : 0, 0.0);
@@ -263,7 +268,7 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
     for (std::vector<Vec3>* part : ledger.force_parts()) {
       part->assign(n, Vec3::Zero());
     }
-    ledger.v_previous.assign(n, Vec3::Zero());
+    ledger.v_whole.assign(n, Vec3::Zero());
     // The flow's work of each spring of the kinds that can yield.
     ledger.bar_flow.assign(model.bars_yield ? model.bar_count() : 0, 0.0);
     ledger.bend_flow.assign(model.bends_yield ? model.bend_count() : 0, 0.0);
@@ -313,11 +318,10 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
   const bool alone = !step_runs_in_parallel(model);
   const WorkSplit* split = share_work(model, state);
   std::atomic<bool> diverged{false};
-  // Between two steps, once: the step count moves on.
-  auto next_step = [&] {
-    state.step += 1;
-    state.time = static_cast<double>(state.step) * dt;
-  };
+  if (state.x_next.size() != state.x.size()) {  // a state not made by initial_state
+    state.x_next.resize(state.x.size());
+    state.v_next.resize(state.x.size());
+  }
   if (switches.object_contact && model.contact.enabled) {
     // Contact between objects searches for its pairs between two jobs of the team.
     for (std::int64_t s = 0; s < steps && !diverged.load(std::memory_order_relaxed); ++s) {
@@ -336,13 +340,13 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
             advance({member, split}, model, dt, state, diverged);
           },
           alone);
-      next_step();
+      end_step(state, dt);
     }
   } else {
-    // One job of the team for all the steps: each worker computes its own nodes' forces and
-    // moves them on, so the threads meet twice a step, once every worker has read the positions
-    // and velocities its springs and dampers need and once every node has moved (and after the
-    // wind's drag, and around what the leader does alone).
+    // One job of the team for all the steps: each worker computes its own nodes' forces from
+    // x_n and v_{n−½} and writes their x_{n+1} and v_{n+½} beside them, so the threads meet
+    // once a step, where the new positions are swapped in (and after the wind's drag, and
+    // around what the leader does alone).
     thread_team().run(
         [&](const TeamMember& member) {
           const Worker worker{member, split};
@@ -353,10 +357,9 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
             }
             // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
             add_forces(worker, model, switches, state, true);
-            member.barrier();
             // 2. Velocities to n + ½, positions to n + 1.
             advance(worker, model, dt, state, diverged);
-            member.barrier(next_step);
+            member.barrier([&] { end_step(state, dt); });
             if (diverged.load(std::memory_order_relaxed)) {
               break;  // every member sees it here, after the barrier
             }

@@ -51,7 +51,7 @@ bool step_runs_in_parallel(const Model& model);
 const WorkSplit* share_work(const Model& model, State& state);
 
 // Advances the state by `steps` steps of dt, bit for bit as that many calls of step() would, in
-// one job of the thread team (core/thread_team.hpp), whose threads then meet twice a step instead
+// one job of the thread team (core/thread_team.hpp), whose threads then meet once a step instead
 // of being woken and gathered for each. Throws as step() does, at the step that diverged.
 void advance_steps(const Model& model, double dt, const ForceSwitches& switches, State& state,
                    std::int64_t steps);

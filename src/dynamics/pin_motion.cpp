@@ -13,13 +13,13 @@ void place_driven_nodes(const Model& model, double t, State& state) {
   }
 }
 
-void set_driven_velocities(const Model& model, double t_next, double dt, State& state,
-                           const std::function<bool(Index)>& owns) {
+void set_driven_velocities(const Model& model, double t_next, double dt, const std::vector<Vec3>& x,
+                           std::vector<Vec3>& v_half, const std::function<bool(Index)>& owns) {
   for (const PinMotion& motion : model.pin_motions) {
     const Vec3 offset = motion.profile(t_next) * motion.displacement;
     for (const Index node : motion.nodes) {
       if (!owns || owns(node)) {
-        state.v_half[node] = (model.node_initial_x[node] + offset - state.x[node]) / dt;
+        v_half[node] = (model.node_initial_x[node] + offset - x[node]) / dt;
       }
     }
   }

@@ -14,9 +14,10 @@ struct Model;
 // Where the driven nodes are at time t.
 void place_driven_nodes(const Model& model, double t, State& state);
 
-// v_{n+½} of every driven node, so that x_{n+1} = x_n + Δt v_{n+½} lands on the path at t_{n+1};
-// with `owns`, only of the nodes for which it is true (a worker's own, parallel_loops.hpp).
-void set_driven_velocities(const Model& model, double t_next, double dt, State& state,
-                           const std::function<bool(Index)>& owns = {});
+// v_{n+½} of every driven node into `v_half`, so that x_{n+1} = x_n + Δt v_{n+½} lands on the
+// path at t_{n+1}, from the positions x_n; with `owns`, only of the nodes for which it is true (a
+// worker's own, parallel_loops.hpp).
+void set_driven_velocities(const Model& model, double t_next, double dt, const std::vector<Vec3>& x,
+                           std::vector<Vec3>& v_half, const std::function<bool(Index)>& owns = {});
 
 }  // namespace dinam

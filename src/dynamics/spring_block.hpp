@@ -98,7 +98,7 @@ void compute_spring_block(SpringBlock<kNodes>& block, const SpringArrays& spring
 // each spring's dissipation) of the springs whose first node it owns, when the context advances
 // history. A spring that another worker evaluates too has its new plastic set put aside
 // (State::plastic_set_updates) until every worker has read the old one: the worker that owns it
-// commits it after the team has met (commit_plastic_set_updates).
+// writes it at the step's end, when the team has met (integrator.cpp).
 template <int kNodes, class Kernel>
 void add_spring_forces(ForceContext& context, const SpringArrays& springs, const Kernel& kernel) {
   const bool may_yield = springs.any_yield;

@@ -53,7 +53,7 @@ struct EnergyWorkspace {
   std::vector<Vec3> friction;         // (n_nodes) N
   std::vector<Vec3> wind;             // (n_nodes) N
   std::vector<Vec3> field;            // (n_nodes) N
-  std::vector<Vec3> v_previous;       // (n_nodes) m/s, v_{n−½} during a step
+  std::vector<Vec3> v_whole;          // (n_nodes) m/s, ½ (v_{n−½} + v_{n+½}) of the last step
   // The work each spring's plastic flow dissipated in the last step, J, for the kinds that can
   // yield (empty for the others), booked in spring order after the step whatever the threads.
   std::vector<double> bar_flow;      // (n_bars)
@@ -98,6 +98,10 @@ struct State {
   std::vector<Vec3> x;       // (n_nodes) m, x_n
   std::vector<Vec3> v_half;  // (n_nodes) m/s, v_{n−½}
   std::vector<Vec3> force;   // (n_nodes) N, scratch: the total force at t_n on each node
+  // (n_nodes) scratch: x_{n+1} and v_{n+½} as a step writes them, swapped with x and v_half once
+  // every thread has read the old ones (so the threads meet once a step, not twice).
+  std::vector<Vec3> x_next;
+  std::vector<Vec3> v_next;
 
   std::vector<double> bar_plastic_set;      // (n_bars) m
   std::vector<double> bend_plastic_set;     // (n_bends) rad
