@@ -71,17 +71,24 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
+// Positions, velocities, every plastic set and every energy account, bit for bit.
+void expect_same_state(const State& a, const State& b) {
+  EXPECT_TRUE(same_bits(a.x, b.x));
+  EXPECT_TRUE(same_bits(a.v_half, b.v_half));
+  EXPECT_TRUE(same_bits(a.bar_plastic_set, b.bar_plastic_set));
+  EXPECT_TRUE(same_bits(a.bend_plastic_set, b.bend_plastic_set));
+  EXPECT_TRUE(same_bits(a.torsion_plastic_set, b.torsion_plastic_set));
+  EXPECT_TRUE(same_bits(a.clamp_plastic_set, b.clamp_plastic_set));
+  EXPECT_EQ(a.energy_workspace.last.total, b.energy_workspace.last.total);
+  EXPECT_EQ(a.energy.wind_work, b.energy.wind_work);
+  EXPECT_EQ(a.energy.field_work, b.energy.field_work);
+  EXPECT_EQ(a.energy.plastic_dissipation, b.energy.plastic_dissipation);
+}
+
 TEST(Threads, OneAndTwoThreadsGiveTheSameStateBitForBit) {
   const State one = run_cloth(1, 60);
   const State two = run_cloth(2, 60);
-  EXPECT_TRUE(same_bits(one.x, two.x));
-  EXPECT_TRUE(same_bits(one.v_half, two.v_half));
-  EXPECT_TRUE(same_bits(one.bar_plastic_set, two.bar_plastic_set));
-  EXPECT_TRUE(same_bits(one.bend_plastic_set, two.bend_plastic_set));
-  EXPECT_TRUE(same_bits(one.torsion_plastic_set, two.torsion_plastic_set));
-  EXPECT_EQ(one.energy_workspace.last.total, two.energy_workspace.last.total);
-  EXPECT_EQ(one.energy.wind_work, two.energy.wind_work);
-  EXPECT_EQ(one.energy.plastic_dissipation, two.energy.plastic_dissipation);
+  expect_same_state(one, two);
   // It did something: it moved, some springs flowed, the wind worked and the ground held.
   EXPECT_GT(one.energy.plastic_dissipation, 0.0);
   EXPECT_NE(one.energy.wind_work, 0.0);
@@ -134,15 +141,7 @@ objects:
 TEST(Threads, ClampsFieldsShakenSupportsAndTorsionAreTheSameOnThreeThreads) {
   const State one = run_clamped_lattice(1, 80);
   const State three = run_clamped_lattice(3, 80);
-  EXPECT_TRUE(same_bits(one.x, three.x));
-  EXPECT_TRUE(same_bits(one.v_half, three.v_half));
-  EXPECT_TRUE(same_bits(one.bar_plastic_set, three.bar_plastic_set));
-  EXPECT_TRUE(same_bits(one.bend_plastic_set, three.bend_plastic_set));
-  EXPECT_TRUE(same_bits(one.torsion_plastic_set, three.torsion_plastic_set));
-  EXPECT_TRUE(same_bits(one.clamp_plastic_set, three.clamp_plastic_set));
-  EXPECT_EQ(one.energy_workspace.last.total, three.energy_workspace.last.total);
-  EXPECT_EQ(one.energy.plastic_dissipation, three.energy.plastic_dissipation);
-  EXPECT_EQ(one.energy.field_work, three.energy.field_work);
+  expect_same_state(one, three);
   // It did something: the shaken, pushed lattice yielded and the field worked on it.
   EXPECT_GT(one.energy.plastic_dissipation, 0.0);
   EXPECT_NE(one.energy.field_work, 0.0);
