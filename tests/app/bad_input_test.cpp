@@ -156,6 +156,26 @@ TEST(BadSceneCorpus, HoldsAtLeastFortyCases) {
   EXPECT_GE(corpus_scenes().size(), 40u);
 }
 
+// A thread count that is not one: DINAM_THREADS named with the fix, --threads out of range; exit 2.
+TEST(BadThreads, AThreadCountThatIsNotOneIsRefusedWithTheFix) {
+  const std::string scene = std::string(DINAM_SOURCE_DIR) + "/scenes/rope.yaml";
+  const test::CommandResult variable = test::run_command(
+      "DINAM_THREADS=two '" + std::string(DINAM_PROGRAM) + "' info '" + scene + "'");
+  EXPECT_EQ(variable.exit_code, 2) << variable.output;
+  EXPECT_NE(variable.output.find("DINAM_THREADS is 'two'"), std::string::npos) << variable.output;
+  EXPECT_NE(variable.output.find("DINAM_THREADS=2"), std::string::npos) << variable.output;
+  const test::CommandResult option =
+      test::run_command("'" + std::string(DINAM_PROGRAM) + "' info '" + scene + "' --threads 0");
+  EXPECT_EQ(option.exit_code, 2) << option.output;
+  EXPECT_NE(option.output.find("--threads"), std::string::npos) << option.output;
+  // And a good one is said, with its reason.
+  const test::CommandResult good = test::run_command(
+      "DINAM_THREADS=3 '" + std::string(DINAM_PROGRAM) + "' info '" + scene + "'");
+  EXPECT_EQ(good.exit_code, 0) << good.output;
+  EXPECT_NE(good.output.find("threads          3 (DINAM_THREADS=3)"), std::string::npos)
+      << good.output;
+}
+
 // ---------------------------------------------------------------------------------------------
 // File system conditions.
 
