@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -180,6 +181,9 @@ int run(int argc, char** argv) {
   try {
     const ThreadChoice thread_choice = choose_threads(threads);
     set_thread_count(thread_choice.threads);
+    // OSMesa's llvmpipe draws on as many threads as the machine has CPUs unless told otherwise:
+    // the same share as the simulation's, unless the user has set it.
+    setenv("LP_NUM_THREADS", std::to_string(thread_choice.threads).c_str(), 0);
     if (*render_command) {
       if (!output.empty()) {
         render.output = output;
