@@ -71,6 +71,20 @@ inline void expect_user_error(const std::function<void()>& action, int line,
   ADD_FAILURE() << "expected a UserError";
 }
 
+// The names in `folder` that are temporary files of dinam's (core/output_file.hpp makes them
+// NAME.tmp.RANDOM, the movie NAME.part.RANDOM): none may be left after a run, finished or not.
+inline std::vector<std::string> temporary_files_in(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.find(".tmp") != std::string::npos || name.find(".part") != std::string::npos) {
+      names.push_back(name);
+    }
+  }
+  return names;
+}
+
 struct CommandResult {
   int exit_code = -1;
   std::string output;  // stdout and stderr together

@@ -77,6 +77,10 @@ const char* movie_format_name(MovieFormat format) {
   return "none";
 }
 
+std::string movie_file_name(const std::string& name, MovieFormat format) {
+  return name + (format == MovieFormat::kGif ? ".gif" : ".mp4");
+}
+
 Interrupted::Interrupted(int signal, const std::string& outcome)
     : std::runtime_error(fmt::format(
           "stopped by {}: {}",

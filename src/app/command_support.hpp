@@ -26,6 +26,8 @@ void create_folder(const std::filesystem::path& folder);
 // "mp4", "gif" or "none" (the --movie option); throws UserError otherwise.
 MovieFormat parse_movie_format(const std::string& text);
 const char* movie_format_name(MovieFormat format);
+// The movie's file name: NAME.mp4 or NAME.gif (not for kNone).
+std::string movie_file_name(const std::string& name, MovieFormat format);
 
 // Thrown between frames after SIGINT or SIGTERM, so that the command unwinds and its destructors
 // remove what it had not finished (a temporary cache folder, a partial movie, ffmpeg itself).

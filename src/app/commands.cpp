@@ -21,6 +21,7 @@
 #include "app/run_estimate.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "io/movie_encoder.hpp"
@@ -101,6 +102,18 @@ int run_render(const RenderOptions& options) {
   std::vector<Image> textures = read_textures(scene);
   const std::filesystem::path folder = options.output.value_or(scene.output);
   create_folder(folder);
+  // Every name the run will write, refused now if one is a link or a special file, rather than
+  // after minutes of simulation (core/output_file.hpp checks each again as it is written).
+  for (int frame = range.first; frame <= range.last; ++frame) {
+    check_output_name(folder / frame_file_name(frame, scene.frame_count()));
+  }
+  check_output_name(folder / kFrameFolderInfoName);
+  if (options.energy_csv) {
+    check_output_name(folder / "energy.csv");
+  }
+  if (scene.movie != MovieFormat::kNone) {
+    check_output_name(folder / movie_file_name(scene.name, scene.movie));
+  }
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
 
@@ -146,9 +159,9 @@ int run_render(const RenderOptions& options) {
   std::filesystem::path movie_path;
   if (scene.movie != MovieFormat::kNone) {
     const bool gif = scene.movie == MovieFormat::kGif;
-    movie_path = folder / (scene.name + (gif ? ".gif" : ".mp4"));
-    movie =
-        MovieEncoder::start({scene.image_width, scene.image_height, scene.fps, movie_path, gif});
+    movie_path = folder / movie_file_name(scene.name, scene.movie);
+    movie = MovieEncoder::start(
+        {scene.image_width, scene.image_height, scene.fps, movie_path, gif, stop_if_asked});
     if (!movie) {
       fmt::print(stderr,
                  "dinam: ffmpeg was not found, so no movie will be made; the frames will be in "
@@ -181,13 +194,14 @@ int run_render(const RenderOptions& options) {
                                     "movie was made",
                                     writer.frames_written(), range.count(), folder.string()));
     } catch (const RuntimeError& e) {
-      // A frame that could not be written (a full disk): say what is left, as for a stop.
+      // A frame that could not be written (a full disk), a run that diverged, an ffmpeg that
+      // stalled: say what is left, as for a stop.
       progress.finish();
-      throw RuntimeError(
-          fmt::format("{}; {} of the {} frames were written to {} and are kept, "
-                      "no movie was made. Free some space there or render to "
-                      "another folder (-o)",
-                      e.what(), writer.frames_written(), range.count(), folder.string()));
+      const bool write_failed = dynamic_cast<const WriteError*>(&e) != nullptr;
+      throw RuntimeError(fmt::format(
+          "{}; {} of the {} frames were written to {} and are kept, no movie was made{}", e.what(),
+          writer.frames_written(), range.count(), folder.string(),
+          write_failed ? ". Free some space there or render to another folder (-o)" : ""));
     }
   }
   progress.finish();

@@ -1,10 +1,10 @@
 #pragma once
-// The energy accounts as CSV, one row per frame, written beside the frames under a temporary
-// name and renamed when the run completes.
+// The energy accounts as CSV, one row per frame, written beside the frames under a new temporary
+// name and renamed when the run completes (core/output_file.hpp).
 #include <array>
-#include <cstdio>
 #include <filesystem>
 
+#include "core/output_file.hpp"
 #include "dynamics/state.hpp"
 
 namespace dinam {
@@ -28,18 +28,15 @@ std::array<double, kEnergyColumns.size()> energy_row(const EnergyReport& report)
 
 class EnergyCsv {
  public:
-  explicit EnergyCsv(std::filesystem::path path);  // writes the header; throws RuntimeError
-  ~EnergyCsv();                                    // an unclosed file is removed
-  EnergyCsv(const EnergyCsv&) = delete;
-  EnergyCsv& operator=(const EnergyCsv&) = delete;
+  // Writes the header; throws RuntimeError, or UserError for a final name that is a link. An
+  // unclosed file is removed when the EnergyCsv goes.
+  explicit EnergyCsv(const std::filesystem::path& path);
 
   void write(const EnergyReport& report);
   void close();  // flushes and renames to the final name
 
  private:
-  std::filesystem::path path_;
-  std::filesystem::path temporary_;
-  std::FILE* file_ = nullptr;
+  OutputFile file_;
 };
 
 }  // namespace dinam

@@ -13,12 +13,12 @@
 
 #include "app/command_support.hpp"
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 
 namespace dinam {
 namespace {
 
 using Json = nlohmann::ordered_json;
-constexpr const char* kInfoName = "frames.json";
 
 }  // namespace
 
@@ -34,30 +34,17 @@ void write_frame_folder_info(const std::filesystem::path& folder, const FrameFol
   const Json json = {
       {"name", info.name},   {"fps", info.fps},       {"frame_count", info.frame_count},
       {"width", info.width}, {"height", info.height}, {"movie", movie_format_name(info.movie)}};
-  const std::filesystem::path path = folder / kInfoName;
-  std::filesystem::path temporary = path;
-  temporary += fmt::format(".tmp-{}", getpid());
-  std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-  out << json.dump(1) << '\n';
-  out.close();
-  std::error_code ec;
-  if (out) {
-    std::filesystem::rename(temporary, path, ec);
-  }
-  if (!out || ec) {
-    std::filesystem::remove(temporary, ec);
-    throw RuntimeError(fmt::format("cannot write {}: {}", path.string(), std::strerror(errno)));
-  }
+  write_output_file(folder / kFrameFolderInfoName, json.dump(1) + '\n', "the frame folder's info");
 }
 
 FrameFolderInfo read_frame_folder_info(const std::filesystem::path& folder) {
-  const std::filesystem::path path = folder / kInfoName;
+  const std::filesystem::path path = folder / kFrameFolderInfoName;
   const FileLoc loc{path.string()};
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw UserError(loc, fmt::format("no {} here: {} holds no frames drawn by 'dinam render' "
                                      "(it writes this file beside them)",
-                                     kInfoName, folder.string()));
+                                     kFrameFolderInfoName, folder.string()));
   }
   try {
     const Json json = Json::parse(in);

@@ -24,6 +24,8 @@ struct FrameFolderInfo {
 int frame_number_digits(int frame_count);
 std::string frame_file_name(int frame, int frame_count);
 
+inline constexpr const char* kFrameFolderInfoName = "frames.json";
+
 // Writes DIR/frames.json under a temporary name, then renames it, so that chunks rendered at once
 // into one folder each leave a whole file. Throws RuntimeError when it cannot.
 void write_frame_folder_info(const std::filesystem::path& folder, const FrameFolderInfo& info);

@@ -46,11 +46,11 @@ int run_movie(const MovieOptions& options) {
   }
 
   const bool gif = format == MovieFormat::kGif;
-  const std::filesystem::path movie_path = options.folder / (info.name + (gif ? ".gif" : ".mp4"));
+  const std::filesystem::path movie_path = options.folder / movie_file_name(info.name, format);
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
   std::unique_ptr<MovieEncoder> movie =
-      MovieEncoder::start({info.width, info.height, info.fps, movie_path, gif});
+      MovieEncoder::start({info.width, info.height, info.fps, movie_path, gif, stop_if_asked});
   if (!movie) {
     throw RuntimeError(
         "ffmpeg was not found, so no movie can be made. Install it with: sudo "

@@ -132,10 +132,12 @@ int run_simulate(const SimulateOptions& options) {
   } catch (const Interrupted&) {
     throw;
   } catch (const RuntimeError& e) {
-    throw RuntimeError(
-        fmt::format("{}; no cache was written ({} is as it was). Free some space "
-                    "there or write the cache elsewhere (-o)",
-                    e.what(), request.folder.string()));
+    const bool write_failed = dynamic_cast<const WriteError*>(&e) != nullptr;
+    throw RuntimeError(fmt::format("{}; no cache was written ({} is as it was){}", e.what(),
+                                   request.folder.string(),
+                                   write_failed ? ". Free some space there or write the cache "
+                                                  "elsewhere (-o)"
+                                                : ""));
   }
   if (!options.quiet) {
     if (const std::string line = settle_summary(settled, timestep.dt); !line.empty()) {

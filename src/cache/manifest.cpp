@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 
 namespace dinam {
 namespace {
@@ -114,13 +115,7 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
     }
     json["energy"] = std::move(energy);
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << json.dump(1) << '\n';
-  out.close();
-  if (!out) {
-    throw RuntimeError(
-        fmt::format("cannot write the manifest {}: {}", path.string(), std::strerror(errno)));
-  }
+  write_output_file(path, json.dump(1) + '\n', "the manifest");
 }
 
 CacheManifest read_manifest(const std::filesystem::path& path) {

@@ -16,6 +16,7 @@
 
 #include "cache/obj_file.hpp"
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 #include "core/subject_box.hpp"
 #include "core/version.hpp"
 #include "model/model.hpp"
@@ -51,11 +52,12 @@ std::string temporary_prefix(const std::filesystem::path& folder) {
 // A cache the writer may replace: a folder holding a manifest, or an empty folder.
 void check_replaceable(const std::filesystem::path& folder) {
   std::error_code ec;
+  if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec)) {
+    throw_user_error({}, "the cache folder {} is a file; give -o a folder name", folder.string());
+  }
+  check_output_folder_name(folder);  // never written or replaced through a link
   if (!std::filesystem::exists(folder, ec)) {
     return;
-  }
-  if (!std::filesystem::is_directory(folder, ec)) {
-    throw_user_error({}, "the cache folder {} is a file; give -o a folder name", folder.string());
   }
   if (std::filesystem::is_regular_file(folder / kManifestName, ec) ||
       std::filesystem::is_empty(folder, ec)) {
@@ -253,6 +255,7 @@ void MotionCacheWriter::commit(CacheManifest manifest) {
   manifest.objects = entries_;
   manifest.frame_bounds = frame_bounds_;
   write_manifest(temporary_ / kManifestName, manifest);
+  check_output_folder_name(request_.folder);  // made a link while the run went? refuse it still
   move_into_place(temporary_, request_.folder);
   committed_ = true;
 }

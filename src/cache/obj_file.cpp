@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 #include "core/version.hpp"
 #include "model/model.hpp"
 
@@ -61,13 +62,7 @@ void write_obj(const std::filesystem::path& path, const RestMesh& mesh) {
   for (const auto& [a, b] : mesh.lines) {
     fmt::format_to(std::back_inserter(text), "l {} {}\n", a + 1, b + 1);
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) {
-    throw RuntimeError(
-        fmt::format("cannot write the rest mesh {}: {}", path.string(), std::strerror(errno)));
-  }
+  write_output_file(path, std::string_view(text.data(), text.size()), "the rest mesh");
 }
 
 }  // namespace dinam

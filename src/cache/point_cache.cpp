@@ -117,8 +117,8 @@ void PointCacheWriter::close() {
 
 void PointCacheWriter::check_stream(const char* doing) {
   if (!out_) {
-    throw RuntimeError(fmt::format("cannot {} the point cache {}: {}", doing, path_.string(),
-                                   std::strerror(errno)));
+    throw WriteError(fmt::format("cannot {} the point cache {}: {}", doing, path_.string(),
+                                 std::strerror(errno)));
   }
 }
 
@@ -184,6 +184,14 @@ void read_point_cache_sample(std::ifstream& in, const std::filesystem::path& pat
   for (std::int32_t i = 0; i < header.point_count; ++i) {
     for (int c = 0; c < 3; ++c) {
       points[i][c] = get_float(&bytes[12 * static_cast<std::size_t>(i) + 4 * c], big);
+    }
+    // dinam never writes one (the integrator stops first); a NaN or an infinity would reach the
+    // framing and the drawing as garbage, so a cache that holds one is refused by name.
+    if (!points[i].allFinite()) {
+      throw_bad_cache(
+          path, fmt::format("point {} of sample {} (frame {}) is not a finite position "
+                            "({}, {}, {})",
+                            i, sample, sample + 1, points[i].x(), points[i].y(), points[i].z()));
     }
   }
 }

@@ -40,6 +40,13 @@ class RuntimeError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A RuntimeError in writing a file (a full disk, a quota, a folder that became read-only): the
+// commands add where to free space or write instead.
+class WriteError : public RuntimeError {
+ public:
+  using RuntimeError::RuntimeError;
+};
+
 template <typename... Args>
 [[noreturn]] void throw_user_error(const FileLoc& loc, fmt::format_string<Args...> format,
                                    Args&&... args) {

@@ -1,18 +1,25 @@
 #include "io/movie_encoder.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
-#include <system_error>
+#include <thread>
 
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 
 extern char** environ;
 
@@ -20,32 +27,78 @@ namespace dinam {
 
 namespace {
 
-std::filesystem::path with_suffix(std::filesystem::path path, const char* suffix) {
-  path += suffix;
-  return path;
+// User and system CPU time of a process, in clock ticks; -1 when it cannot be read.
+long long cpu_ticks(pid_t pid) {
+  std::ifstream stat_file(fmt::format("/proc/{}/stat", pid));
+  std::string text((std::istreambuf_iterator<char>(stat_file)), std::istreambuf_iterator<char>());
+  // "pid (name) state ppid …": the name may hold spaces, so count from its closing parenthesis.
+  const std::size_t name_end = text.rfind(')');
+  if (name_end == std::string::npos) {
+    return -1;
+  }
+  std::istringstream fields(text.substr(name_end + 1));
+  std::string field;
+  long long utime = 0;
+  long long stime = 0;
+  for (int f = 3; f <= 15 && fields >> field; ++f) {  // fields 14 and 15 are utime and stime
+    if (f == 14) {
+      utime = std::atoll(field.c_str());
+    } else if (f == 15) {
+      stime = std::atoll(field.c_str());
+    }
+  }
+  return utime + stime;
 }
 
-std::filesystem::path partial_path(const MovieRequest& request) {
-  return with_suffix(request.output, ".part");
-}
-
-std::filesystem::path log_path(const MovieRequest& request) {
-  return with_suffix(request.output, ".ffmpeg-log");
+void wait_for_exit(pid_t pid, int& status) {
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
 }
 
 }  // namespace
 
+std::string ffmpeg_program() {
+  const char* program = std::getenv("DINAM_FFMPEG");
+  return program != nullptr && *program != '\0' ? program : "ffmpeg";
+}
+
+double ffmpeg_stall_seconds() {
+  const char* text = std::getenv("DINAM_FFMPEG_TIMEOUT");
+  if (text == nullptr || *text == '\0') {
+    return 60.0;
+  }
+  char* end = nullptr;
+  const double seconds = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(seconds > 0.0) || !std::isfinite(seconds)) {
+    throw_user_error({},
+                     "DINAM_FFMPEG_TIMEOUT is '{}'; give the seconds ffmpeg may stall as a "
+                     "positive number, or unset it for 60",
+                     text);
+  }
+  return seconds;
+}
+
 std::vector<std::string> ffmpeg_arguments(const MovieRequest& request,
                                           const std::filesystem::path& partial_output) {
-  // The input: raw RGBA frames, top row first, on standard input.
-  std::vector<std::string> arguments = {
-      "ffmpeg",      "-y",
-      "-loglevel",   "error",
-      "-f",          "rawvideo",
-      "-pix_fmt",    "rgba",
-      "-video_size", fmt::format("{}x{}", request.width, request.height),
-      "-framerate",  fmt::format("{}", request.fps),
-      "-i",          "pipe:0"};
+  DINAM_CHECK(partial_output.is_absolute());
+  // The input: raw RGBA frames, top row first, on standard input and nowhere else.
+  std::vector<std::string> arguments = {ffmpeg_program(),
+                                        "-nostdin",
+                                        "-y",
+                                        "-loglevel",
+                                        "error",
+                                        "-protocol_whitelist",
+                                        "pipe",
+                                        "-f",
+                                        "rawvideo",
+                                        "-pix_fmt",
+                                        "rgba",
+                                        "-video_size",
+                                        fmt::format("{}x{}", request.width, request.height),
+                                        "-framerate",
+                                        fmt::format("{}", request.fps),
+                                        "-i",
+                                        "pipe:0"};
   if (request.gif) {
     // One palette from all frames, then an ordered (Bayer) dither: unlike error diffusion it
     // depends on nothing but the pixel, so the same frames always give the same file.
@@ -59,15 +112,33 @@ std::vector<std::string> ffmpeg_arguments(const MovieRequest& request,
                                        "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p",
                                        "-movflags", "+faststart", "-f", "mp4"});
   }
-  arguments.push_back(partial_output.string());
+  // The output: a local file only (mp4's faststart reads it back, so "file" it is, not "pipe"),
+  // named by an absolute path after "file:", which no name can turn into an option or a protocol.
+  arguments.insert(arguments.end(),
+                   {"-protocol_whitelist", "file", "file:" + partial_output.string()});
   return arguments;
 }
 
 std::unique_ptr<MovieEncoder> MovieEncoder::start(const MovieRequest& request) {
+  check_output_name(request.output);
+  const double stall_seconds = ffmpeg_stall_seconds();
   // A write to the pipe of an ffmpeg that has exited raises SIGPIPE, which would end dinam
   // without a word; ignored, the write fails instead and finish() quotes ffmpeg's message.
   std::signal(SIGPIPE, SIG_IGN);
-  const std::vector<std::string> arguments = ffmpeg_arguments(request, partial_path(request));
+
+  // ffmpeg writes into a new file of ours; its messages go to a file unlinked at once, read
+  // through our descriptor when a failure quotes them.
+  std::filesystem::path partial;
+  std::filesystem::path stem = std::filesystem::absolute(request.output);
+  stem += ".part";
+  close(create_exclusive_file(stem, partial));
+  std::filesystem::path log_name;
+  std::filesystem::path log_stem = stem;
+  log_stem += "-log";
+  const int log = create_exclusive_file(log_stem, log_name);
+  unlink(log_name.c_str());
+
+  const std::vector<std::string> arguments = ffmpeg_arguments(request, partial);
   std::vector<char*> argv;
   argv.reserve(arguments.size() + 1);
   for (const std::string& argument : arguments) {
@@ -77,33 +148,86 @@ std::unique_ptr<MovieEncoder> MovieEncoder::start(const MovieRequest& request) {
 
   int ends[2] = {-1, -1};
   if (pipe2(ends, O_CLOEXEC) != 0) {
-    throw RuntimeError(fmt::format("cannot make a pipe to ffmpeg: {}", std::strerror(errno)));
+    const int error = errno;
+    close(log);
+    unlink(partial.c_str());
+    throw RuntimeError(fmt::format("cannot make a pipe to ffmpeg: {}", std::strerror(error)));
   }
-  // ffmpeg reads the frames from the pipe; its messages go to a log file that a failure quotes.
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, ends[0], STDIN_FILENO);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log_path(request).c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, log, STDERR_FILENO);
   pid_t pid = 0;
-  const int spawn_error = posix_spawnp(&pid, "ffmpeg", &actions, nullptr, argv.data(), environ);
+  const int spawn_error = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(ends[0]);
-  std::error_code ec;
   if (spawn_error != 0) {
     close(ends[1]);
-    std::filesystem::remove(log_path(request), ec);
+    close(log);
+    unlink(partial.c_str());
     if (spawn_error == ENOENT) {
       return nullptr;
     }
-    throw RuntimeError(fmt::format("cannot start ffmpeg: {}", std::strerror(spawn_error)));
+    throw RuntimeError(
+        fmt::format("cannot start {}: {}", arguments.front(), std::strerror(spawn_error)));
   }
-  return std::unique_ptr<MovieEncoder>(new MovieEncoder(request, pid, ends[1]));
+  // Our end does not block: a full pipe is waited on by poll, with ffmpeg's progress in view.
+  fcntl(ends[1], F_SETFL, fcntl(ends[1], F_GETFL) | O_NONBLOCK);
+  auto encoder = std::unique_ptr<MovieEncoder>(
+      new MovieEncoder(request, std::move(partial), log, pid, ends[1]));
+  encoder->stall_seconds_ = stall_seconds;
+  return encoder;
 }
 
-MovieEncoder::MovieEncoder(MovieRequest request, pid_t pid, int pipe)
-    : request_(std::move(request)), pid_(pid), pipe_(pipe) {}
+MovieEncoder::MovieEncoder(MovieRequest request, std::filesystem::path partial, int log, pid_t pid,
+                           int pipe)
+    : request_(std::move(request)),
+      partial_(std::move(partial)),
+      log_(log),
+      pid_(pid),
+      pipe_(pipe) {}
+
+int MovieEncoder::wait_for_progress(bool for_exit) {
+  using Clock = std::chrono::steady_clock;
+  auto last_progress = Clock::now();
+  long long last_ticks = cpu_ticks(pid_);
+  constexpr int kSliceMs = 100;
+  for (int slice = 1;; ++slice) {
+    if (for_exit) {
+      int status = 0;
+      const pid_t done = waitpid(pid_, &status, WNOHANG);
+      if (done == pid_) {
+        pid_ = -1;
+        return status;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(kSliceMs));
+    } else {
+      pollfd ready{pipe_, POLLOUT, 0};
+      if (poll(&ready, 1, kSliceMs) > 0) {
+        return 0;  // room in the pipe, or ffmpeg gone (the write says which)
+      }
+    }
+    const long long ticks = cpu_ticks(pid_);
+    if (ticks != last_ticks) {
+      last_ticks = ticks;
+      last_progress = Clock::now();
+    }
+    if (slice % 10 == 0 && request_.while_waiting) {
+      request_.while_waiting();
+    }
+    const double stalled = std::chrono::duration<double>(Clock::now() - last_progress).count();
+    if (stalled > stall_seconds_) {
+      stop_unfinished();
+      throw RuntimeError(fmt::format(
+          "ffmpeg ({}) took no {} and used no CPU for {:.0f} s, so it was stopped and {} "
+          "left unmade. Check that it is a working ffmpeg, or give a slow one more time with "
+          "DINAM_FFMPEG_TIMEOUT (seconds)",
+          ffmpeg_program(), for_exit ? "steps towards finishing" : "frame data", stalled,
+          request_.output.string()));
+    }
+  }
+}
 
 void MovieEncoder::add_frame(const Image& image) {
   const std::uint8_t* data = image.rgba.data();
@@ -111,6 +235,10 @@ void MovieEncoder::add_frame(const Image& image) {
   while (left > 0 && pipe_ >= 0) {
     const ssize_t written = write(pipe_, data, left);
     if (written < 0 && errno == EINTR) {
+      continue;
+    }
+    if (written < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+      wait_for_progress(false);
       continue;
     }
     if (written <= 0) {  // ffmpeg has stopped reading: stop sending, finish() says why
@@ -123,35 +251,50 @@ void MovieEncoder::add_frame(const Image& image) {
   }
 }
 
+std::string MovieEncoder::log_text() const {
+  std::string text;
+  std::array<char, 4096> buffer{};
+  off_t offset = 0;
+  for (ssize_t n = 0; (n = pread(log_, buffer.data(), buffer.size(), offset)) > 0; offset += n) {
+    text.append(buffer.data(), static_cast<std::size_t>(n));
+  }
+  return text;
+}
+
 void MovieEncoder::finish() {
   if (pipe_ >= 0) {
     close(pipe_);
     pipe_ = -1;
   }
-  int status = 0;
-  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
-  pid_ = -1;
-  std::stringstream messages;
-  messages << std::ifstream(log_path(request_)).rdbuf();
-  std::error_code ec;
-  std::filesystem::remove(log_path(request_), ec);
-  const std::filesystem::path partial = partial_path(request_);
+  const int status = wait_for_progress(true);
+  const std::string messages = log_text();
+  close(log_);
+  log_ = -1;
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::filesystem::remove(partial, ec);
+    unlink(partial_.c_str());
     throw RuntimeError(fmt::format("ffmpeg failed making {} (exit status {}):\n{}",
                                    request_.output.string(),
-                                   WIFEXITED(status) ? WEXITSTATUS(status) : -1, messages.str()));
+                                   WIFEXITED(status) ? WEXITSTATUS(status) : -1, messages));
   }
-  std::filesystem::rename(partial, request_.output, ec);
-  if (ec) {
-    throw RuntimeError(fmt::format("cannot rename {} to {}: {}", partial.string(),
-                                   request_.output.string(), ec.message()));
+  try {
+    check_output_name(request_.output);  // made a link while ffmpeg ran? refuse it still
+  } catch (...) {
+    unlink(partial_.c_str());
+    throw;
+  }
+  if (std::rename(partial_.c_str(), request_.output.c_str()) != 0) {
+    const int error = errno;
+    unlink(partial_.c_str());
+    throw RuntimeError(fmt::format("cannot rename {} to {}: {}", partial_.string(),
+                                   request_.output.string(), std::strerror(error)));
   }
 }
 
 MovieEncoder::~MovieEncoder() {
   stop_unfinished();
+  if (log_ >= 0) {
+    close(log_);
+  }
 }
 
 void MovieEncoder::stop_unfinished() {
@@ -162,14 +305,11 @@ void MovieEncoder::stop_unfinished() {
     close(pipe_);
     pipe_ = -1;
   }
-  kill(pid_, SIGTERM);
+  kill(pid_, SIGKILL);  // an ffmpeg that stalls may not heed SIGTERM; its output is dropped
   int status = 0;
-  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
+  wait_for_exit(pid_, status);
   pid_ = -1;
-  std::error_code ec;
-  std::filesystem::remove(partial_path(request_), ec);
-  std::filesystem::remove(log_path(request_), ec);
+  unlink(partial_.c_str());
 }
 
 }  // namespace dinam

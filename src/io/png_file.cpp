@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 
 namespace dinam {
 namespace {
@@ -64,37 +65,19 @@ bool write_rows(std::FILE* file, const Image& image, const PngOptions& options,
 void write_png(const std::filesystem::path& path, const Image& image, const PngOptions& options) {
   DINAM_CHECK(image.width > 0 && image.height > 0 &&
               image.rgba.size() == static_cast<std::size_t>(image.width) * image.height * 4);
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
+  // A new temporary beside the final name, renamed into place whole (core/output_file.hpp).
+  OutputFile file(path);
   std::string error;
-  bool ok = false;
-  {
-    FilePtr file(std::fopen(temporary.c_str(), "wb"));
-    if (!file) {
-      throw RuntimeError(
-          fmt::format("cannot write {}: {}", temporary.string(), std::strerror(errno)));
-    }
-    errno = 0;
-    ok = write_rows(file.get(), image, options, error);
-    ok = (std::fflush(file.get()) == 0) && ok;
+  errno = 0;
+  if (!write_rows(file.stream(), image, options, error)) {
     // libpng only says "Write Error"; the system's reason (a full disk, a quota) is in errno.
-    if (!ok && std::ferror(file.get()) != 0 && errno != 0) {
+    if (std::ferror(file.stream()) != 0 && errno != 0) {
       error = std::strerror(errno);
     }
-    if (std::fclose(file.release()) != 0 && ok) {  // a late write error shows at close
-      ok = false;
-      error = std::strerror(errno);
-    }
+    throw WriteError(fmt::format("cannot write {}: {}", path.string(),
+                                 error.empty() ? "disk full or not writable" : error));
   }
-  std::error_code ec;
-  if (ok) {
-    std::filesystem::rename(temporary, path, ec);
-  }
-  if (!ok || ec) {
-    std::filesystem::remove(temporary, ec);
-    throw RuntimeError(fmt::format("cannot write {}: {}", path.string(),
-                                   error.empty() ? "disk full or not writable" : error));
-  }
+  file.commit();
 }
 
 namespace {

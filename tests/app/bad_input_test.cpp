@@ -19,19 +19,20 @@
 #include <string>
 #include <vector>
 
+#include "app/output_checks.hpp"
 #include "io/png_file.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
 namespace {
 
-const std::filesystem::path kCorpus = std::filesystem::path(DINAM_SOURCE_DIR) / "tests/bad_input";
+using test::expect_message;
+using test::files_under;
+using test::joined;
+using test::read_text;
+using test::rope_scene;
 
-std::string read_text(const std::filesystem::path& path) {
-  std::stringstream text;
-  text << std::ifstream(path).rdbuf();
-  return text.str();
-}
+const std::filesystem::path kCorpus = std::filesystem::path(DINAM_SOURCE_DIR) / "tests/bad_input";
 
 std::string replaced_all(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos;
@@ -39,38 +40,6 @@ std::string replaced_all(std::string text, const std::string& from, const std::s
     text.replace(at, from.size(), to);
   }
   return text;
-}
-
-// Every regular file under `folder`, as paths relative to it.
-std::vector<std::string> files_under(const std::filesystem::path& folder) {
-  std::vector<std::string> files;
-  std::error_code ec;
-  if (!std::filesystem::exists(folder, ec)) {
-    return files;
-  }
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
-    if (!entry.is_directory()) {
-      files.push_back(std::filesystem::relative(entry.path(), folder).string());
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-std::string joined(const std::vector<std::string>& names) {
-  std::string text;
-  for (const std::string& name : names) {
-    text += (text.empty() ? "" : ", ") + name;
-  }
-  return text;
-}
-
-void expect_message(const test::CommandResult& run, const std::vector<std::string>& fragments) {
-  for (const std::string& fragment : fragments) {
-    EXPECT_NE(run.output.find(fragment), std::string::npos)
-        << "the message lacks '" << fragment << "':\n"
-        << run.output;
-  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -178,22 +147,6 @@ TEST(BadThreads, AThreadCountThatIsNotOneIsRefusedWithTheFix) {
 
 // ---------------------------------------------------------------------------------------------
 // File system conditions.
-
-// A small scene that renders in a fraction of a second: 20 frames of a five-node rope.
-std::string rope_scene() {
-  return "version: 1\n"
-         "name: rope\n"
-         "duration: 1.0\n"
-         "fps: 20\n"
-         "gravity: [0, 0, -9.81]\n"
-         "image: {width: 64, height: 36}\n"
-         "objects:\n"
-         "  - name: rope\n"
-         "    mesh:\n"
-         "      polyline: {points: [[0, 0, 1], [1, 0, 1]], segments: 4}\n"
-         "    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}\n"
-         "    pinned: {indices: [0]}\n";
-}
 
 // A cloth of 101 × 101 nodes: its cache (2.4 MB) does not fit a 256 kB file system.
 std::string cloth_scene() {

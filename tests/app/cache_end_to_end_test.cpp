@@ -91,7 +91,7 @@ TEST_F(CacheEndToEnd, MovieNamesMissingAndExtraFramesAndMakesNothing) {
   EXPECT_NE(movie.output.find("missing frames: 5, 41-43"), std::string::npos) << movie.output;
   EXPECT_NE(movie.output.find("frame_0121.png"), std::string::npos) << movie.output;
   EXPECT_FALSE(std::filesystem::exists(path("frames") / "end_to_end_flag.mp4"));
-  EXPECT_FALSE(std::filesystem::exists(path("frames") / "end_to_end_flag.mp4.part"));
+  EXPECT_TRUE(test::temporary_files_in(path("frames")).empty());
 
   const CommandResult no_folder = run(dinam("movie " + shell_quoted(path("absent"))));
   EXPECT_EQ(no_folder.exit_code, 2);

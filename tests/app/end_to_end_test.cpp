@@ -75,7 +75,7 @@ TEST_F(EndToEnd, TinySceneGivesThreeFramesOfTheRequestedSizeAndAMovie) {
   }
   EXPECT_FALSE(std::filesystem::exists(out() / "frame_0004.png"));
   EXPECT_GT(std::filesystem::file_size(out() / "tiny.mp4"), 0u);
-  EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4.part"));
+  EXPECT_TRUE(test::temporary_files_in(out()).empty());
 
   // ffprobe comes with ffmpeg: the movie holds the 3 frames as H.264 in yuv420p.
   const CommandResult probe =
@@ -116,7 +116,7 @@ TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
   for (const double total : totals) {
     EXPECT_NEAR(total, totals.front(), 1e-3 * std::abs(totals.front()));
   }
-  EXPECT_FALSE(std::filesystem::exists(out() / "energy.csv.tmp"));
+  EXPECT_TRUE(test::temporary_files_in(out()).empty());
 }
 
 TEST_F(EndToEnd, SameSceneRendersToByteIdenticalFramesTwice) {

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
+#include <optional>
 
 #include "io/png_file.hpp"
 #include "test_support.hpp"
@@ -24,7 +26,7 @@ bool has(const std::vector<std::string>& arguments, const std::string& flag,
 
 TEST(MovieEncoder, AsksForH264InYuv420pAtTheSceneRateFromRawFramesOnItsInput) {
   const MovieRequest request{1280, 720, 25.0, "out/demo.mp4"};
-  const std::vector<std::string> arguments = ffmpeg_arguments(request, "out/demo.mp4.part");
+  const std::vector<std::string> arguments = ffmpeg_arguments(request, "/work/out/demo.mp4.part");
   EXPECT_EQ(arguments.front(), "ffmpeg");
   EXPECT_TRUE(has(arguments, "-f", "rawvideo"));
   EXPECT_TRUE(has(arguments, "-pix_fmt", "rgba"));
@@ -33,12 +35,24 @@ TEST(MovieEncoder, AsksForH264InYuv420pAtTheSceneRateFromRawFramesOnItsInput) {
   EXPECT_TRUE(has(arguments, "-i", "pipe:0"));
   EXPECT_TRUE(has(arguments, "-c:v", "libx264"));
   EXPECT_TRUE(has(arguments, "-pix_fmt", "yuv420p"));
-  EXPECT_EQ(arguments.back(), "out/demo.mp4.part");
+}
+
+// Whatever the name, ffmpeg reads it as a local file: absolute and after "file:", so a leading
+// dash is no option and "tcp://" or "concat:" no protocol; the input may be the pipe alone.
+TEST(MovieEncoder, GivesFfmpegAFileAndNothingElse) {
+  for (const char* name :
+       {"/w/-y/demo.mp4.part.1", "/w/tcp:/127.0.0.1:9/demo.gif.part.2", "/w/concat:a|b.part.3"}) {
+    const std::vector<std::string> arguments = ffmpeg_arguments({16, 16, 24.0, "demo.mp4"}, name);
+    EXPECT_EQ(arguments.back(), std::string("file:") + name);
+    EXPECT_TRUE(has(arguments, "-protocol_whitelist", "pipe"));
+    EXPECT_TRUE(has(arguments, "-protocol_whitelist", "file"));
+    EXPECT_EQ(std::count(arguments.begin(), arguments.end(), "-i"), 1);
+  }
 }
 
 TEST(MovieEncoder, GifUsesOnePaletteAndAnOrderedDither) {
   const MovieRequest request{320, 180, 25.0, "out/demo.gif", true};
-  const std::vector<std::string> arguments = ffmpeg_arguments(request, "out/demo.gif.part");
+  const std::vector<std::string> arguments = ffmpeg_arguments(request, "/work/out/demo.gif.part");
   EXPECT_TRUE(has(arguments, "-f", "gif"));
   bool ordered = false;
   for (const std::string& argument : arguments) {
@@ -48,21 +62,42 @@ TEST(MovieEncoder, GifUsesOnePaletteAndAnOrderedDither) {
   EXPECT_TRUE(ordered);
 }
 
-// Restores PATH when the test ends, whatever happens.
-class PathOverride {
+// Sets an environment variable for the test's span, restoring it (or its absence) after.
+class EnvironmentOverride {
  public:
-  explicit PathOverride(const std::string& path) : saved_(std::getenv("PATH")) {
-    setenv("PATH", path.c_str(), 1);
+  EnvironmentOverride(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) {
+      saved_ = old;
+    }
+    setenv(name, value.c_str(), 1);
   }
-  ~PathOverride() { setenv("PATH", saved_.c_str(), 1); }
+  ~EnvironmentOverride() {
+    if (saved_) {
+      setenv(name_, saved_->c_str(), 1);
+    } else {
+      unsetenv(name_);
+    }
+  }
+  EnvironmentOverride(const EnvironmentOverride&) = delete;
+  EnvironmentOverride& operator=(const EnvironmentOverride&) = delete;
 
  private:
-  std::string saved_;
+  const char* name_;
+  std::optional<std::string> saved_;
 };
+
+std::vector<std::string> entries(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
 
 TEST(MovieEncoder, MissingFfmpegIsReportedNotThrown) {
   test::TemporaryFolder folder("movie");
-  PathOverride path(folder.path().string());  // a folder with no ffmpeg in it
+  const EnvironmentOverride path("PATH", folder.path().string());  // a folder with no ffmpeg
   EXPECT_EQ(MovieEncoder::start({2, 2, 24.0, folder.path() / "demo.mp4"}), nullptr);
   EXPECT_FALSE(std::filesystem::exists(folder.path() / "demo.mp4"));
 }
@@ -79,7 +114,7 @@ TEST(MovieEncoder, EncodesFramesSentWhileItRuns) {
   }
   encoder->finish();
   EXPECT_GT(std::filesystem::file_size(movie), 0U);
-  EXPECT_FALSE(std::filesystem::exists(folder.path() / "demo.mp4.part"));
+  EXPECT_EQ(entries(folder.path()), std::vector<std::string>{"demo.mp4"});
 }
 
 TEST(MovieEncoder, FailingFfmpegIsAnErrorWithItsMessageAndLeavesNoMovie) {
@@ -96,8 +131,7 @@ TEST(MovieEncoder, FailingFfmpegIsAnErrorWithItsMessageAndLeavesNoMovie) {
     EXPECT_NE(std::string(e.what()).find("ffmpeg failed"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("rate"), std::string::npos) << e.what();
   }
-  EXPECT_FALSE(std::filesystem::exists(folder.path() / "demo.mp4"));
-  EXPECT_FALSE(std::filesystem::exists(folder.path() / "demo.mp4.part"));
+  EXPECT_TRUE(entries(folder.path()).empty());
 }
 
 TEST(MovieEncoder, AnUnfinishedMovieIsStoppedAndRemoved) {
@@ -108,9 +142,42 @@ TEST(MovieEncoder, AnUnfinishedMovieIsStoppedAndRemoved) {
     ASSERT_NE(encoder, nullptr);
     encoder->add_frame(Image(16, 16));
   }  // as when drawing fails half-way
-  EXPECT_FALSE(std::filesystem::exists(folder.path() / "demo.mp4"));
-  EXPECT_FALSE(std::filesystem::exists(folder.path() / "demo.mp4.part"));
-  EXPECT_FALSE(std::filesystem::exists(folder.path() / "demo.mp4.ffmpeg-log"));
+  EXPECT_TRUE(entries(folder.path()).empty());
+}
+
+// A stand-in ffmpeg that never reads its input and never exits: the frames fill the pipe, and
+// after DINAM_FFMPEG_TIMEOUT seconds without a byte taken or CPU used it is stopped, with a
+// message, and nothing is left. The frame is larger than any pipe's buffer.
+TEST(MovieEncoder, AnFfmpegThatNeverReadsIsStoppedAfterItsTimeout) {
+  const test::TemporaryFolder folder("movie");
+  const test::TemporaryFolder tools("stand-in");
+  const std::filesystem::path stand_in = tools.path() / "ffmpeg";
+  std::ofstream(stand_in) << "#!/bin/sh\nexec sleep 600\n";
+  std::filesystem::permissions(stand_in, std::filesystem::perms::owner_all);
+  const EnvironmentOverride program("DINAM_FFMPEG", stand_in.string());
+  const EnvironmentOverride timeout("DINAM_FFMPEG_TIMEOUT", "1");
+  const std::unique_ptr<MovieEncoder> encoder =
+      MovieEncoder::start({1024, 1024, 24.0, folder.path() / "demo.mp4"});
+  ASSERT_NE(encoder, nullptr);
+  try {
+    encoder->add_frame(Image(1024, 1024));
+    FAIL() << "a 4 MB frame went into a pipe nobody reads";
+  } catch (const RuntimeError& e) {
+    EXPECT_NE(std::string(e.what()).find("took no frame data and used no CPU"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("DINAM_FFMPEG_TIMEOUT"), std::string::npos) << e.what();
+  }
+  // It gave up: a wait for ever would have held the test until ctest's own limit. How soon is
+  // the machine's business, so nothing is asserted on a clock.
+  EXPECT_TRUE(entries(folder.path()).empty());
+}
+
+TEST(MovieEncoder, ATimeoutThatIsNotAPositiveNumberIsRefused) {
+  for (const char* text : {"soon", "0", "-5", "nan"}) {
+    const EnvironmentOverride timeout("DINAM_FFMPEG_TIMEOUT", text);
+    test::expect_user_error([] { ffmpeg_stall_seconds(); }, 0,
+                            {"DINAM_FFMPEG_TIMEOUT", "positive number"});
+  }
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ TEST(PngFile, RoundTripKeepsEveryPixelAndLeavesNoTemporaryFile) {
     EXPECT_EQ(back.height, 17);
     EXPECT_EQ(back.rgba, image.rgba);
   }
-  EXPECT_FALSE(std::filesystem::exists(folder.path() / "frame.png.tmp"));
+  EXPECT_TRUE(test::temporary_files_in(folder.path()).empty());
 }
 
 TEST(PngFile, UnwritablePathIsAnErrorAndLeavesNothing) {
