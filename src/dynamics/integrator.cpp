@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <string>
 
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
@@ -25,22 +26,60 @@
 namespace dinam {
 namespace {
 
+// The largest coordinate a node may reach, in metres. Positions leave the integrator in single
+// precision (the point caches, the renderer's vertex buffers), where the square of a coordinate
+// (a length, a dot product) overflows past about 1.8e19; a node this far has long left any scene,
+// so the run stops here rather than write an infinity.
+constexpr double kLargestCoordinate = 1e18;
+
+// Whether a node's position and velocity are ones the rest of dinam can take. NaN fails too.
+bool within_range(const Vec3& x, const Vec3& v) {
+  return (x.array().abs() < kLargestCoordinate).all() && v.allFinite();
+}
+
 // Pinned nodes are skipped: they cannot diverge by themselves (only through 0 × ∞ once a
 // neighbour's force has overflowed), and naming the free node that did is what helps the user.
 bool diverged_at(const Model& model, const State& state, Index i) {
-  return !model.pinned(i) && !(state.x[i].allFinite() && state.v_half[i].allFinite());
+  return !model.pinned(i) && !within_range(state.x[i], state.v_half[i]);
+}
+
+// What the user can change: a load or a start given in the wrong units, else the step.
+std::string divergence_fix(const Model& model) {
+  constexpr double kLargestPlausibleGravity = 1e3;  // m/s², about 100 g
+  if (model.gravity.stableNorm() > kLargestPlausibleGravity) {
+    return fmt::format(
+        "gravity is {:.3g} m/s² (the scene's 'gravity' key, in m/s²: [0, 0, -9.81] on Earth)",
+        model.gravity.stableNorm());
+  }
+  constexpr double kLargestPlausibleSpeed = 1e4;  // m/s, faster than any projectile
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (model.node_initial_v[i].stableNorm() > kLargestPlausibleSpeed) {
+      return fmt::format("object '{}' starts at {:.3g} m/s (its 'initial_velocity' key, in m/s)",
+                         model.objects[model.node_object[i]].name,
+                         model.node_initial_v[i].stableNorm());
+    }
+  }
+  return "the time step is too long for the forces at work; use 'timestep: auto' or a shorter "
+         "step";
 }
 
 [[noreturn]] void report_divergence(const Model& model, const State& state) {
   Index i = 0;
-  while (!diverged_at(model, state, i)) {
+  while (i < model.node_count() && !diverged_at(model, state, i)) {
     ++i;
   }
+  if (i == model.node_count()) {  // the positions held; the energy report overflowed
+    throw RuntimeError(
+        fmt::format("the simulation diverged: its energy is no longer finite at step {} (t = "
+                    "{:.6g} s); {}",
+                    state.step, state.time, divergence_fix(model)));
+  }
   throw RuntimeError(fmt::format(
-      "the simulation diverged: node {} of object '{}' has a non-finite position or velocity "
-      "at step {} (t = {:.6g} s). The time step is too long for the forces at work; use "
-      "'timestep: auto' or a shorter step",
-      i, model.objects[model.node_object[i]].name, state.step, state.time));
+      "the simulation diverged: node {} of object '{}' is {} at step {} (t = {:.6g} s); {}", i,
+      model.objects[model.node_object[i]].name,
+      state.v_half[i].allFinite() ? fmt::format("{:.3g} m from the origin", state.x[i].stableNorm())
+                                  : std::string("moving at a non-finite velocity"),
+      state.step, state.time, divergence_fix(model)));
 }
 
 // Δt Σ F_i · v_i with the whole-step velocity v_n = ½ (v_{n−½} + v_{n+½}): the work of a force
@@ -160,7 +199,8 @@ void book_plastic_flow(State& state) {
 
 // The integrator's half of a step, by one worker: velocities to n + ½, the energy at t_n while it
 // is tracked, positions to n + 1, into state.v_next and state.x_next (its own nodes); the step's
-// end swaps them in. Sets `diverged` where a free node's position or velocity is not finite.
+// end swaps them in. Sets `diverged` where a free node leaves the range (within_range) or the
+// energy is no longer finite.
 void advance(const Worker& worker, const Model& model, double dt, State& state,
              std::atomic<bool>& diverged) {
   EnergyWorkspace& ledger = state.energy_workspace;
@@ -191,6 +231,9 @@ void advance(const Worker& worker, const Model& model, double dt, State& state,
       state.energy.add_works(step_work, 0.5);
       ledger.last = energy_report(model, state, ledger.v_whole);
       state.energy.add_works(step_work, 0.5);
+      if (!std::isfinite(ledger.last.total)) {
+        diverged.store(true, std::memory_order_relaxed);
+      }
     });
   }
   // 4. Positions to n + 1, checked on the way. (Pinned nodes are skipped: they cannot diverge by
@@ -198,8 +241,7 @@ void advance(const Worker& worker, const Model& model, double dt, State& state,
   bool any = false;
   for_each_own_node(worker, n, [&](Index i) {
     state.x_next[i] = state.x[i] + dt * state.v_next[i];
-    any =
-        (!model.pinned(i) && !(state.x_next[i].allFinite() && state.v_next[i].allFinite())) || any;
+    any = (!model.pinned(i) && !within_range(state.x_next[i], state.v_next[i])) || any;
   });
   if (any) {
     diverged.store(true, std::memory_order_relaxed);
