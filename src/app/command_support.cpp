@@ -7,14 +7,47 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "dynamics/contact_at_rest.hpp"
 
 namespace dinam {
+
+namespace {
+
+// Contact pairs that overlap at rest by more than this share of their reach are refused: a hair
+// of overlap is a mesh modelled touching (a cloth laid on a table), more is a radius too large for
+// the mesh or objects placed inside each other (dynamics/contact_at_rest.hpp).
+constexpr double kRestOverlapTolerance = 0.05;
+
+void refuse_contact_overlap_at_rest(const SceneDescription& scene, const Model& model) {
+  const std::optional<RestOverlap> overlap = contact_overlap_at_rest(model, kRestOverlapTolerance);
+  if (!overlap) {
+    return;
+  }
+  const std::string& name_a = model.objects[overlap->object_a].name;
+  const std::string& name_b = model.objects[overlap->object_b].name;
+  const ObjectContactDesc& own = scene.objects[overlap->object_a].contact;
+  const FileLoc& loc =
+      own.radius_loc.known() ? own.radius_loc : scene.objects[overlap->object_a].loc;
+  const std::string where = overlap->object_a == overlap->object_b
+                                ? fmt::format("within '{}'", name_a)
+                                : fmt::format("between '{}' and '{}'", name_a, name_b);
+  throw_user_error(
+      loc,
+      "{} contact pairs {} overlap in the starting positions, the deepest {:.3g} m apart where "
+      "their radii reach {:.3g} m: the contact would push them apart from the first step with "
+      "energy from nowhere. Give a contact radius below half the distance between parts of the "
+      "mesh that no bar joins (contact: {{radius: m}}), or place the objects apart",
+      overlap->pairs, where, overlap->distance, overlap->reach);
+}
+
+}  // namespace
 
 Model build_model_telling_warnings(const SceneDescription& scene) {
   Model model = build_model(scene);
   for (const std::string& warning : model.warnings) {
     fmt::print(stderr, "{}\n", warning);
   }
+  refuse_contact_overlap_at_rest(scene, model);
   return model;
 }
 

@@ -1,10 +1,14 @@
 #pragma once
-// Contact between objects and within one: which bars, nodes and face triangles take part, their
-// radii and the penalty (model.contact; the forces are dynamics/object_contact.hpp's).
+// Contact with the ground (model.ground: each node's penalty) and between objects and within one
+// (model.contact: which bars, nodes and face triangles take part, their radii and the penalty);
+// the forces are dynamics/ground_contact.hpp's and dynamics/object_contact.hpp's.
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
+
+// Call once every object, its pins and its springs are in the model.
+void add_ground_contact(const SceneDescription& scene, Model& model);
 
 // Call once every object, its pins and its springs are in the model, after the ground.
 void add_object_contact(const SceneDescription& scene, Model& model);

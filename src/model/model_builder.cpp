@@ -136,6 +136,24 @@ std::vector<int> edge_parts(const ObjectDesc& object, const CleanedMesh& clean,
       }
     }
   }
+  // A part that ends up with no bar is a selection that missed (a box beside the mesh, nodes
+  // that no bar joins) or one a later part covers whole: either way not what was meant.
+  std::vector<bool> holds_a_bar(object.parts.size(), false);
+  for (const int id : part_of_edge) {
+    if (id >= 0) {
+      holds_a_bar[static_cast<std::size_t>(id)] = true;
+    }
+  }
+  for (std::size_t p = 0; p < object.parts.size(); ++p) {
+    if (!holds_a_bar[p]) {
+      throw_user_error(object.parts[p].loc,
+                       "this part of '{}' holds no bar: its selection takes none of the object's "
+                       "{} bars with both ends, or a later part takes all it does. Check the "
+                       "selection against 'dinam info' (node positions, the mesh's materials and "
+                       "groups), or remove the part",
+                       object.name, edges.size());
+    }
+  }
   return part_of_edge;
 }
 
@@ -349,33 +367,6 @@ void add_fields(const SceneDescription& scene, const std::vector<ObjectNodes>& o
   }
 }
 
-void add_ground(const SceneDescription& scene, Model& model) {
-  const GroundDesc& desc = scene.ground;
-  GroundContact& ground = model.ground;
-  ground.enabled = desc.contact;
-  ground.point = desc.point;
-  ground.normal = desc.normal;
-  ground.static_friction = desc.static_friction;
-  ground.kinetic_friction = desc.kinetic_friction;
-  ground.stick = desc.stick;
-  if (!ground.enabled) {
-    return;
-  }
-  // Auto: every node gets the same contact frequency ω_c = ½ ω_max of the structure, so the
-  // ground stiffens the model's highest frequency by about 12 % and penetration at impact speed
-  // v stays near v / ω_c.
-  const double structure = max_frequency_squared_bound(model, false);
-  const double contact_omega_squared = structure > 0.0 ? 0.25 * structure : 1e4;
-  ground.node_stiffness.resize(model.node_count());
-  ground.node_damping.resize(model.node_count());
-  for (Index i = 0; i < model.node_count(); ++i) {
-    const double m = model.node_mass[i];
-    const double k = desc.stiffness ? *desc.stiffness : m * contact_omega_squared;
-    ground.node_stiffness[i] = k;
-    ground.node_damping[i] = 2.0 * desc.damping_ratio * std::sqrt(k * m);
-  }
-}
-
 // The arrays grew by push_back, to up to twice their length: give the spare capacity back, since
 // a model lives as long as its run.
 void release_spare_capacity(Model& model) {
@@ -475,7 +466,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   add_tearing(bar_materials, model);
   add_fields(scene, objects, model);
   add_wind(scene, model);
-  add_ground(scene, model);
+  add_ground_contact(scene, model);
   add_object_contact(scene, model);
   note_yielding_kinds(model);
   release_spare_capacity(model);

@@ -32,6 +32,7 @@ ContactDesc read_contact(YamlMap map) {
   if (const YAML::Node stiffness = map.get("stiffness");
       stiffness && !(stiffness.IsScalar() && stiffness.Scalar() == "auto")) {
     contact.stiffness = as_double(stiffness, map.file(), map.path("stiffness"));
+    contact.stiffness_loc = map.loc("stiffness");
     require_positive(*contact.stiffness, map.loc("stiffness"), map.path("stiffness"), "N/m");
   }
   contact.damping_ratio = map.number("damping_ratio", contact.damping_ratio);
@@ -57,6 +58,7 @@ ObjectContactDesc read_object_contact(YamlMap map) {
   }
   if (map.has("radius")) {
     contact.radius = map.number("radius", 0.0);
+    contact.radius_loc = map.loc("radius");
     require_positive(*contact.radius, map.loc("radius"), map.path("radius"), "m");
   }
   if (map.has("faces")) {

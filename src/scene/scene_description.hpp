@@ -116,6 +116,7 @@ struct ObjectContactDesc {
   std::optional<bool> self;      // touches itself
   std::optional<double> radius;  // m, of its bars as capsules and its faces as shells; default:
                                  // each bar's wire radius
+  FileLoc radius_loc;            // where `radius` was given (unknown when it was not)
   std::optional<bool> faces;     // its faces are shells; default: unless drawn as wires (a net
                                  // of cords has holes between them)
 };
@@ -259,6 +260,7 @@ struct GroundDesc {
   bool contact = true;
   // Penalty stiffness per node: empty for auto (a contact frequency half the model's highest).
   std::optional<double> stiffness;  // N/m
+  FileLoc stiffness_loc;            // where `stiffness` was given as a number
   double damping_ratio = 0.3;       // of the contact oscillation; normal direction only
   double static_friction = 0.5;     // μs
   double kinetic_friction = 0.4;    // μk
@@ -277,6 +279,7 @@ struct ContactDesc {
   double static_friction = 0.5;     // μs
   double kinetic_friction = 0.4;    // μk
   FileLoc loc;
+  FileLoc stiffness_loc;  // where `stiffness` was given as a number
 };
 
 // A phase before t = 0 in which the structure comes to rest under gravity alone (no fields, no

@@ -52,6 +52,7 @@ GroundDesc read_ground(YamlMap map) {
   if (const YAML::Node stiffness = map.get("stiffness");
       stiffness && !(stiffness.IsScalar() && stiffness.Scalar() == "auto")) {
     ground.stiffness = as_double(stiffness, map.file(), "ground.stiffness");
+    ground.stiffness_loc = map.loc("stiffness");
     require_positive(*ground.stiffness, map.loc("stiffness"), "ground.stiffness", "N/m");
   }
   ground.damping_ratio = map.number("damping_ratio", ground.damping_ratio);
