@@ -301,7 +301,9 @@ int main(int argc, char** argv) {
   measure("torsion springs, yielding", "spring", flag.torsion_count(),
           add(yielding, add_torsion_spring_forces));
   measure("axial dampers", "bar", bars, add(elastic, add_axial_damper_forces));
-  measure("global damping", "node", nodes, add(elastic, add_global_damping_forces));
+  measure("global damping", "node", nodes, add(elastic, [](ForceContext& context) {
+            add_global_damping_forces(context, context.model.global_damping);
+          }));
   measure("gravity", "node", nodes, add(elastic, add_gravity_forces));
   measure("fields (one on every node)", "node", nodes, add(elastic, add_field_forces));
   measure(fmt::format("ground contact with friction ({} nodes touch)", touching), "node", nodes,

@@ -9,11 +9,13 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <string_view>
 
 #include "core/error.hpp"
-#include "core/thread_team.hpp"
-#include "dynamics/integrator.hpp"
+#include "dynamics/contact_grid.hpp"
+#include "dynamics/object_contact_state.hpp"
 #include "model/model.hpp"
+#include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {
@@ -66,53 +68,28 @@ std::uint64_t scene_bytes(const SceneDescription& scene) {
   return bytes;
 }
 
-// Every array of model.hpp, as allocated.
+// Every array of model.hpp, as allocated (model_arrays.hpp lists them).
 std::uint64_t model_bytes(const Model& model) {
-  std::uint64_t bytes = bytes_of(model.node_initial_x) + bytes_of(model.node_initial_v) +
-                        bytes_of(model.node_mass) + bytes_of(model.node_inv_mass) +
-                        bytes_of(model.node_object) + bytes_of(model.node_uv);
-  bytes += bytes_of(model.bar_nodes) + bytes_of(model.bar_rest_length) +
-           bytes_of(model.bar_axial_stiffness) + bytes_of(model.bar_yield_force) +
-           bytes_of(model.bar_damping) + bytes_of(model.bar_radius) + bytes_of(model.bar_on_face);
-  bytes += bytes_of(model.bend_nodes) + bytes_of(model.bend_rest_angle) +
-           bytes_of(model.bend_stiffness) + bytes_of(model.bend_yield_moment);
-  bytes += bytes_of(model.clamp_nodes) + bytes_of(model.clamp_ghost_offset) +
-           bytes_of(model.clamp_stiffness) + bytes_of(model.clamp_yield_moment);
-  bytes += bytes_of(model.torsion_nodes) + bytes_of(model.torsion_rest_angle) +
-           bytes_of(model.torsion_stiffness) + bytes_of(model.torsion_yield_moment);
-  bytes += bytes_of(model.face_offsets) + bytes_of(model.face_nodes);
-  bytes += bytes_of(model.bar_breaking_strain) + bytes_of(model.bar_breaking_force) +
-           bytes_of(model.bar_spring_offsets) + bytes_of(model.bar_springs) +
-           bytes_of(model.bar_face_offsets) + bytes_of(model.bar_faces);
-  for (const FieldForce& field : model.fields) {
-    bytes += bytes_of(field.nodes);
-  }
-  for (const PinMotion& motion : model.pin_motions) {
-    bytes += bytes_of(motion.nodes);
-  }
-  bytes += bytes_of(model.wind.faces) + bytes_of(model.wind.bars) + bytes_of(model.wind.nodes) +
-           bytes_of(model.wind.node_item_offsets) + bytes_of(model.wind.node_items);
-  bytes += bytes_of(model.ground.node_stiffness) + bytes_of(model.ground.node_damping);
+  std::uint64_t bytes = 0;
+  for_each_model_array(model,
+                       [&](std::string_view, const auto& array) { bytes += bytes_of(array); });
   return bytes;
 }
 
-// state.hpp's arrays for this model.
-std::uint64_t state_bytes(const Model& model, bool energy) {
+}  // namespace
+
+std::uint64_t made_state_bytes(const Model& model, bool energy) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
-  // Plastic sets for the kinds that can yield, and while the energy is tracked each one's flow.
-  const std::uint64_t yielding =
-      (model.bars_yield ? static_cast<std::uint64_t>(model.bar_count()) : 0) +
-      (model.bends_yield ? static_cast<std::uint64_t>(model.bend_count()) : 0) +
-      (model.torsions_yield ? static_cast<std::uint64_t>(model.torsion_count()) : 0);
+  const auto bars = static_cast<std::uint64_t>(model.bar_count());
+  const auto bends = static_cast<std::uint64_t>(model.bend_count());
+  const auto torsions = static_cast<std::uint64_t>(model.torsion_count());
+  const auto clamps = static_cast<std::uint64_t>(model.clamp_count());
+  // Plastic sets for the kinds that can yield and every clamp, and while the energy is tracked
+  // each one's flow.
+  const std::uint64_t yielding = (model.bars_yield ? bars : 0) + (model.bends_yield ? bends : 0) +
+                                 (model.torsions_yield ? torsions : 0) + clamps;
   std::uint64_t bytes = nodes * 5 * sizeof(Vec3);  // x, v_half, force, x_next, v_next
   bytes += yielding * sizeof(double) * (energy ? 2 : 1);
-  // The split of the work between the threads (work_split.hpp): an owner and a list entry a
-  // node, a list entry a spring (a few more for springs at the borders).
-  if (thread_count() > 1 && worth_sharing(model)) {
-    const auto springs =
-        static_cast<std::uint64_t>(model.bar_count() + model.bend_count() + model.torsion_count());
-    bytes += nodes * (sizeof(std::uint16_t) + sizeof(Index)) + springs * sizeof(Index);
-  }
   if (model.wind.field.enabled) {  // each face's and bar's drag, and the wind at each node
     bytes += (model.wind.faces.size() + model.wind.bars.size()) * sizeof(Vec3);
     bytes += model.wind.field.turbulence != 0.0 ? nodes * sizeof(Vec3) : 0;
@@ -124,12 +101,33 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
     bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_whole
   }
   if (model.can_tear()) {  // a broken flag per bar, spring and face, and the list of bars
-    const auto springs = static_cast<std::uint64_t>(model.bar_count()) +
-                         static_cast<std::uint64_t>(model.bend_count()) +
-                         static_cast<std::uint64_t>(model.torsion_count());
-    bytes += springs + static_cast<std::uint64_t>(model.clamp_count()) +
-             static_cast<std::uint64_t>(model.face_count()) +
-             static_cast<std::uint64_t>(model.bar_count()) * sizeof(Index);
+    bytes += bars + bends + torsions + clamps + static_cast<std::uint64_t>(model.face_count()) +
+             bars * sizeof(Index);
+  }
+  if (model.contact.enabled) {  // a box and a flag per bar and triangle, a reference per node
+    const auto triangles = static_cast<std::uint64_t>(model.contact.triangle_face.size());
+    bytes += (bars + triangles) * (sizeof(Box) + sizeof(std::uint8_t)) + nodes * sizeof(Vec3);
+  }
+  return bytes;
+}
+
+namespace {
+
+// Contact pairs, which grow with what touches: a guess of two candidates and one touching pair
+// (kept twice, for friction's history) for each node of the contact, about what a cloth resting
+// on itself or on another holds.
+constexpr std::uint64_t kPairBytesPerContactNode =
+    2 * sizeof(ContactCandidate) + 2 * sizeof(ContactPoint);
+
+// state.hpp's arrays for this model: as make_state allocates them, and what the contact's search
+// grows at its first: the pairs and the grids of bars and triangles. (The split of the work
+// between the threads is a few runs of springs per thread, and negligible.)
+std::uint64_t state_bytes(const Model& model, bool energy) {
+  std::uint64_t bytes = made_state_bytes(model, energy);
+  if (model.contact.enabled) {
+    bytes += model.contact.points.size() * kPairBytesPerContactNode;
+    bytes += (model.contact.bars.size() + model.contact.triangle_face.size()) *
+             ContactGrid::bytes_per_box();
   }
   return bytes;
 }
@@ -235,8 +233,8 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
   estimate.model = model_bytes(model);
   estimate.dynamics = state_bytes(model, use.energy);
   if (model.settle.enabled) {
-    // settle.cpp relaxes a copy of the model (no driving forces) with a state of its own.
-    estimate.dynamics += estimate.model + state_bytes(model, false);
+    // settle.cpp relaxes the model (no driving forces) in a state of its own.
+    estimate.dynamics += state_bytes(model, false);
   }
   estimate.frames =
       static_cast<std::uint64_t>(std::max(use.frames_held, 0)) *

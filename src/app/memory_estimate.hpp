@@ -21,12 +21,12 @@ struct MemoryUse {
 };
 
 // Bytes, by part. The peak is when the frames are all held and either the dynamics is running
-// (with the settling phase's copy of the model before it) or the frames are being drawn.
+// (with the settling phase's own state before it) or the frames are being drawn.
 struct MemoryEstimate {
   std::uint64_t program = 0;   // the program and its libraries, loaded
   std::uint64_t scene = 0;     // the scene's meshes as read
   std::uint64_t model = 0;     // the model's arrays (model.hpp)
-  std::uint64_t dynamics = 0;  // the state and, when settling, its copies of model and state
+  std::uint64_t dynamics = 0;  // the state, the contact's pairs and grids, and the settling's state
   std::uint64_t frames = 0;    // the positions of every frame held
   std::uint64_t drawing = 0;   // OSMesa's buffers at the image size, the draw list, one PNG
 
@@ -36,6 +36,10 @@ struct MemoryEstimate {
 
 MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model,
                                const MemoryUse& use);
+
+// Bytes of the state's arrays as make_state allocates them for `model` (dynamics/integrator.hpp),
+// before any step has split the work between the threads or found a contact pair.
+std::uint64_t made_state_bytes(const Model& model, bool energy);
 
 // The memory this process may still take, and where the figure came from.
 struct MemoryBudget {

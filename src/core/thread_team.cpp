@@ -120,6 +120,7 @@ void ThreadTeam::work(int index) {
       return;
     }
     invoke_(job_, TeamMember(this, index, size_));
+    worker_jobs_.fetch_add(1, std::memory_order_relaxed);
     finished_.fetch_add(1, std::memory_order_acq_rel);
     finished_.notify_one();
   }

@@ -85,6 +85,9 @@ class ThreadTeam {
   ThreadTeam& operator=(const ThreadTeam&) = delete;
 
   int size() const { return size_; }
+  // Jobs run on the worker threads (members 1 …) since the team started, summed over them: what
+  // shows that a step was shared, not run alone.
+  std::uint64_t worker_jobs() const { return worker_jobs_.load(std::memory_order_relaxed); }
 
   // Runs job(member) on every member of the team, the calling thread as member 0, and returns
   // when all have returned; with `alone`, only on the calling thread (as the solo member). A job
@@ -119,6 +122,7 @@ class ThreadTeam {
   alignas(64) std::atomic<int> finished_{0};              // workers done with the job in hand
   alignas(64) mutable std::atomic<int> arrived_{0};       // members at the barrier
   alignas(64) mutable std::atomic<std::uint32_t> barrier_phase_{0};
+  alignas(64) std::atomic<std::uint64_t> worker_jobs_{0};
 };
 
 // The process's team, started at the first use with thread_count() threads.

@@ -28,6 +28,13 @@ struct Box {
 
 class ContactGrid {
  public:
+  // About what the grid holds for each box it files in one cell, for the memory estimate: its
+  // entry, its width while the cell is chosen, and its share of the buckets (between two and four
+  // a box: a power of two at least twice the entries).
+  static constexpr std::size_t bytes_per_box() {
+    return sizeof(Entry) + sizeof(double) + 3 * sizeof(Index);
+  }
+
   // Files boxes[id] for every id with use[id] != 0 (every id when `use` is empty), in cells at
   // least `min_cell` wide.
   void build(const std::vector<Box>& boxes, const std::vector<std::uint8_t>& use, double min_cell);

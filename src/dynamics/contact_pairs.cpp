@@ -380,4 +380,17 @@ void find_touching_pairs(const Model& model, State& state) {
   work.touching.erase(last, work.touching.end());
 }
 
+void prepare_object_contact(const Model& model, State& state) {
+  if (!model.contact.enabled) {
+    return;
+  }
+  ObjectContactWorkspace& work = state.object_contact;
+  const auto triangles = model.contact.triangle_face.size();
+  work.bar_boxes.resize(static_cast<std::size_t>(model.bar_count()));
+  work.bar_used.assign(static_cast<std::size_t>(model.bar_count()), 0);
+  work.triangle_boxes.resize(triangles);
+  work.triangle_used.assign(triangles, 0);
+  work.reference_x.resize(static_cast<std::size_t>(model.node_count()));
+}
+
 }  // namespace dinam

@@ -48,4 +48,8 @@ inline constexpr double kSearchCostInChecks = 80.0;
 // radii at state.x: its nodes, the closest points' weights and their separation.
 void find_touching_pairs(const Model& model, State& state);
 
+// Sizes the search's arrays of one entry per bar, triangle or node (state.object_contact), so that
+// a step allocates only as the pairs grow; nothing without contact between objects.
+void prepare_object_contact(const Model& model, State& state);
+
 }  // namespace dinam

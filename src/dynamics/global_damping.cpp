@@ -5,9 +5,8 @@
 
 namespace dinam {
 
-void add_global_damping_forces(ForceContext& context) {
+void add_global_damping_forces(ForceContext& context, double alpha) {
   const Model& model = context.model;
-  const double alpha = model.global_damping;
   if (alpha == 0.0) {
     return;
   }

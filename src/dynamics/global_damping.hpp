@@ -5,7 +5,8 @@
 
 namespace dinam {
 
-// On the context worker's own nodes (parallel_loops.hpp).
-void add_global_damping_forces(ForceContext& context);
+// −alpha m v (alpha in 1/s, the model's own or the settling phase's) on the context worker's own
+// nodes (parallel_loops.hpp).
+void add_global_damping_forces(ForceContext& context, double alpha);
 
 }  // namespace dinam

@@ -10,6 +10,7 @@
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/bending_spring.hpp"
 #include "dynamics/clamp_spring.hpp"
+#include "dynamics/contact_pairs.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/field_forces.hpp"
 #include "dynamics/global_damping.hpp"
@@ -111,7 +112,7 @@ void write_plastic_sets_put_aside(State& state) {
 // driving kinds also keep their own forces in the ledger's arrays, for the work they do; that
 // does not change the order of the total's sums.
 void add_forces(const Worker& worker, const Model& model, const ForceSwitches& switches,
-                State& state, bool update_history) {
+                const StepOptions& options, State& state, bool update_history) {
   EnergyWorkspace& ledger = state.energy_workspace;
   auto kind = [&](std::vector<Vec3>& part) {
     return ForceContext{model, state, state.force, update_history, ledger.enabled ? &part : nullptr,
@@ -147,7 +148,7 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
     add_wind_forces(wind);
   }
   if (switches.global_damping) {
-    add_global_damping_forces(damping);
+    add_global_damping_forces(damping, options.global_damping.value_or(model.global_damping));
   }
   if (switches.ground) {
     add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
@@ -201,8 +202,8 @@ void book_plastic_flow(State& state) {
 // is tracked, positions to n + 1, into state.v_next and state.x_next (its own nodes); the step's
 // end swaps them in. Sets `diverged` where a free node leaves the range (within_range) or the
 // energy is no longer finite.
-void advance(const Worker& worker, const Model& model, double dt, State& state,
-             std::atomic<bool>& diverged) {
+void advance(const Worker& worker, const Model& model, double dt, const StepOptions& options,
+             State& state, std::atomic<bool>& diverged) {
   EnergyWorkspace& ledger = state.energy_workspace;
   const TeamMember& member = worker.member;
   const Index n = model.node_count();
@@ -211,8 +212,10 @@ void advance(const Worker& worker, const Model& model, double dt, State& state,
     state.v_next[i] = state.v_half[i] + (dt * model.node_inv_mass[i]) * state.force[i];
   });
   // 2. Pinned nodes that follow a path take the velocity that brings them onto it at t_{n+1}.
-  set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state.x, state.v_next,
-                        [&](Index i) { return worker.owns(i); });
+  if (!options.pins_hold_still) {
+    set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state.x,
+                          state.v_next, [&](Index i) { return worker.owns(i); });
+  }
   // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
   //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
   if (ledger.enabled) {
@@ -267,7 +270,7 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   const WorkSplit* split = share_work(model, state);
   thread_team().run(
       [&](const TeamMember& member) {
-        add_forces({member, split}, model, switches, state, update_history);
+        add_forces({member, split}, model, switches, {}, state, update_history);
       },
       alone);
   write_plastic_sets_put_aside(state);
@@ -277,8 +280,7 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   }
 }
 
-State initial_state(const Model& model, double dt, const ForceSwitches& switches, bool track_energy,
-                    Settling settling) {
+State make_state(const Model& model, bool track_energy) {
   const std::size_t n = model.node_count();
   State state;
   state.x = model.node_initial_x;
@@ -300,10 +302,8 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
   }
   prepare_tearing(model, state);
   prepare_wind(model, state);
+  prepare_object_contact(model, state);
   place_driven_nodes(model, 0.0, state);
-  if (settling == Settling::kRun) {
-    settle_under_gravity(model, dt, switches, state);
-  }
   EnergyWorkspace& ledger = state.energy_workspace;
   ledger.enabled = track_energy;
   if (track_energy) {  // the ledger's arrays exist only then (memory: 144 bytes per node)
@@ -317,14 +317,28 @@ State initial_state(const Model& model, double dt, const ForceSwitches& switches
     ledger.torsion_flow.assign(model.torsions_yield ? model.torsion_count() : 0, 0.0);
     ledger.clamp_flow.assign(model.clamp_count(), 0.0);
   }
+  return state;
+}
+
+void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches, State& state) {
   state.object_contact.dt = dt;
   compute_forces(model, switches, state, false);
-  if (track_energy) {  // after the forces: contact between objects finds its pairs there
-    ledger.last = energy_report(model, state, state.v_half);
+  if (state.energy_workspace.enabled) {  // after the forces: contact between objects finds its
+                                         // pairs there
+    state.energy_workspace.last = energy_report(model, state, state.v_half);
   }
   for (Index i = 0; i < model.node_count(); ++i) {
     state.v_half[i] -= 0.5 * dt * model.node_inv_mass[i] * state.force[i];
   }
+}
+
+State initial_state(const Model& model, double dt, const ForceSwitches& switches, bool track_energy,
+                    Settling settling) {
+  State state = make_state(model, track_energy);
+  if (settling == Settling::kRun) {
+    settle_under_gravity(model, dt, switches, state);
+  }
+  start_leapfrog(model, dt, switches, state);
   return state;
 }
 
@@ -351,12 +365,13 @@ const WorkSplit* share_work(const Model& model, State& state) {
   return &state.work_split;
 }
 
-void step(const Model& model, double dt, const ForceSwitches& switches, State& state) {
-  advance_steps(model, dt, switches, state, 1);
+void step(const Model& model, double dt, const ForceSwitches& switches, State& state,
+          const StepOptions& options) {
+  advance_steps(model, dt, switches, state, 1, options);
 }
 
 void advance_steps(const Model& model, double dt, const ForceSwitches& switches, State& state,
-                   std::int64_t steps) {
+                   std::int64_t steps, const StepOptions& options) {
   const bool alone = !step_runs_in_parallel(model);
   const WorkSplit* split = share_work(model, state);
   std::atomic<bool> diverged{false};
@@ -373,13 +388,13 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
             if (model.can_tear()) {
               on_leader(member, [&] { break_overloaded_bars(model, state); });
             }
-            add_forces({member, split}, model, switches, state, true);
+            add_forces({member, split}, model, switches, options, state, true);
           },
           alone);
       add_contact_forces(model, switches, state, true);
       thread_team().run(
           [&](const TeamMember& member) {
-            advance({member, split}, model, dt, state, diverged);
+            advance({member, split}, model, dt, options, state, diverged);
           },
           alone);
       end_step(state, dt);
@@ -398,9 +413,9 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
               on_leader(member, [&] { break_overloaded_bars(model, state); });
             }
             // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
-            add_forces(worker, model, switches, state, true);
+            add_forces(worker, model, switches, options, state, true);
             // 2. Velocities to n + ½, positions to n + 1.
-            advance(worker, model, dt, state, diverged);
+            advance(worker, model, dt, options, state, diverged);
             member.barrier([&] { end_step(state, dt); });
             if (diverged.load(std::memory_order_relaxed)) {
               break;  // every member sees it here, after the barrier

@@ -1,9 +1,10 @@
 #pragma once
-// Central differences in leapfrog form (DESIGN.md):
+// Central differences in leapfrog form (docs/architecture.md, "Integration"):
 //   a_n = M⁻¹ F(x_n, v_{n−½}, t_n),  v_{n+½} = v_{n−½} + Δt a_n,  x_{n+1} = x_n + Δt v_{n+½}.
 // Velocity-dependent forces (dampers, friction, drag) use v_{n−½}, the latest velocity known
 // before the step; the stability bound accounts for the lag.
 #include <cstdint>
+#include <optional>
 
 #include "dynamics/state.hpp"
 
@@ -24,6 +25,24 @@ struct ForceSwitches {
   bool ground = true;
   bool object_contact = true;  // between objects and within one
 };
+
+// How a step departs from the model's own motion without a copy of the model: the settling phase
+// runs the scene's model with these (and with fields and wind switched off).
+struct StepOptions {
+  // 1/s, in place of model.global_damping (where ForceSwitches::global_damping leaves it on).
+  std::optional<double> global_damping;
+  // Driven pins stay where they are instead of following their paths (PinMotion).
+  bool pins_hold_still = false;
+};
+
+// Every array of the state for `model` allocated in this one place (state_arrays.hpp lists them),
+// at x_0 and v_0 from the model (driven pins where their paths start); the energy ledger's arrays
+// only with `track_energy`. Computes no force: initial_state does.
+State make_state(const Model& model, bool track_energy);
+
+// Starts leapfrog from rest or from v_0 at the state's positions: the forces at (x_0, v_0) into
+// state.force, then v_{−½} = v_0 − ½Δt a_0.
+void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches, State& state);
 
 // Whether initial_state runs the model's settling phase (settle.hpp), or starts from the mesh
 // as it is (to measure a step's cost, say).
@@ -54,10 +73,11 @@ const WorkSplit* share_work(const Model& model, State& state);
 // one job of the thread team (core/thread_team.hpp), whose threads then meet once a step instead
 // of being woken and gathered for each. Throws as step() does, at the step that diverged.
 void advance_steps(const Model& model, double dt, const ForceSwitches& switches, State& state,
-                   std::int64_t steps);
+                   std::int64_t steps, const StepOptions& options = {});
 
 // Advances the state by one step of dt. Allocates nothing. Throws RuntimeError naming the node,
 // the step and the time if a position or velocity stops being finite.
-void step(const Model& model, double dt, const ForceSwitches& switches, State& state);
+void step(const Model& model, double dt, const ForceSwitches& switches, State& state,
+          const StepOptions& options = {});
 
 }  // namespace dinam

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 #include <tuple>
 
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/state_arrays.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -76,12 +78,12 @@ double automatic_settle_damping(const Model& model) {
 }
 
 std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches& switches,
-                             double damping, std::int64_t max_steps, double handover, State& state,
-                             SettleOutcome& outcome) {
-  Model damped = model;
+                             const StepOptions& options, double damping, std::int64_t max_steps,
+                             double handover, State& state, SettleOutcome& outcome) {
+  StepOptions damped = options;
   damped.global_damping = damping;
   for (std::int64_t s = 1; s <= max_steps; ++s) {
-    step(damped, dt, switches, state);
+    step(model, dt, switches, state, damped);
     if (s % kViscousCheckInterval == 0 || s == max_steps) {
       std::vector<Vec3> velocities = state.v_half;
       compute_static_forces(model, switches, state);
@@ -96,7 +98,8 @@ std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches&
 }
 
 SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
-                                       std::int64_t max_steps, double residual, State& state) {
+                                       std::int64_t max_steps, double residual, State& state,
+                                       const StepOptions& options) {
   SettleOutcome outcome;
   outcome.ran = true;
   outcome.residual = std::numeric_limits<double>::infinity();
@@ -104,7 +107,7 @@ SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const Forc
   double previous_kinetic = 0.0;
   std::int64_t last_check = 0;
   for (std::int64_t s = 1; s <= max_steps; ++s) {
-    step(model, dt, switches, state);
+    step(model, dt, switches, state, options);
     outcome.steps = s;
     double kinetic = kinetic_measure(model, state);
     const bool peak = kinetic < previous_kinetic;
@@ -142,20 +145,20 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
   if (!model.settle.enabled) {
     return;
   }
-  // The same structure at rest with nothing but gravity and the ground acting. A copy is made once
-  // per run, which is cheap beside the steps that follow.
-  Model quiet = model;
-  quiet.fields.clear();
-  quiet.wind.faces.clear();
-  quiet.wind.bars.clear();
-  quiet.pin_motions.clear();  // supports hold still where they start
-  for (Vec3& v : quiet.node_initial_v) {
+  // The same structure at rest with nothing but gravity and the ground acting: fields and wind
+  // off, supports held still where they start, in a state of its own that starts from rest at
+  // the state's positions (the model is not copied).
+  ForceSwitches quiet = switches;
+  quiet.fields = false;
+  quiet.wind = false;
+  StepOptions options;
+  options.pins_hold_still = true;
+  State settling = make_state(model, false);
+  settling.x = state.x;
+  for (Vec3& v : settling.v_half) {
     v.setZero();
   }
-  quiet.settle = {};
-  quiet.node_initial_x = state.x;
-
-  State settling = initial_state(quiet, dt, switches, false);
+  start_leapfrog(model, dt, quiet, settling);
   const auto max_steps = std::max<std::int64_t>(1, std::llround(model.settle.duration / dt));
   // First the large motion, overdamped: a path without swings, so that where a limp structure
   // folds or which way a tie flops is decided by the structure, not by rounding (kinetic damping
@@ -165,18 +168,18 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
   SettleOutcome viscous;
   const std::int64_t viscous_steps =
       damping > 0.0
-          ? relax_viscously(quiet, dt, switches, std::min(damping, 0.2 / dt), max_steps,
+          ? relax_viscously(model, dt, quiet, options, std::min(damping, 0.2 / dt), max_steps,
                             std::max(kViscousHandover, model.settle.residual), settling, viscous)
           : 0;
   if (viscous_steps > 0) {
     // Hand over from rest, as kinetic damping's restarts do (v_{−½} = −½ Δt a).
-    for (Index i = 0; i < quiet.node_count(); ++i) {
-      settling.v_half[i] = (-0.5 * dt * quiet.node_inv_mass[i]) * settling.force[i];
+    for (Index i = 0; i < model.node_count(); ++i) {
+      settling.v_half[i] = (-0.5 * dt * model.node_inv_mass[i]) * settling.force[i];
     }
   }
   state.settled = viscous_steps < max_steps
-                      ? relax_by_kinetic_damping(quiet, dt, switches, max_steps - viscous_steps,
-                                                 model.settle.residual, settling)
+                      ? relax_by_kinetic_damping(model, dt, quiet, max_steps - viscous_steps,
+                                                 model.settle.residual, settling, options)
                       : viscous;
   state.settled.viscous_steps = viscous_steps;
   state.settled.steps += viscous_steps;
@@ -194,20 +197,16 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
         model.settle.duration, max_steps, outcome.residual, node - object.first_node, object.name,
         model.settle.residual);
   }
+  // The shape reached, and what the way there left: plastic sets, what broke under its own
+  // weight, the ground's anchors. Velocities, time and the energy start afresh at t = 0.
   state.x = std::move(settling.x);
-  state.bar_plastic_set = std::move(settling.bar_plastic_set);
-  state.bend_plastic_set = std::move(settling.bend_plastic_set);
-  state.torsion_plastic_set = std::move(settling.torsion_plastic_set);
-  state.clamp_plastic_set = std::move(settling.clamp_plastic_set);
-  state.contact_anchor = std::move(settling.contact_anchor);
-  state.contact_touching = std::move(settling.contact_touching);
-  state.contact_sliding = std::move(settling.contact_sliding);
-  state.bar_broken = std::move(settling.bar_broken);  // what broke under its own weight
-  state.bend_broken = std::move(settling.bend_broken);
-  state.torsion_broken = std::move(settling.torsion_broken);
-  state.clamp_broken = std::move(settling.clamp_broken);
-  state.face_broken = std::move(settling.face_broken);
-  state.broken_bars = std::move(settling.broken_bars);
+  for_each_state_array(
+      [](std::string_view, StateArrayRole role, auto& to, auto& from) {
+        if (role == StateArrayRole::kHistory) {
+          to = std::move(from);
+        }
+      },
+      state, settling);
 }
 
 }  // namespace dinam

@@ -5,12 +5,12 @@
 // history carry over, so a structure that yields under its own weight keeps that set.
 #include <cstdint>
 
+#include "dynamics/integrator.hpp"
 #include "dynamics/state.hpp"
 
 namespace dinam {
 
 struct Model;
-struct ForceSwitches;
 
 // The largest out-of-balance force on a free node relative to that node's weight m |g| (standard
 // gravity where the model has none), from the forces in state.force, and the node it is on.
@@ -23,19 +23,20 @@ std::pair<double, Index> relative_residual(const Model& model, const State& stat
 // in any step). Stops at the first restart whose out-of-balance force is at most `residual` of the
 // weight (0: never, run all the steps); positions and histories are left in `state`.
 SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
-                                       std::int64_t max_steps, double residual, State& state);
+                                       std::int64_t max_steps, double residual, State& state,
+                                       const StepOptions& options = {});
 
 // The viscous damping of the settling phase's first stage when the scene leaves it to dinam:
 // α = 8 √(g / D), D the size (bounding-box diagonal) of the free nodes, four times critical for
 // the slowest swing of the whole structure (ω ≈ √(g / D)), so that it creeps down instead.
 double automatic_settle_damping(const Model& model);
 
-// Viscous dynamic relaxation: at most `max_steps` steps of the model with global damping
-// `damping` (1/s) instead of its own, until the out-of-balance force is at most `handover` of
-// the weight (checked every 100 steps). Returns the steps taken; the residual is in `outcome`.
+// Viscous dynamic relaxation: at most `max_steps` steps of the model with `options` and global
+// damping `damping` (1/s) instead of its own, until the out-of-balance force is at most `handover`
+// of the weight (checked every 100 steps). Returns the steps taken; the residual is in `outcome`.
 std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches& switches,
-                             double damping, std::int64_t max_steps, double handover, State& state,
-                             SettleOutcome& outcome);
+                             const StepOptions& options, double damping, std::int64_t max_steps,
+                             double handover, State& state, SettleOutcome& outcome);
 
 // Runs the phase from `state` (at the mesh positions, at rest) with steps of dt: overdamped
 // viscous relaxation (model.settle.damping, automatic_settle_damping when empty; 0 skips it) until

@@ -2,6 +2,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string_view>
 
 #include "model/contact_builder.hpp"
 #include "model/derived_checks.hpp"
@@ -10,6 +11,7 @@
 #include "model/mass_scaling.hpp"
 #include "model/mesh_cleaning.hpp"
 #include "model/model.hpp"
+#include "model/model_arrays.hpp"
 #include "model/spring_builders.hpp"
 #include "model/vertex_welding.hpp"
 #include "model/wind_load.hpp"
@@ -370,16 +372,7 @@ void add_fields(const SceneDescription& scene, const std::vector<ObjectNodes>& o
 // The arrays grew by push_back, to up to twice their length: give the spare capacity back, since
 // a model lives as long as its run.
 void release_spare_capacity(Model& model) {
-  auto shrink = [](auto&... arrays) { (arrays.shrink_to_fit(), ...); };
-  shrink(model.node_initial_x, model.node_initial_v, model.node_mass, model.node_inv_mass,
-         model.node_object, model.node_uv);
-  shrink(model.bar_nodes, model.bar_rest_length, model.bar_axial_stiffness, model.bar_yield_force,
-         model.bar_damping, model.bar_radius, model.bar_on_face);
-  shrink(model.bend_nodes, model.bend_rest_angle, model.bend_stiffness, model.bend_yield_moment);
-  shrink(model.torsion_nodes, model.torsion_rest_angle, model.torsion_stiffness,
-         model.torsion_yield_moment);
-  shrink(model.face_offsets, model.face_nodes, model.wind.faces, model.wind.bars);
-  shrink(model.wind.nodes, model.wind.node_item_offsets, model.wind.node_items);
+  for_each_model_array(model, [](std::string_view, auto& array) { array.shrink_to_fit(); });
 }
 
 // The springs alone may vibrate at most this ω² for the finished model's limit, with the ground's

@@ -8,11 +8,18 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
+#include <cstdint>
 #include <fstream>
 #include <regex>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include "dynamics/integrator.hpp"
+#include "dynamics/state_arrays.hpp"
+#include "model/model.hpp"
+#include "model/model_arrays.hpp"
 #include "test_support.hpp"
 
 extern char** environ;
@@ -83,6 +90,58 @@ bool sanitized_build() {
 #else
   return false;
 #endif
+}
+
+// A scene with every kind of array: clamps, tearing, yielding, turbulent wind, the ground and
+// contact within the cloth.
+constexpr const char* kEveryArrayScene = R"(version: 1
+duration: 0.1
+wind: {velocity: [3, 0, 0], turbulence: {amplitude: 1, scale: 0.3}}
+contact: {self: true}
+objects:
+  - name: cloth
+    mesh:
+      grid: {width: 1, height: 1, columns: 12, rows: 12, diagonals: one}
+      translation: [0, 0, 0.6]
+    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001, yield_stress: 2.0e5,
+               breaking: {strain: 0.5}}
+    pinned: {box: {min: [-1, -1, 0], max: [0.001, 2, 1]}, clamped: true}
+)";
+
+// Every array the builder made holds what it needs and no more: the list of arrays
+// (model_arrays.hpp) reaches all of them, so none keeps the spare capacity of its growth.
+TEST(ModelArrays, NoArrayOfABuiltModelKeepsSpareCapacity) {
+  const Model model = build_model(test::scene_from_yaml(kEveryArrayScene));
+  ASSERT_GT(model.clamp_count(), 0);
+  ASSERT_TRUE(model.can_tear());
+  ASSERT_TRUE(model.bars_yield);
+  ASSERT_TRUE(model.contact.enabled);
+  ASSERT_TRUE(model.ground.enabled);
+  ASSERT_FALSE(model.wind.faces.empty());
+  int arrays = 0;
+  for_each_model_array(model, [&](std::string_view name, const auto& array) {
+    EXPECT_EQ(array.capacity(), array.size()) << name;
+    ++arrays;
+  });
+  EXPECT_GE(arrays, 50);
+}
+
+// The estimate of the state's bytes is worked out from the model's counts before the run; the
+// state make_state allocates must hold exactly that, array by array summed, with and without the
+// energy ledger.
+TEST(ModelArrays, StateEstimateIsWhatTheMadeStateHolds) {
+  const Model model = build_model(test::scene_from_yaml(kEveryArrayScene));
+  for (const bool energy : {false, true}) {
+    const State state = make_state(model, energy);
+    std::uint64_t held = 0;
+    for_each_state_array(
+        [&](std::string_view, StateArrayRole, const auto& array) {
+          using Element = typename std::decay_t<decltype(array)>::value_type;
+          held += array.capacity() * sizeof(Element);
+        },
+        state);
+    EXPECT_EQ(made_state_bytes(model, energy), held) << (energy ? "with" : "without") << " energy";
+  }
 }
 
 class MemoryEstimateTest : public ::testing::Test {
