@@ -19,13 +19,13 @@
 #include <string>
 #include <vector>
 
-#include "app/draw_list_from_model.hpp"
 #include "app/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "median_time.hpp"
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 
-#include "app/draw_list_from_model.hpp"
 #include "app/frame_source.hpp"
 #include "bench_scenes.hpp"
 #include "dynamics/stability.hpp"
@@ -14,6 +13,7 @@
 #include "render/osmesa_renderer.hpp"
 #include "rest_frame.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {

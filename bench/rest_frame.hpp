@@ -3,11 +3,11 @@
 // that time drawing alone (no simulation) share.
 #include <vector>
 
-#include "app/draw_list_from_model.hpp"
 #include "model/model.hpp"
 #include "render/draw_list.hpp"
 #include "render/framing.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 

@@ -16,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "app/draw_list_from_model.hpp"
 #include "bench_scenes.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/integrator.hpp"
@@ -26,6 +25,7 @@
 #include "model_measures.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "rest_frame.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {

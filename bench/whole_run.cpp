@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "app/draw_list_from_model.hpp"
 #include "app/frame_source.hpp"
 #include "bench_scenes.hpp"
 #include "cache/motion_cache.hpp"
@@ -29,6 +28,7 @@
 #include "model_measures.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {

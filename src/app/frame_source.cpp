@@ -6,14 +6,14 @@
 #include <cstdint>
 
 #include "app/command_support.hpp"
-#include "app/draw_list_from_model.hpp"
-#include "app/torn_drawing.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/subject_box.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
+#include "visual/torn_drawing.hpp"
 
 namespace dinam {
 

@@ -6,12 +6,12 @@
 #include <functional>
 #include <vector>
 
-#include "app/frame_cameras.hpp"
-#include "app/torn_drawing.hpp"
 #include "core/image.hpp"
 #include "dynamics/state.hpp"
 #include "render/framing.hpp"
 #include "render/renderer.hpp"
+#include "visual/frame_cameras.hpp"
+#include "visual/simulated_frames.hpp"
 
 namespace dinam {
 
@@ -25,29 +25,6 @@ struct TimeStep;
 // `blur.samples` instants spread evenly over `blur.shutter` of the frame interval, centred on the
 // frame (each at the step nearest its ideal time). Empty without blur.
 std::vector<int> shutter_offsets(const MotionBlurDesc& blur, int steps_per_frame);
-
-// Node positions of consecutive frames first_frame, first_frame + 1, … (frame k at
-// t = (k − 1)/fps), in single precision, and the bounds of the whole motion they belong to, which
-// frame the camera, the ground and the shadows: so frames drawn in chunks are those of one run.
-struct SimulatedFrames {
-  int first_frame = 1;
-  std::vector<std::vector<Vec3f>> positions;  // (frames held) × (n_nodes)
-  Bounds motion;                              // every position of every frame of the motion
-  Bounds subject;  // every frame's subject box (core/subject_box.hpp): what camera: auto frames
-  double seconds = 0.0;        // wall time spent simulating or reading
-  SettleOutcome settled;       // how the settling phase ended (simulated only)
-  std::vector<TornBar> tears;  // in the order they broke
-  // Motion blur: the positions of each frame's instants (frame after frame, instants_per_frame
-  // each) and their times; empty when each frame is one instant.
-  int instants_per_frame = 1;
-  std::vector<std::vector<Vec3f>> instants;  // (frames held × instants_per_frame) × (n_nodes)
-  std::vector<double> instant_times;         // s
-
-  int last_frame() const { return first_frame + static_cast<int>(positions.size()) - 1; }
-  const std::vector<Vec3f>& at(int frame) const {
-    return positions[static_cast<std::size_t>(frame - first_frame)];
-  }
-};
 
 // Runs the dynamics to frame `last`, calling `on_frame(frame, state)` at each frame's time.
 // With `shutter` (shutter_offsets), also `on_instant(frame, k, state)` at each frame's k-th

@@ -11,10 +11,10 @@
 #include "app/commands.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/run_estimate.hpp"
-#include "app/step_limits.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "core/memory_budget.hpp"
+
 namespace dinam {
 
 struct Model;
@@ -40,18 +42,6 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
 // Bytes of the state's arrays as make_state allocates them for `model` (dynamics/integrator.hpp),
 // before any step has split the work between the threads or found a contact pair.
 std::uint64_t made_state_bytes(const Model& model, bool energy);
-
-// The memory this process may still take, and where the figure came from.
-struct MemoryBudget {
-  std::uint64_t bytes = 0;
-  std::string source;  // e.g. "MemAvailable in /proc/meminfo"
-};
-
-// The smallest of: the system's MemAvailable, the cgroup's memory.max less its memory.current
-// (a container's or a Slurm job's limit), and $DINAM_MEMORY_LIMIT (bytes, or with a K, M, G or T
-// suffix; 0 means no limit). Throws UserError when $DINAM_MEMORY_LIMIT cannot be read. Returns a
-// budget of no bytes and an empty source when none can be found.
-MemoryBudget available_memory();
 
 // Throws UserError naming the scene, the estimate by part, the budget and what to do, when the
 // estimate passes the budget and `force` is off.

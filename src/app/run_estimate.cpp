@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "app/command_support.hpp"
-#include "app/step_limits.hpp"
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
+#include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {

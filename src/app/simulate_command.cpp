@@ -6,19 +6,19 @@
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
-#include "app/draw_list_from_model.hpp"
 #include "app/energy_csv.hpp"
 #include "app/frame_source.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
 #include "app/run_estimate.hpp"
-#include "app/torn_drawing.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
+#include "visual/torn_drawing.hpp"
 
 namespace dinam {
 namespace {

@@ -4,11 +4,11 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "app/draw_list_from_model.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "render/camera.hpp"
 #include "test_support.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/draw_list_from_model.hpp"
 #include "app/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -14,6 +13,7 @@
 #include "render/draw_list.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "test_support.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {

@@ -1,4 +1,4 @@
-#include "app/torn_drawing.hpp"
+#include "visual/torn_drawing.hpp"
 
 #include "dynamics/state.hpp"
 #include "model/model.hpp"

@@ -1,4 +1,4 @@
-#include "app/draw_list_from_model.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,14 @@
-#include "app/frame_cameras.hpp"
+#include "visual/frame_cameras.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "app/frame_source.hpp"
 #include "model/model.hpp"
 #include "render/camera_path.hpp"
 #include "render/framing.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/simulated_frames.hpp"
 
 namespace dinam {
 namespace {

@@ -1,3 +1,4 @@
+// dinam render: a scene (or a motion cache) drawn frame by frame into PNG files and a movie.
 #include "app/commands.hpp"
 
 #include <fmt/format.h>
@@ -6,11 +7,9 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <set>
 #include <system_error>
 
 #include "app/command_support.hpp"
-#include "app/draw_list_from_model.hpp"
 #include "app/energy_csv.hpp"
 #include "app/frame_folder.hpp"
 #include "app/frame_range.hpp"
@@ -29,31 +28,9 @@
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
-namespace {
-
-// "1,5-7,12" → {1, 5, 6, 7, 12}, each within 1..frame_count.
-std::vector<int> parse_frame_list(const std::string& text, int frame_count) {
-  std::set<int> frames;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item =
-        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const FrameRange range = parse_frame_range(item, frame_count);
-    for (int f = range.first; f <= range.last; ++f) {
-      frames.insert(f);
-    }
-    if (comma == std::string::npos) {
-      break;
-    }
-    start = comma + 1;
-  }
-  return {frames.begin(), frames.end()};
-}
-
-}  // namespace
 
 int run_render(const RenderOptions& options) {
   // Everything that can be wrong with the input is found before the first file is written.
@@ -224,78 +201,6 @@ int run_render(const RenderOptions& options) {
                cache ? "read the cache" : "simulate", frames.seconds, draw_seconds);
   }
   return exit_code;
-}
-
-int run_snapshot(const SnapshotOptions& options) {
-  SceneDescription scene = read_scene(options.scene);
-  parse_image_size(options.size, scene.image_width, scene.image_height);
-  const int count = scene.frame_count();
-  const std::vector<int> chosen = options.frames ? parse_frame_list(*options.frames, count)
-                                                 : std::vector<int>{1, (count + 1) / 2, count};
-  const Model model = build_model_telling_warnings(scene);
-  const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
-  std::vector<Image> textures = read_textures(scene);
-  const std::filesystem::path output =
-      options.output.value_or(std::filesystem::path("out/snapshot") / scene.name);
-
-  // The whole motion frames the camera, so a frame looks as it does in the movie.
-  const SimulatedFrames frames =
-      simulate_frames(model, timestep, count, false, {}, &scene.quality.motion_blur);
-  const DrawList draw_list = make_draw_list(scene, model, frames.motion, std::move(textures));
-  const FrameCameras cameras = frame_cameras(scene, model, frames);
-  OsmesaRenderer renderer(render_settings(scene));
-
-  int failures = 0;
-  Image image;
-  for (const int frame : chosen) {
-    draw_frames(renderer, draw_list, frames, cameras, frame, frame,
-                [&](int, const Image& drawn) { image = drawn; });
-    const std::string name = fmt::format("{}_{:04}", scene.name, frame);
-    const std::filesystem::path golden = options.golden / (name + ".png");
-    std::error_code ec;
-    const bool have_golden = std::filesystem::is_regular_file(golden, ec);
-    if (options.update) {
-      create_folder(options.golden);
-      write_png(golden, image, PngOptions{9, true});  // goldens are kept: make them small
-      if (!options.quiet) {
-        fmt::print("snapshot {}: {} {}\n", name, have_golden ? "updated" : "created",
-                   golden.string());
-      }
-      continue;
-    }
-    if (!have_golden) {
-      fmt::print(stderr, "snapshot {}: no golden image {}; run with --update to create it\n", name,
-                 golden.string());
-      ++failures;
-      continue;
-    }
-    const Image expected = read_png(golden);
-    const ImageComparison comparison = compare_images(image, expected, options.tolerance.threshold);
-    if (comparison.matches(options.tolerance)) {
-      if (!options.quiet) {
-        fmt::print("snapshot {}: ok ({:.3f} % of pixels differ, mean error {:.3f})\n", name,
-                   100.0 * comparison.differing_fraction, comparison.mean_error);
-      }
-      continue;
-    }
-    ++failures;
-    create_folder(output);
-    const std::filesystem::path actual_path = output / (name + "_actual.png");
-    const std::filesystem::path expected_path = output / (name + "_expected.png");
-    const std::filesystem::path diff_path = output / (name + "_diff.png");
-    write_png(actual_path, image);
-    write_png(expected_path, expected);
-    write_png(diff_path, comparison.difference);
-    fmt::print(stderr,
-               "snapshot {}: DIFFERS{}: {:.3f} % of pixels differ by more than {} (allowed {:.3f} "
-               "%), mean error {:.3f} (allowed {:.3f})\n  actual:     {}\n  expected:   {}\n  "
-               "difference: {}\n",
-               name, comparison.same_size ? "" : " (size)", 100.0 * comparison.differing_fraction,
-               options.tolerance.threshold, 100.0 * options.tolerance.max_differing_fraction,
-               comparison.mean_error, options.tolerance.max_mean_error, actual_path.string(),
-               expected_path.string(), diff_path.string());
-  }
-  return failures == 0 ? kExitOk : kExitFailure;
 }
 
 }  // namespace dinam

@@ -1,4 +1,4 @@
-#include "app/step_limits.hpp"
+#include "model/step_limits.hpp"
 
 #include <fmt/format.h>
 
