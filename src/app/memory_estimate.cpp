@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "dynamics/contact_grid.hpp"
 #include "dynamics/object_contact_state.hpp"
+#include "dynamics/spring_kinds.hpp"
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"
@@ -78,13 +79,15 @@ std::uint64_t model_bytes(const Model& model) {
 std::uint64_t made_state_bytes(const Model& model, bool energy) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
   const auto bars = static_cast<std::uint64_t>(model.bar_count());
-  const auto bends = static_cast<std::uint64_t>(model.bend_count());
-  const auto torsions = static_cast<std::uint64_t>(model.torsion_count());
-  const auto clamps = static_cast<std::uint64_t>(model.clamp_count());
-  // Plastic sets for the kinds that can yield and every clamp, and while the energy is tracked
-  // each one's flow.
-  const std::uint64_t yielding = (model.bars_yield ? bars : 0) + (model.bends_yield ? bends : 0) +
-                                 (model.torsions_yield ? torsions : 0) + clamps;
+  // Plastic sets for the kinds of spring that can yield, and while the energy is tracked each
+  // one's flow; with tearing, a broken flag for every spring.
+  std::uint64_t yielding = 0;
+  std::uint64_t springs = 0;
+  for (const SpringKind* kind : kSpringKinds) {
+    const auto count = static_cast<std::uint64_t>(kind->count(model));
+    yielding += kind->yields(model) ? count : 0;
+    springs += count;
+  }
   std::uint64_t bytes = nodes * 5 * sizeof(Vec3);  // x, v_half, force, x_next, v_next
   bytes += yielding * sizeof(double) * (energy ? 2 : 1);
   if (model.wind.field.enabled) {  // each face's and bar's drag, and the wind at each node
@@ -97,9 +100,8 @@ std::uint64_t made_state_bytes(const Model& model, bool energy) {
   if (energy) {
     bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_whole
   }
-  if (model.can_tear()) {  // a broken flag per bar, spring and face, and the list of bars
-    bytes += bars + bends + torsions + clamps + static_cast<std::uint64_t>(model.face_count()) +
-             bars * sizeof(Index);
+  if (model.can_tear()) {  // a broken flag per spring and face, and the list of broken bars
+    bytes += springs + static_cast<std::uint64_t>(model.face_count()) + bars * sizeof(Index);
   }
   if (model.contact.enabled) {  // a box and a flag per bar and triangle, a reference per node
     const auto triangles = static_cast<std::uint64_t>(model.contact.triangle_face.size());

@@ -8,6 +8,7 @@
 #include "core/types.hpp"
 #include "dynamics/elastoplastic.hpp"
 #include "dynamics/force_context.hpp"
+#include "dynamics/spring_kind.hpp"
 
 namespace dinam {
 
@@ -51,5 +52,8 @@ void add_axial_damper_forces(ForceContext& context);
 
 // Σ ½ k (L − L0 − p)² over all bars, J.
 double axial_spring_energy(const Model& model, const State& state);
+
+// The entry of spring_kinds.hpp.
+extern const SpringKind kAxialSprings;
 
 }  // namespace dinam

@@ -10,6 +10,7 @@
 #include "core/types.hpp"
 #include "dynamics/elastoplastic.hpp"
 #include "dynamics/force_context.hpp"
+#include "dynamics/spring_kind.hpp"
 
 namespace dinam {
 
@@ -91,5 +92,8 @@ struct BendingSpringResult {
 
 void add_bending_spring_forces(ForceContext& context);
 double bending_spring_energy(const Model& model, const State& state);
+
+// The entry of spring_kinds.hpp.
+extern const SpringKind kBendingSprings;
 
 }  // namespace dinam

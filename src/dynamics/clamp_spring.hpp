@@ -3,6 +3,7 @@
 // fixed ghost point g = x_c + (c₀ − a₀), rest angle π, so that the bar keeps its rest direction
 // there. The support takes the shares of c and g; a feels the rest.
 #include "dynamics/force_context.hpp"
+#include "dynamics/spring_kind.hpp"
 
 namespace dinam {
 
@@ -12,5 +13,8 @@ struct Model;
 // nodes.
 void add_clamp_forces(ForceContext& context);
 double clamp_spring_energy(const Model& model, const State& state);
+
+// The entry of spring_kinds.hpp.
+extern const SpringKind kClampSprings;
 
 }  // namespace dinam

@@ -1,11 +1,8 @@
 #include "dynamics/energy.hpp"
 
-#include "dynamics/axial_spring.hpp"
-#include "dynamics/bending_spring.hpp"
-#include "dynamics/clamp_spring.hpp"
 #include "dynamics/ground_contact.hpp"
 #include "dynamics/object_contact.hpp"
-#include "dynamics/torsion_spring.hpp"
+#include "dynamics/spring_kinds.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -33,9 +30,9 @@ EnergyReport energy_report(const Model& model, const State& state,
   EnergyReport report;
   report.time = state.time;
   report.kinetic = kinetic_energy(model, v_whole);
-  report.axial = axial_spring_energy(model, state);
-  report.bending = bending_spring_energy(model, state) + clamp_spring_energy(model, state);
-  report.torsion = torsion_spring_energy(model, state);
+  for (const SpringKind* kind : kSpringKinds) {  // clamps are booked with the bending springs
+    report.*kind->report += kind->energy(model, state);
+  }
   report.gravitational = gravitational_energy(model, state.x);
   report.contact = ground_contact_energy(model, state) + object_contact_energy(state);
   report.accounts = state.energy;

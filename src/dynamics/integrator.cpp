@@ -7,9 +7,6 @@
 
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
-#include "dynamics/axial_spring.hpp"
-#include "dynamics/bending_spring.hpp"
-#include "dynamics/clamp_spring.hpp"
 #include "dynamics/contact_pairs.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/field_forces.hpp"
@@ -19,8 +16,8 @@
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/settle.hpp"
+#include "dynamics/spring_kinds.hpp"
 #include "dynamics/tearing.hpp"
-#include "dynamics/torsion_spring.hpp"
 #include "dynamics/wind.hpp"
 #include "model/model.hpp"
 
@@ -114,13 +111,13 @@ void write_plastic_sets_put_aside(State& state) {
 void add_forces(const Worker& worker, const Model& model, const ForceSwitches& switches,
                 const StepOptions& options, State& state, bool update_history) {
   EnergyWorkspace& ledger = state.energy_workspace;
-  auto kind = [&](std::vector<Vec3>& part) {
+  auto booked_in = [&](std::vector<Vec3>& part) {
     return ForceContext{model, state, state.force, update_history, ledger.enabled ? &part : nullptr,
                         worker};
   };
   ForceContext total{model, state, state.force, update_history, nullptr, worker};
-  ForceContext wind = kind(ledger.wind);
-  ForceContext damping = kind(ledger.damping);
+  ForceContext wind = booked_in(ledger.wind);
+  ForceContext damping = booked_in(ledger.damping);
 
   // 1. Aerodynamic drag on each face and bar in the wind, into the wind's own arrays (the team
   //    meets after it).
@@ -141,7 +138,7 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
     add_gravity_forces(total);
   }
   if (switches.fields) {
-    ForceContext fields = kind(ledger.field);
+    ForceContext fields = booked_in(ledger.field);
     add_field_forces(fields);
   }
   if (switches.wind) {
@@ -154,16 +151,11 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
     add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
                               ledger.enabled ? &ledger.friction : nullptr);
   }
-  // 3. The springs, kind by kind in spring order, then the bars' dampers.
-  if (switches.axial_springs) {
-    add_axial_spring_forces(total);
-  }
-  if (switches.bending) {
-    add_bending_spring_forces(total);
-    add_clamp_forces(total);
-  }
-  if (switches.torsion) {
-    add_torsion_spring_forces(total);
+  // 3. The springs, kind by kind (spring_kinds.hpp) in spring order, then the bars' dampers.
+  for (const SpringKind* kind : kSpringKinds) {
+    if (switches.*kind->switched) {
+      kind->add_forces(total);
+    }
   }
   if (switches.axial_dampers) {
     add_axial_damper_forces(damping);
@@ -190,9 +182,8 @@ void book_plastic_flow(State& state) {
   if (!ledger.enabled) {
     return;
   }
-  for (const std::vector<double>* flow :
-       {&ledger.bar_flow, &ledger.bend_flow, &ledger.clamp_flow, &ledger.torsion_flow}) {
-    for (const double work : *flow) {
+  for (const SpringKind* kind : kSpringKinds) {
+    for (const double work : ledger.*kind->flow) {
       state.energy.plastic_dissipation += work;
     }
   }
@@ -289,10 +280,9 @@ State make_state(const Model& model, bool track_energy) {
   state.x_next.assign(n, Vec3::Zero());
   state.v_next.assign(n, Vec3::Zero());
   // Plastic sets only for the kinds that can yield (model.hpp).
-  state.bar_plastic_set.assign(model.bars_yield ? model.bar_count() : 0, 0.0);
-  state.bend_plastic_set.assign(model.bends_yield ? model.bend_count() : 0, 0.0);
-  state.torsion_plastic_set.assign(model.torsions_yield ? model.torsion_count() : 0, 0.0);
-  state.clamp_plastic_set.assign(model.clamp_count(), 0.0);
+  for (const SpringKind* kind : kSpringKinds) {
+    (state.*kind->plastic_set).assign(kind->yields(model) ? kind->count(model) : 0, 0.0);
+  }
   // Contact history where there is a ground: an elastic structure in the air carries none
   // (memory is part of speed for large models).
   if (model.ground.enabled) {
@@ -312,10 +302,9 @@ State make_state(const Model& model, bool track_energy) {
     }
     ledger.v_whole.assign(n, Vec3::Zero());
     // The flow's work of each spring of the kinds that can yield.
-    ledger.bar_flow.assign(model.bars_yield ? model.bar_count() : 0, 0.0);
-    ledger.bend_flow.assign(model.bends_yield ? model.bend_count() : 0, 0.0);
-    ledger.torsion_flow.assign(model.torsions_yield ? model.torsion_count() : 0, 0.0);
-    ledger.clamp_flow.assign(model.clamp_count(), 0.0);
+    for (const SpringKind* kind : kSpringKinds) {
+      (ledger.*kind->flow).assign(kind->yields(model) ? kind->count(model) : 0, 0.0);
+    }
   }
   return state;
 }

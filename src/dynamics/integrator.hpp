@@ -20,6 +20,7 @@ struct ForceSwitches {
   bool axial_dampers = true;
   bool bending = true;
   bool torsion = true;
+  bool clamps = true;  // clamped supports' bending springs
   bool global_damping = true;
   bool wind = true;
   bool ground = true;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "dynamics/integrator.hpp"
+#include "dynamics/spring_kinds.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -12,14 +13,8 @@ namespace {
 // its lattice, about 100 000 of each kind; docs/performance.md, "Every force kind against the
 // springs"). Measure again and update them when a kernel changes: nothing else depends on them
 // but the estimates that `info` prints and `render` and `simulate` refuse long runs on.
+// The springs' costs are their kinds' (spring_kind.hpp).
 struct ItemCosts {
-  double axial = 5.5;           // a bar's elastic axial spring
-  double axial_yielding = 6.6;  // … of a kind that can yield
-  double bending = 14.5;        // a bending spring
-  double bending_yielding = 18.2;
-  double torsion = 23.2;  // a torsion spring
-  double torsion_yielding = 25.0;
-  double clamp = 20.0;          // a clamp: a bending spring on one side, serial
   double damper = 5.3;          // a bar's axial damper
   double node = 5.4;            // gravity, clearing and the integrator, per node
   double global_damping = 1.3;  // per node
@@ -49,13 +44,10 @@ StepCost estimate_step_cost(const Model& model, int threads) {
     }
   };
   const double nodes = static_cast<double>(model.node_count());
-  add("axial springs", static_cast<double>(model.bar_count()),
-      model.bars_yield ? kCosts.axial_yielding : kCosts.axial);
-  add("bending springs", static_cast<double>(model.bend_count()),
-      model.bends_yield ? kCosts.bending_yielding : kCosts.bending);
-  add("torsion springs", static_cast<double>(model.torsion_count()),
-      model.torsions_yield ? kCosts.torsion_yielding : kCosts.torsion);
-  add("clamps", static_cast<double>(model.clamp_count()), kCosts.clamp);
+  for (const SpringKind* kind : kSpringKinds) {
+    add(kind->name, static_cast<double>(kind->count(model)),
+        kind->yields(model) ? kind->ns_per_item_yielding : kind->ns_per_item);
+  }
   add("axial dampers", model.any_bar_damping ? static_cast<double>(model.bar_count()) : 0.0,
       kCosts.damper);
   add("nodes and integrator", nodes, kCosts.node);

@@ -2,18 +2,18 @@
 
 #include <cmath>
 
-#include "dynamics/axial_spring.hpp"
-#include "dynamics/bending_spring.hpp"
-#include "dynamics/clamp_spring.hpp"
-#include "dynamics/torsion_spring.hpp"
+#include "dynamics/spring_kinds.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
 namespace {
 
 double elastic_energy(const Model& model, const State& state) {
-  return axial_spring_energy(model, state) + bending_spring_energy(model, state) +
-         torsion_spring_energy(model, state) + clamp_spring_energy(model, state);
+  double energy = 0.0;
+  for (const SpringKind* kind : kSpringKinds) {
+    energy += kind->energy(model, state);
+  }
+  return energy;
 }
 
 bool past_its_limit(const Model& model, const State& state, Index b) {
@@ -36,17 +36,7 @@ void break_bar(const Model& model, Index b, State& state) {
   state.broken_bars.push_back(b);
   for (Index k = model.bar_spring_offsets[b]; k < model.bar_spring_offsets[b + 1]; ++k) {
     const Index id = model.bar_springs[k] / 3;
-    switch (model.bar_springs[k] % 3) {
-      case kTornBend:
-        state.bend_broken[id] = 1;
-        break;
-      case kTornTorsion:
-        state.torsion_broken[id] = 1;
-        break;
-      default:
-        state.clamp_broken[id] = 1;
-        break;
-    }
+    (state.*spring_kind_torn_as(model.bar_springs[k] % 3).broken)[id] = 1;
   }
   for (Index k = model.bar_face_offsets[b]; k < model.bar_face_offsets[b + 1]; ++k) {
     state.face_broken[model.bar_faces[k]] = 1;
@@ -59,10 +49,9 @@ void prepare_tearing(const Model& model, State& state) {
   if (!model.can_tear()) {
     return;
   }
-  state.bar_broken.assign(model.bar_count(), 0);
-  state.bend_broken.assign(model.bend_count(), 0);
-  state.torsion_broken.assign(model.torsion_count(), 0);
-  state.clamp_broken.assign(model.clamp_count(), 0);
+  for (const SpringKind* kind : kSpringKinds) {  // the axial springs' flags are the bars'
+    (state.*kind->broken).assign(kind->count(model), 0);
+  }
   state.face_broken.assign(model.face_count(), 0);
   state.broken_bars.reserve(static_cast<std::size_t>(model.bar_count()));  // steps allocate nothing
 }

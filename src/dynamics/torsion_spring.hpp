@@ -10,6 +10,7 @@
 #include "core/types.hpp"
 #include "dynamics/elastoplastic.hpp"
 #include "dynamics/force_context.hpp"
+#include "dynamics/spring_kind.hpp"
 
 namespace dinam {
 
@@ -140,5 +141,8 @@ struct Sin2Gradient {
 
 void add_torsion_spring_forces(ForceContext& context);
 double torsion_spring_energy(const Model& model, const State& state);
+
+// The entry of spring_kinds.hpp.
+extern const SpringKind kTorsionSprings;
 
 }  // namespace dinam

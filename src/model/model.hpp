@@ -180,7 +180,7 @@ struct Model {
   std::vector<Index> clamp_nodes;          // (n_clamps × 2) c, a
   std::vector<Vec3> clamp_ghost_offset;    // (n_clamps) m, g − c
   std::vector<double> clamp_stiffness;     // (n_clamps) N·m/rad
-  std::vector<double> clamp_yield_moment;  // (n_clamps) N·m; infinite when elastic
+  std::vector<double> clamp_yield_moment;  // (n_clamps, or 0 if none yields) N·m; ∞: elastic
 
   // Tearing (model/tearing.cpp), empty when no material can break: a bar breaks for good once its
   // strain or tension reaches its limit, and every spring standing on it goes with it, as does
@@ -202,6 +202,7 @@ struct Model {
   bool bars_yield = false;
   bool bends_yield = false;
   bool torsions_yield = false;
+  bool clamps_yield = false;
 
   std::vector<ModelObject> objects;
   Vec3 gravity = Vec3::Zero();  // m/s²

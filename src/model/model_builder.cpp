@@ -328,6 +328,7 @@ void note_yielding_kinds(Model& model) {
   model.bars_yield = yields(model.bar_yield_force);
   model.bends_yield = yields(model.bend_yield_moment);
   model.torsions_yield = yields(model.torsion_yield_moment);
+  model.clamps_yield = yields(model.clamp_yield_moment);
 }
 
 // Marks the bars that are an edge of some mesh face, found through each node's bars.

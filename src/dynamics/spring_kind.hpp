@@ -1,0 +1,41 @@
+#pragma once
+// A kind of spring, described once (the idea of IPC Toolkit's potentials behind one generic
+// assembly, and of MuJoCo's tables): what the step, the energy report, tearing, the state's
+// allocation, the memory estimate and the run-time estimate need of it. Each kind's entry sits in
+// its own file beside its kernel (axial_spring.cpp, …); spring_kinds.hpp lists them in the order a
+// step adds their forces. A new kind of spring is its kernel and entry, its arrays in model.hpp
+// and state.hpp (and their lists), its builder and reader, and one line in spring_kinds.hpp; a
+// Hessian, when Newton needs one, is one more member here.
+#include <cstdint>
+#include <vector>
+
+#include "core/types.hpp"
+#include "dynamics/force_context.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/state.hpp"
+
+namespace dinam {
+
+struct Model;
+
+struct SpringKind {
+  const char* name;               // "bending springs": in reports and the run-time estimate
+  bool ForceSwitches::*switched;  // its switch: off, the step leaves it out (tests isolate kinds)
+  Index (*count)(const Model&);   // how many the model has
+  bool (*yields)(const Model&);   // whether some can flow plastically; if none, the state keeps
+                                  // no plastic sets or flows for the kind (model.hpp)
+  void (*add_forces)(ForceContext&);             // on the context worker's own nodes
+  double (*energy)(const Model&, const State&);  // J, elastic, of the springs not broken
+  double EnergyReport::*report;                  // the report's line it is booked on
+  std::vector<double> State::*plastic_set;       // (count, or empty when none yields)
+  std::vector<double> EnergyWorkspace::*flow;    // J its flow dissipated in the last step
+  std::vector<std::uint8_t> State::*broken;      // tearing: 1 for a broken one (empty: cannot)
+  Index torn_code;  // how Model::bar_springs names it (kTornBend, …); −1 for the bar's own spring
+  // Nanoseconds per spring on one thread, elastic and of a kind that can yield, from
+  // `build/bench/bench_force_costs` (docs/performance.md, "Every force kind against the springs");
+  // only the run-time estimate (step_cost.hpp) reads them. Measure again when a kernel changes.
+  double ns_per_item;
+  double ns_per_item_yielding;
+};
+
+}  // namespace dinam
