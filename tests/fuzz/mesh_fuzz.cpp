@@ -1,10 +1,18 @@
-// libFuzzer target: any bytes as a mesh file, through loading, the scene's checks on the mesh and
-// model building. assimp guesses the format from the bytes, as it does for a file with an unknown
-// extension. A UserError is a refusal a user would see; anything else is a bug. Crashes inside
-// assimp itself are contained by load_mesh_file's child process, not here: they are kept in
-// tests/fuzz/assimp-failures/ and replayed through `dinam info` (tests/fuzz/CMakeLists.txt).
+// libFuzzer target: any bytes as a mesh file, through the path a scene's mesh file takes: written
+// to a file, imported by assimp in a child process (scene/isolated_import.hpp), sent back in the
+// wire form (scene/mesh_wire.hpp), checked, and built into a model. assimp guesses the format from
+// the bytes, as it does for a file with an unknown extension. A UserError is a refusal a user would
+// see; anything else is a bug. A crash inside assimp is the child's and becomes a UserError: such
+// files are kept in tests/fuzz/assimp-failures/ and replayed through `dinam info`
+// (tests/fuzz/CMakeLists.txt). The child's coverage does not reach libFuzzer; the mesh_wire
+// target fuzzes what the parent reads from it.
+#include <unistd.h>
+
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "core/error.hpp"
 #include "model/model.hpp"
@@ -19,7 +27,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     scene.fps = 24.0;
     ObjectDesc object;
     object.name = "fuzzed";
-    object.mesh = load_mesh_bytes(data, size, "", FileLoc{"fuzz"});
+    // No extension: assimp then tries every format it reads against the bytes.
+    static const std::filesystem::path file =
+        std::filesystem::temp_directory_path() / ("dinam-fuzz-mesh-" + std::to_string(getpid()));
+    std::ofstream(file, std::ios::binary | std::ios::trunc)
+        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    object.mesh = load_mesh_file(file, FileLoc{"fuzz"});
     check_mesh_values(object.mesh, FileLoc{"fuzz"}, "the fuzzed mesh");
     if (object.mesh.vertices.size() > 100'000) {
       return 0;  // a valid but large model: building it only costs time
