@@ -1,6 +1,7 @@
 #pragma once
 // The scene readers that more than one file of the scene stage uses: scene_reader.cpp reads the
-// scene's top level and its forces, object_reader.cpp its objects. Each reader takes a YamlMap,
+// scene's top level and its forces, object_reader.cpp its objects, material_reader.cpp and
+// mesh_reader.cpp their materials and meshes. Each reader takes a YamlMap,
 // reads every key it knows and finishes the map (docs/scene-format.md documents every key).
 #include <cstddef>
 #include <filesystem>
@@ -18,6 +19,18 @@ void require_positive(double value, const FileLoc& loc, const std::string& what,
 // and the masses, stiffnesses and the stable step derived from it leave double precision.
 void require_in_range(double value, double low, double high, const FileLoc& loc,
                       const std::string& what, const char* unit);
+
+// An object's `material`: density, stiffness, section, yield and breaking, with the values derived
+// from them (section properties from the radius, yield moments from the yield stress).
+MaterialDesc read_material(YamlMap map);
+
+// One entry of an object's `parts`: which bars (exactly one of `nodes`, `mesh_material`,
+// `mesh_group`, the names from `mesh`) and their `material`.
+MaterialPartDesc read_material_part(YamlMap part, const RawMesh& mesh);
+
+// An object's `mesh`: exactly one of `file`, `grid` or `polyline`, then the units and placement.
+// Fills the object's mesh, in world space, and its `weld`.
+void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDesc& object);
 
 // A time profile: constant, step, ramp or sine.
 TimeProfile read_profile(YamlMap map);

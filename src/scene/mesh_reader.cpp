@@ -1,0 +1,162 @@
+// The reader of an object's `mesh`: a file, a grid or a polyline, its units and placement, and
+// `weld`. docs/scene-format.md documents every key read here; keep the two together.
+#include <yaml-cpp/yaml.h>
+
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "scene/element_readers.hpp"
+#include "scene/mesh_generators.hpp"
+#include "scene/mesh_loader.hpp"
+#include "scene/scene_description.hpp"
+#include "scene/yaml_map.hpp"
+
+namespace dinam {
+namespace {
+
+Transform read_transform(YamlMap& map) {
+  Transform transform;
+  const YAML::Node scale = map.get("scale");
+  if (scale && scale.IsScalar()) {
+    transform.scale = Vec3::Constant(as_double(scale, map.file(), map.path("scale")));
+  } else if (scale) {
+    transform.scale = as_vec3(scale, map.file(), map.path("scale"));
+  }
+  if ((transform.scale.array() <= 0.0).any()) {
+    throw_user_error(map.loc("scale"), "'{}' must be positive", map.path("scale"));
+  }
+  transform.rotation_degrees = map.vec3("rotation", transform.rotation_degrees);
+  transform.translation = map.vec3("translation", transform.translation);
+  return transform;
+}
+
+GridSpec read_grid(YamlMap map) {
+  GridSpec grid;
+  grid.width = map.required_number("width");
+  require_positive(grid.width, map.loc("width"), map.path("width"), "m");
+  grid.height = map.required_number("height");
+  require_positive(grid.height, map.loc("height"), map.path("height"), "m");
+  grid.columns = map.integer("columns", grid.columns);
+  grid.rows = map.integer("rows", grid.rows);
+  for (const char* key : {"columns", "rows"}) {
+    const int n = std::string(key) == "columns" ? grid.columns : grid.rows;
+    if (n < 1 || n > 4096) {
+      throw_user_error(map.loc(key), "'{}' must be between 1 and 4096, got {}", map.path(key), n);
+    }
+  }
+  const std::string diagonals = map.string("diagonals", "one");
+  if (diagonals == "none") {
+    grid.diagonals = GridDiagonals::kNone;
+  } else if (diagonals == "one") {
+    grid.diagonals = GridDiagonals::kOne;
+  } else if (diagonals == "both") {
+    grid.diagonals = GridDiagonals::kBoth;
+  } else {
+    throw_user_error(map.loc("diagonals"), "'{}' must be none, one or both; got '{}'",
+                     map.path("diagonals"), diagonals);
+  }
+  map.finish();
+  return grid;
+}
+
+PolylineSpec read_polyline(YamlMap map) {
+  PolylineSpec polyline;
+  const YAML::Node points = map.get("points");
+  if (!points || !points.IsSequence() || points.size() < 2) {
+    throw_user_error(map.loc("points"), "'{}' must be a list of at least two points [x, y, z]",
+                     map.path("points"));
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    polyline.points.push_back(
+        as_vec3(points[i], map.file(), fmt::format("{}[{}]", map.path("points"), i)));
+  }
+  polyline.segments_per_span = map.integer("segments", polyline.segments_per_span);
+  if (polyline.segments_per_span < 1 || polyline.segments_per_span > 100000) {
+    throw_user_error(map.loc("segments"), "'{}' must be between 1 and 100000, got {}",
+                     map.path("segments"), polyline.segments_per_span);
+  }
+  map.finish();
+  return polyline;
+}
+
+// The length of one of the mesh's units in metres: `units` when given, else what the file states
+// (FBX), else 1 (the file is taken to be in metres).
+double read_units(YamlMap& map, const RawMesh& mesh) {
+  if (!map.has("units")) {
+    map.get("units");  // known, absent
+    return mesh.metres_per_unit.value_or(1.0);
+  }
+  static constexpr std::array<std::pair<const char*, double>, 5> kUnits = {
+      {{"mm", 1e-3}, {"cm", 1e-2}, {"m", 1.0}, {"in", 0.0254}, {"ft", 0.3048}}};
+  const std::string units = map.string("units", "");
+  for (const auto& [name, metres] : kUnits) {
+    if (units == name) {
+      return metres;
+    }
+  }
+  throw_user_error(map.loc("units"), "'{}' must be mm, cm, m, in or ft; got '{}'",
+                   map.path("units"), units);
+}
+
+// Reads `weld`: the fraction of the object's median bar length below which a bar is collapsed.
+void read_weld(YamlMap& map, ObjectDesc& object) {
+  object.weld_loc = map.has("weld") ? map.loc("weld") : map.loc();
+  if (map.has("weld") && map.string("weld", "") == "off") {
+    object.weld_fraction = 0.0;
+    return;
+  }
+  object.weld_fraction = map.number("weld", object.weld_fraction);
+  require_in_range(object.weld_fraction, 0.0, 0.5, map.loc("weld"), map.path("weld"),
+                   "(a fraction of the median bar length)");
+}
+
+}  // namespace
+
+void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDesc& object) {
+  const int sources = int{map.has("file")} + int{map.has("grid")} + int{map.has("polyline")};
+  if (sources != 1) {
+    throw_user_error(map.loc(),
+                     "'{}' needs exactly one source: 'file' (a path read with assimp), 'grid' or "
+                     "'polyline'",
+                     map.name());
+  }
+  RawMesh& mesh = object.mesh;
+  if (map.has("file")) {
+    const std::filesystem::path file = map.string("file", "");
+    mesh = load_mesh_file(file.is_absolute() ? file : scene_folder / file, map.loc("file"));
+  } else if (map.has("grid")) {
+    mesh = make_grid(read_grid(YamlMap(map.get("grid"), map.file(), map.path("grid"))));
+  } else {
+    mesh = make_polyline(
+        read_polyline(YamlMap(map.get("polyline"), map.file(), map.path("polyline"))));
+  }
+  if (map.has("fit") && (map.has("scale") || map.has("units"))) {
+    throw_user_error(map.loc("fit"),
+                     "'{}' sets the size itself: give it, or 'scale' and 'units', not both",
+                     map.path("fit"));
+  }
+  Transform transform = read_transform(map);
+  transform.scale *= read_units(map, mesh);
+  if (map.has("fit")) {
+    YamlMap fit(map.get("fit"), map.file(), map.path("fit"));
+    const double size = fit.required_number("size");
+    require_in_range(size, 1e-6, 1e5, fit.loc("size"), fit.path("size"), "m");
+    fit.finish();
+    const Vec3 translation = transform.translation;
+    transform.translation.setZero();
+    apply_transform(transform, mesh);
+    fit_to_size(size, mesh);
+    apply_transform({Vec3::Ones(), Vec3::Zero(), translation}, mesh);
+  } else {
+    apply_transform(transform, mesh);
+  }
+  read_weld(map, object);
+  map.finish();
+  object.mesh_source = map.has("file") ? fmt::format("mesh file '{}'", map.string("file", ""))
+                                       : std::string("the generated mesh");
+  check_mesh_values(mesh, map.has("file") ? map.loc("file") : map.loc(), object.mesh_source);
+}
+
+}  // namespace dinam
