@@ -147,7 +147,7 @@ TEST(ModelArrays, StateEstimateIsWhatTheMadeStateHolds) {
 class MemoryEstimateTest : public ::testing::Test {
  protected:
   std::filesystem::path write_scene(const std::string& name, const std::string& yaml) const {
-    const std::filesystem::path path = folder_.path() / name;
+    std::filesystem::path path = folder_.path() / name;
     std::ofstream(path) << yaml;
     return path;
   }

@@ -4,7 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstring>
+#include <bit>
+#include <cstdint>
 #include <fstream>
 #include <string_view>
 #include <type_traits>
@@ -83,13 +84,21 @@ constexpr bool kComparable = std::is_arithmetic_v<T> ||
                              std::is_same_v<T, ContactCandidate> || std::is_same_v<T, ContactPoint>;
 
 // Two values with the same bits, member by member for the structures the state holds (whose
-// padding memcmp must not read).
+// padding must not be read), doubles by their bits.
 template <class T>
 bool same_value_bits(const T& a, const T& b) {
-  if constexpr (std::is_arithmetic_v<T>) {
-    return std::memcmp(&a, &b, sizeof(T)) == 0;
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::bit_cast<std::uint64_t>(static_cast<double>(a)) ==
+           std::bit_cast<std::uint64_t>(static_cast<double>(b));
+  } else if constexpr (std::is_arithmetic_v<T>) {
+    return a == b;
   } else if constexpr (std::is_base_of_v<Eigen::MatrixBase<T>, T>) {
-    return std::memcmp(a.data(), b.data(), sizeof(typename T::Scalar) * a.size()) == 0;
+    for (Eigen::Index k = 0; k < a.size(); ++k) {
+      if (!same_value_bits(a.data()[k], b.data()[k])) {
+        return false;
+      }
+    }
+    return true;
   } else if constexpr (std::is_same_v<T, Box>) {
     return same_value_bits(a.min, b.min) && same_value_bits(a.max, b.max);
   } else if constexpr (std::is_same_v<T, ContactCandidate>) {
@@ -97,7 +106,8 @@ bool same_value_bits(const T& a, const T& b) {
   } else {
     static_assert(std::is_same_v<T, ContactPoint>);
     return a.features == b.features && a.key == b.key && a.nodes == b.nodes &&
-           std::memcmp(a.weights.data(), b.weights.data(), sizeof(a.weights)) == 0 &&
+           std::equal(a.weights.begin(), a.weights.end(), b.weights.begin(),
+                      [](double p, double q) { return same_value_bits(p, q); }) &&
            same_value_bits(a.separation, b.separation) && same_value_bits(a.slip, b.slip) &&
            same_value_bits(a.energy, b.energy) && a.sliding == b.sliding;
   }

@@ -19,6 +19,7 @@
 #include "scene/mesh_loader.hpp"
 #include "scene/scene_description.hpp"
 
+// NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace dinam;
   try {

@@ -14,6 +14,7 @@
 #include "scene/mesh_wire.hpp"
 #include "scene/raw_mesh.hpp"
 
+// NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace dinam;
   const std::optional<RawMesh> mesh =
