@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
-#include "dynamics/contact_pairs.hpp"
+#include "dynamics/contact_candidates.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/field_forces.hpp"
 #include "dynamics/global_damping.hpp"
