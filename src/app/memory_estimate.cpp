@@ -15,6 +15,7 @@
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {
@@ -129,20 +130,6 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
              ContactGrid::bytes_per_box();
   }
   return bytes;
-}
-
-// draw_list.hpp's arrays and the renderer's per-frame copies of them (in dinam and in Mesa's
-// buffer objects).
-std::uint64_t draw_list_bytes(const Model& model) {
-  const auto nodes = static_cast<std::uint64_t>(model.node_count());
-  const auto bars = static_cast<std::uint64_t>(model.bar_count());
-  const auto face_nodes = static_cast<std::uint64_t>(model.face_nodes.size());
-  const std::uint64_t per_bar = 2 * sizeof(Index) + sizeof(float) + sizeof(Vec3f) +
-                                2 * 10 * sizeof(float);  // 10 floats an instance, twice
-  const std::uint64_t per_node = sizeof(float) + sizeof(Vec3f) + sizeof(Eigen::Vector2f) +
-                                 2 * (6 + 5) * sizeof(float);  // vertices and attributes, twice
-  // A face of k nodes is k − 2 triangles of three ids, held by the list and by Mesa.
-  return bars * per_bar + nodes * per_node + face_nodes * 2 * 3 * sizeof(Index);
 }
 
 }  // namespace

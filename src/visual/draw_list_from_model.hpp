@@ -1,6 +1,7 @@
 #pragma once
-// The bridge from the physical model to what the renderer draws. It lives in app/ because it is
-// the one place that knows both sides.
+// The bridge from the physical model to what the renderer draws (the visual stage, between the
+// model and the renderer: the one place that knows both sides).
+#include <cstdint>
 #include <vector>
 
 #include "render/draw_list.hpp"
@@ -33,6 +34,10 @@ RenderSettings render_settings(const SceneDescription& scene);
 
 // The bounds of every position of every frame.
 Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames);
+
+// Bytes of the draw list's arrays for `model` and of the renderer's per-frame copies of them (in
+// dinam and in Mesa's buffer objects), for the memory estimate.
+std::uint64_t draw_list_bytes(const Model& model);
 
 // Node positions in single precision, for the renderer.
 void positions_for_render(const std::vector<Vec3>& x, std::vector<Vec3f>& out);
