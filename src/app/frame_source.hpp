@@ -1,7 +1,7 @@
 #pragma once
-// The run split into its stages, each usable alone: simulate every frame's positions (or read
-// them from a motion cache), decide the camera of each frame (frame_cameras.hpp), then draw them
-// through any Renderer (OSMesa, or a recording one in tests).
+// The frames of a run: simulate every frame's positions (or read them from a motion cache); the
+// visual stage then decides the camera of each frame (visual/frame_cameras.hpp) and draws them
+// through any Renderer (visual/frame_drawing.hpp: OSMesa, or a recording one in tests).
 #include <filesystem>
 #include <functional>
 #include <vector>
@@ -50,11 +50,5 @@ std::string settle_summary(const SettleOutcome& settled, double dt);
 // `blur` asks for them (MotionCache::check_motion_blur has checked that the cache holds them).
 SimulatedFrames cached_frames(const MotionCache& cache, int first, int last,
                               const MotionBlurDesc* blur = nullptr);
-
-// Draws frames first … last (all held), handing each picture to `on_image(frame, image)`;
-// `cameras` are those of frame_cameras. A frame with instants is their mean (motion blur).
-void draw_frames(Renderer& renderer, const DrawList& list, const SimulatedFrames& frames,
-                 const FrameCameras& cameras, int first, int last,
-                 const std::function<void(int, const Image&)>& on_image);
 
 }  // namespace dinam

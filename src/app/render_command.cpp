@@ -29,6 +29,7 @@
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
 #include "visual/draw_list_from_model.hpp"
+#include "visual/frame_drawing.hpp"
 
 namespace dinam {
 

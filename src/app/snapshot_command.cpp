@@ -21,6 +21,7 @@
 #include "scene/scene_description.hpp"
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_cameras.hpp"
+#include "visual/frame_drawing.hpp"
 
 namespace dinam {
 namespace {

@@ -9,6 +9,7 @@
 #include "render/camera.hpp"
 #include "test_support.hpp"
 #include "visual/draw_list_from_model.hpp"
+#include "visual/frame_drawing.hpp"
 
 namespace dinam {
 namespace {

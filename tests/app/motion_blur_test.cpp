@@ -14,6 +14,7 @@
 #include "render/osmesa_renderer.hpp"
 #include "test_support.hpp"
 #include "visual/draw_list_from_model.hpp"
+#include "visual/frame_drawing.hpp"
 
 namespace dinam {
 namespace {
