@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -69,6 +70,16 @@ inline void expect_user_error(const std::function<void()>& action, int line,
     return;
   }
   ADD_FAILURE() << "expected a UserError";
+}
+
+// The names of everything directly in `folder`, sorted.
+inline std::vector<std::string> folder_entries(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 // The names in `folder` that are temporary files of dinam's (core/output_file.hpp makes them

@@ -67,15 +67,6 @@ void write_cache(const Simulated& s, const std::filesystem::path& folder) {
   writer.commit(manifest);
 }
 
-std::vector<std::string> folder_entries(const std::filesystem::path& folder) {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 TEST(MotionCache, FramesReadBackBitForBitWithTheBoundsOfTheWholeMotion) {
   const Simulated s = simulate(kRope);
   const test::TemporaryFolder folder("cache");
@@ -83,7 +74,7 @@ TEST(MotionCache, FramesReadBackBitForBitWithTheBoundsOfTheWholeMotion) {
   const MotionCache cache(folder.path() / "cache");
   EXPECT_EQ(cache.manifest().frame_count, 4);
   EXPECT_EQ(cache.manifest().node_count, s.model.node_count());
-  EXPECT_EQ(folder_entries(folder.path() / "cache"),
+  EXPECT_EQ(test::folder_entries(folder.path() / "cache"),
             (std::vector<std::string>{"manifest.json", "rope.mdd", "rope.obj", "rope.pc2"}));
   const auto frames = cache.read_frames(2, 4);
   ASSERT_EQ(frames.size(), 3u);
@@ -121,9 +112,9 @@ TEST(MotionCache, AnAbandonedWriterLeavesNothingAndTheOldCacheStands) {
   {
     MotionCacheWriter writer(request_for(s, path), s.model);
     writer.add_frame(s.frames.positions[0]);
-    EXPECT_EQ(folder_entries(folder.path()).size(), 1u);  // its temporary folder
+    EXPECT_EQ(test::folder_entries(folder.path()).size(), 1u);  // its temporary folder
   }  // destroyed before commit: an error or an interruption
-  EXPECT_TRUE(folder_entries(folder.path()).empty());
+  EXPECT_TRUE(test::folder_entries(folder.path()).empty());
 
   write_cache(s, path);
   const std::string created = MotionCache(path).manifest().created;
@@ -131,7 +122,7 @@ TEST(MotionCache, AnAbandonedWriterLeavesNothingAndTheOldCacheStands) {
     MotionCacheWriter writer(request_for(s, path), s.model);
     writer.add_frame(s.frames.positions[0]);
   }
-  EXPECT_EQ(folder_entries(folder.path()), std::vector<std::string>{"cache"});
+  EXPECT_EQ(test::folder_entries(folder.path()), std::vector<std::string>{"cache"});
   EXPECT_EQ(MotionCache(path).manifest().created, created);
 
   // A complete new cache replaces the old one whole: a two-object scene in place of the rope.
@@ -143,7 +134,7 @@ TEST(MotionCache, AnAbandonedWriterLeavesNothingAndTheOldCacheStands) {
 )"));
   write_cache(two, path);
   EXPECT_EQ(MotionCache(path).manifest().objects.size(), 2u);
-  EXPECT_EQ(folder_entries(folder.path()), std::vector<std::string>{"cache"});
+  EXPECT_EQ(test::folder_entries(folder.path()), std::vector<std::string>{"cache"});
 }
 
 TEST(MotionCache, AFolderThatIsNotACacheIsNeverReplaced) {
@@ -169,7 +160,7 @@ TEST(MotionCache, TemporaryFoldersOfDeadRunsAreRemoved) {
   std::filesystem::create_directory(folder.path() / stale);
   std::filesystem::create_directory(folder.path() / "cache.part-otherhost-1");  // not ours to judge
   write_cache(s, folder.path() / "cache");
-  EXPECT_EQ(folder_entries(folder.path()),
+  EXPECT_EQ(test::folder_entries(folder.path()),
             (std::vector<std::string>{"cache", "cache.part-otherhost-1"}));
 }
 

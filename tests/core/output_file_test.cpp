@@ -22,25 +22,16 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-std::vector<std::string> entries(const std::filesystem::path& folder) {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 TEST(OutputFile, AFinishedFileIsRenamedIntoPlaceAndNothingElseIsLeft) {
   const test::TemporaryFolder folder("output-file");
   const std::filesystem::path path = folder.path() / "energy.csv";
   write_output_file(path, "a,b\n1,2\n");
   EXPECT_EQ(contents(path), "a,b\n1,2\n");
-  EXPECT_EQ(entries(folder.path()), std::vector<std::string>{"energy.csv"});
+  EXPECT_EQ(test::folder_entries(folder.path()), std::vector<std::string>{"energy.csv"});
   // An older regular file of that name is replaced.
   write_output_file(path, "new\n");
   EXPECT_EQ(contents(path), "new\n");
-  EXPECT_EQ(entries(folder.path()), std::vector<std::string>{"energy.csv"});
+  EXPECT_EQ(test::folder_entries(folder.path()), std::vector<std::string>{"energy.csv"});
 }
 
 TEST(OutputFile, AnUnfinishedFileLeavesNothing) {
@@ -49,7 +40,7 @@ TEST(OutputFile, AnUnfinishedFileLeavesNothing) {
     OutputFile file(folder.path() / "frame.png");
     std::fputs("half a frame", file.stream());
   }  // an error elsewhere: never committed
-  EXPECT_TRUE(entries(folder.path()).empty());
+  EXPECT_TRUE(test::folder_entries(folder.path()).empty());
 }
 
 // Links planted under every name a careless writer would use: the old fixed temporary names
@@ -90,7 +81,7 @@ TEST(OutputFile, AFinalNameThatIsALinkOrASpecialFileIsRefusedNeverFollowed) {
   std::filesystem::create_directory(folder.path() / "frame_0001.png");
   test::expect_user_error([&] { write_output_file(folder.path() / "frame_0001.png", "x"); }, 0,
                           {"is a folder"});
-  EXPECT_EQ(entries(folder.path()),
+  EXPECT_EQ(test::folder_entries(folder.path()),
             (std::vector<std::string>{"energy.csv", "frame_0001.png", "movie.mp4", "victim.txt"}));
 }
 
@@ -104,7 +95,8 @@ TEST(OutputFile, AFinalNameMadeALinkWhileWritingIsRefusedAtTheRename) {
   std::filesystem::create_symlink(victim, path);  // another user, between the start and the end
   test::expect_user_error([&] { file.commit(); }, 0, {"is a symbolic link"});
   EXPECT_EQ(contents(victim), "precious");
-  EXPECT_EQ(entries(folder.path()), (std::vector<std::string>{"manifest.json", "victim.txt"}));
+  EXPECT_EQ(test::folder_entries(folder.path()),
+            (std::vector<std::string>{"manifest.json", "victim.txt"}));
 }
 
 TEST(OutputFile, AFolderThatIsALinkIsRefusedForACache) {

@@ -86,15 +86,6 @@ class EnvironmentOverride {
   std::optional<std::string> saved_;
 };
 
-std::vector<std::string> entries(const std::filesystem::path& folder) {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    names.push_back(entry.path().filename().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 TEST(MovieEncoder, MissingFfmpegIsReportedNotThrown) {
   test::TemporaryFolder folder("movie");
   const EnvironmentOverride path("PATH", folder.path().string());  // a folder with no ffmpeg
@@ -114,7 +105,7 @@ TEST(MovieEncoder, EncodesFramesSentWhileItRuns) {
   }
   encoder->finish();
   EXPECT_GT(std::filesystem::file_size(movie), 0U);
-  EXPECT_EQ(entries(folder.path()), std::vector<std::string>{"demo.mp4"});
+  EXPECT_EQ(test::folder_entries(folder.path()), std::vector<std::string>{"demo.mp4"});
 }
 
 TEST(MovieEncoder, FailingFfmpegIsAnErrorWithItsMessageAndLeavesNoMovie) {
@@ -131,7 +122,7 @@ TEST(MovieEncoder, FailingFfmpegIsAnErrorWithItsMessageAndLeavesNoMovie) {
     EXPECT_NE(std::string(e.what()).find("ffmpeg failed"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("rate"), std::string::npos) << e.what();
   }
-  EXPECT_TRUE(entries(folder.path()).empty());
+  EXPECT_TRUE(test::folder_entries(folder.path()).empty());
 }
 
 TEST(MovieEncoder, AnUnfinishedMovieIsStoppedAndRemoved) {
@@ -142,7 +133,7 @@ TEST(MovieEncoder, AnUnfinishedMovieIsStoppedAndRemoved) {
     ASSERT_NE(encoder, nullptr);
     encoder->add_frame(Image(16, 16));
   }  // as when drawing fails half-way
-  EXPECT_TRUE(entries(folder.path()).empty());
+  EXPECT_TRUE(test::folder_entries(folder.path()).empty());
 }
 
 // A stand-in ffmpeg that never reads its input and never exits: the frames fill the pipe, and
@@ -169,7 +160,7 @@ TEST(MovieEncoder, AnFfmpegThatNeverReadsIsStoppedAfterItsTimeout) {
   }
   // It gave up: a wait for ever would have held the test until ctest's own limit. How soon is
   // the machine's business, so nothing is asserted on a clock.
-  EXPECT_TRUE(entries(folder.path()).empty());
+  EXPECT_TRUE(test::folder_entries(folder.path()).empty());
 }
 
 TEST(MovieEncoder, ATimeoutThatIsNotAPositiveNumberIsRefused) {
