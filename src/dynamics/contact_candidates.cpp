@@ -71,7 +71,7 @@ void file_boxes(const Model& model, State& state) {
 // The narrowest skin, as a fraction of the widest (the largest contact radius).
 constexpr double kNarrowestSkin = 0.05;
 
-// What a search costs, in candidate checks (contact_pairs.hpp).
+// What a search costs, in candidate checks (contact_candidates.hpp).
 double search_cost(const ObjectContact& contact) {
   return kSearchCostInChecks * static_cast<double>(contact.bars.size() + contact.points.size());
 }
@@ -83,8 +83,8 @@ double checks_since_search(const State& state) {
   return static_cast<double>(steps) * static_cast<double>(work.candidates.size());
 }
 
-// The skin for the next search (contact_pairs.hpp): narrower while checking the candidates since
-// the last search cost more than a search, wider while it cost under a quarter of one.
+// The skin for the next search (contact_candidates.hpp): narrower while checking the candidates
+// since the last search cost more than a search, wider while it cost under a quarter of one.
 double next_skin(const Model& model, const State& state) {
   const ObjectContact& contact = model.contact;
   const ObjectContactWorkspace& work = state.object_contact;

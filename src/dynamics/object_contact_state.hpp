@@ -36,7 +36,8 @@ struct ContactPoint {
   bool sliding = false;
 };
 
-// A pair near enough to touch before any of its nodes has moved by the skin (contact_pairs.hpp).
+// A pair near enough to touch before any of its nodes has moved by the skin
+// (contact_candidates.hpp).
 struct ContactCandidate {
   std::uint64_t key = 0;
   std::array<Index, 4> nodes{};  // A's nodes, then B's, as in ContactPoint
