@@ -88,10 +88,15 @@ bool get_origins(const std::vector<Index>& group_counts, const std::vector<char>
   };
   for (const Index count : group_counts) {
     MeshElementOrigin& origin = mesh.origins.emplace_back();
-    origin.groups.resize(static_cast<std::size_t>(std::max<Index>(count, 0)));
     if (!next_name(origin.material)) {
       return false;
     }
+    // Each group's name takes at least its zero end: a count beyond the bytes left is false, and
+    // must not make room for it first (fuzzing found 134 million groups, 4 GB of strings).
+    if (count < 0 || static_cast<std::size_t>(count) > names.size() - at) {
+      return false;
+    }
+    origin.groups.resize(static_cast<std::size_t>(count));
     for (std::string& group : origin.groups) {
       if (!next_name(group)) {
         return false;

@@ -4,6 +4,7 @@
 #include "scene/mesh_wire.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <filesystem>
 #include <fstream>
@@ -83,6 +84,37 @@ TEST(MeshWire, CountsAndLoopsRunningPastTheEndAreRefused) {
   std::string negative_loop = bytes;
   negative_loop[faces_at + 3] = '\xff';
   EXPECT_FALSE(decode_mesh(negative_loop));
+}
+
+// The most memory this process has held, kB (the kernel's count, not a clock).
+long peak_resident_kilobytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
+
+// A child may claim a count of groups far beyond the names it sent: refused before room is made
+// for them (fuzzing found a claim of 134 million groups, 4 GB of empty strings).
+TEST(MeshWire, AGroupCountBeyondTheNamesIsRefusedWithoutMakingRoomForIt) {
+  RawMesh mesh;
+  mesh.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0)};
+  mesh.lines = {{0, 1}};
+  mesh.origins = {{"rope", {"a"}}};
+  mesh.line_origin = {0};
+  std::string bytes = encode_mesh(mesh);
+  // The group counts' array is the third from the end: (count 1, value 1), then the names'
+  // (count, "rope\0a\0") and the unit's (count 0).
+  const std::size_t unit = 8;
+  const std::size_t names = 8 + 7;
+  const std::size_t count_at = bytes.size() - unit - names - sizeof(Index);
+  ASSERT_EQ(bytes[count_at], '\x01');
+  ASSERT_TRUE(decode_mesh(bytes));
+  bytes[count_at + 3] = '\x08';  // 0x08000001 groups: 4.3 GB of strings, were room made
+  const long peak_before = peak_resident_kilobytes();
+  EXPECT_FALSE(decode_mesh(bytes));
+  EXPECT_LT(peak_resident_kilobytes() - peak_before, 100'000);
+  bytes[count_at + 3] = '\xff';  // a negative count
+  EXPECT_FALSE(decode_mesh(bytes));
 }
 
 // The fuzz target's seeds (tests/fuzz/mesh-wire-seeds/, written by hand in this form) are whole
