@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <string_view>
 
@@ -38,6 +39,43 @@ void check_penalty_stiffness(const FileLoc& loc, std::string_view what, double s
   }
 }
 
+// Nodes that start this far below the ground, or more, are a mesh placed in the ground (its
+// units, an up axis that is y, a translation that was meant upwards): the penalty would launch it
+// with energy nothing in the scene supplied. A hair below (a mesh modelled lying on z = 0, its
+// rounding) is allowed.
+constexpr double kLeastSunkDepth = 1e-3;   // m
+constexpr double kSunkShareOfSize = 1e-3;  // of the model's size, for large models
+
+void refuse_start_below_ground(const SceneDescription& scene, const Model& model) {
+  const GroundContact& ground = model.ground;
+  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 high = -low;
+  Index deepest = -1;
+  double depth = 0.0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const Vec3& x = model.node_initial_x[i];
+    low = low.cwiseMin(x);
+    high = high.cwiseMax(x);
+    const double below = (ground.point - x).dot(ground.normal);
+    if (!model.pinned(i) && below > depth) {
+      depth = below;
+      deepest = i;
+    }
+  }
+  const double size = model.node_count() > 0 ? (high - low).norm() : 0.0;
+  if (deepest < 0 || depth <= std::max(kLeastSunkDepth, kSunkShareOfSize * size)) {
+    return;
+  }
+  const Index o = model.node_object[deepest];
+  const ModelObject& object = model.objects[o];
+  throw_user_error(scene.objects[o].loc,
+                   "'{}' starts {:.3g} m below the ground (node {} of its mesh), and the ground "
+                   "would launch it with energy from nowhere; move it up (its mesh's "
+                   "'translation'), check the mesh's units and up axis, or lower the ground "
+                   "('ground.height')",
+                   object.name, depth, deepest - object.first_node);
+}
+
 double largest_inv_mass(const Model& model, std::span<const Index> nodes) {
   double largest = 0.0;
   for (const Index i : nodes) {
@@ -60,6 +98,7 @@ void add_ground_contact(const SceneDescription& scene, Model& model) {
   if (!ground.enabled) {
     return;
   }
+  refuse_start_below_ground(scene, model);
   // Auto: every node gets the same contact frequency ω_c = ½ ω_max of the structure, so the
   // ground stiffens the model's highest frequency by about 12 % and penetration at impact speed
   // v stays near v / ω_c.

@@ -276,6 +276,15 @@ void add_object_conditions(const ObjectNodes& object, Model& model) {
   std::vector<Index> pinned;
   if (!desc.pins.empty()) {
     pinned = select_nodes(desc.pins, object, model);
+    // A selection that holds no node is a box beside the mesh or a mesh in other units: the
+    // object would fall unheld, which is never what `pinned` meant.
+    if (pinned.empty()) {
+      throw_user_error(desc.pins.loc,
+                       "'pinned' of '{}' holds no node of its mesh: its boxes lie beside the "
+                       "mesh (check them against the node positions 'dinam info' prints, and the "
+                       "mesh's units and placement), or remove the key",
+                       desc.name);
+    }
   }
   for (Index node = info.first_node; node < info.first_node + info.node_count; ++node) {
     model.node_inv_mass[node] = 1.0 / model.node_mass[node];

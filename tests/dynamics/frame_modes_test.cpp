@@ -67,7 +67,7 @@ Eigen::VectorXd squared_frequencies_of_table(const std::string& object_keys,
   test::TemporaryFolder folder("table");
   std::ofstream(folder.path() / "table.obj") << table_obj(turn);
   const std::string scene =
-      "version: 1\nduration: 1\ngravity: [0, 0, 0]\nobjects:\n"
+      "version: 1\nduration: 1\ngravity: [0, 0, 0]\nground: {contact: false}\nobjects:\n"
       "  - mesh: {file: table.obj}\n"
       "    material: {density: " +
       std::to_string(kDensity) + ", youngs_modulus: " + std::to_string(kYoungs) +
