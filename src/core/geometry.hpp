@@ -8,18 +8,25 @@
 
 namespace dinam {
 
-// The dot and cross products of 3-vectors in plain scalar arithmetic. Eigen's own (and its norms)
+// The dot and cross products of 3-vectors in plain scalar arithmetic (of double, or of Dual for
+// the kernels' derivatives: core/dual.hpp). Eigen's own (and its norms)
 // work on SSE packets of two coordinates, which keeps the compiler from vectorising the spring
 // loops across springs (spring_block.hpp); these it vectorises one spring per SIMD lane.
-inline double dot3(const Vec3& a, const Vec3& b) {
+template <class A, class B>
+[[gnu::always_inline]] inline auto dot3(const Eigen::MatrixBase<A>& a,
+                                        const Eigen::MatrixBase<B>& b) {
   return a.x() * b.x() + a.y() * b.y() + a.z() * b.z();
 }
-inline double norm3(const Vec3& a) {
-  return std::sqrt(dot3(a, a));
+template <class A>
+[[gnu::always_inline]] inline auto norm3(const Eigen::MatrixBase<A>& a) {
+  using std::sqrt;
+  return sqrt(dot3(a, a));
 }
-inline Vec3 cross3(const Vec3& a, const Vec3& b) {
-  return {a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(),
-          a.x() * b.y() - a.y() * b.x()};
+template <class A, class B>
+[[gnu::always_inline]] inline auto cross3(const Eigen::MatrixBase<A>& a,
+                                          const Eigen::MatrixBase<B>& b) {
+  return Eigen::Matrix<typename A::Scalar, 3, 1>(
+      a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(), a.x() * b.y() - a.y() * b.x());
 }
 
 // atan2(y, x) in [−π, π], about four times faster than glibc's and within a few ulps of it: the
@@ -32,46 +39,51 @@ inline Vec3 cross3(const Vec3& a, const Vec3& b) {
 // It comes in two halves so that a spring kernel can fold the one quotient of the reduction,
 // t = top / bottom, into a reciprocal it takes anyway (one division where there were several):
 // atan2_reduce gives top and bottom, atan2_finish the angle from t.
+template <class T>
 struct Atan2Reduction {
-  double top;     // t's numerator
-  double bottom;  // t's denominator: > 0 (1 for x = y = 0, where top is 0 too)
-  bool steep;     // |y| > |x|
-  bool upper;     // reduced by π/4
-  double x, y;
+  T top;       // t's numerator
+  T bottom;    // t's denominator: > 0 (1 for x = y = 0, where top is 0 too)
+  bool steep;  // |y| > |x|
+  bool upper;  // reduced by π/4
+  T x, y;
 };
-[[gnu::always_inline]] inline Atan2Reduction atan2_reduce(double y, double x) {
+template <class T>
+[[gnu::always_inline]] inline Atan2Reduction<T> atan2_reduce(const T& y, const T& x) {
+  using std::abs;
   constexpr double kTanPiOver8 = 0.41421356237309504880;
-  const double ax = std::abs(x);
-  const double ay = std::abs(y);
+  const T ax = abs(x);
+  const T ay = abs(y);
   const bool steep = ay > ax;
-  const double small = steep ? ax : ay;
-  const double large = steep ? ay : ax;
+  const T small = steep ? ax : ay;
+  const T large = steep ? ay : ax;
   const bool upper = small > kTanPiOver8 * large;
-  const double top = upper ? small - large : small;
-  const double bottom = upper ? small + large : large;
-  return {top, bottom > 0.0 ? bottom : 1.0, steep, upper, x, y};
+  const T top = upper ? T(small - large) : small;
+  const T bottom = upper ? T(small + large) : large;
+  return {top, bottom > 0.0 ? bottom : T(1.0), steep, upper, x, y};
 }
-[[gnu::always_inline]] inline double atan2_finish(const Atan2Reduction& r, double t) {
-  const double z = t * t;
-  const double p = ((((-8.750608600031904122785e-01 * z - 1.615753718733365076637e+01) * z -
-                      7.500855792314704667340e+01) *
-                         z -
-                     1.228866684490136173410e+02) *
-                        z -
-                    6.485021904942025371773e+01);
-  const double q = (((((z + 2.485846490142306297962e+01) * z + 1.650270098316988542046e+02) * z +
-                      4.328810604912902668951e+02) *
-                         z +
-                     4.853903996359136964868e+02) *
-                        z +
-                    1.945506571482613964425e+02);
-  double angle = (r.upper ? std::numbers::pi / 4 : 0.0) + (t + t * (z * p / q));
-  angle = r.steep ? std::numbers::pi / 2 - angle : angle;
-  angle = r.x < 0.0 ? std::numbers::pi - angle : angle;
-  return std::copysign(angle, r.y);
+template <class T>
+[[gnu::always_inline]] inline T atan2_finish(const Atan2Reduction<T>& r, const T& t) {
+  using std::copysign;
+  const T z = t * t;
+  const T p = ((((-8.750608600031904122785e-01 * z - 1.615753718733365076637e+01) * z -
+                 7.500855792314704667340e+01) *
+                    z -
+                1.228866684490136173410e+02) *
+                   z -
+               6.485021904942025371773e+01);
+  const T q = (((((z + 2.485846490142306297962e+01) * z + 1.650270098316988542046e+02) * z +
+                 4.328810604912902668951e+02) *
+                    z +
+                4.853903996359136964868e+02) *
+                   z +
+               1.945506571482613964425e+02);
+  T angle = (r.upper ? std::numbers::pi / 4 : 0.0) + (t + t * (z * p / q));
+  angle = r.steep ? T(std::numbers::pi / 2 - angle) : angle;
+  angle = r.x < 0.0 ? T(std::numbers::pi - angle) : angle;
+  return copysign(angle, r.y);
 }
 [[gnu::always_inline]] inline double fast_atan2(double y, double x) {
-  const Atan2Reduction r = atan2_reduce(y, x);
+  const Atan2Reduction<double> r = atan2_reduce(y, x);
   return atan2_finish(r, r.top / r.bottom);
 }
 
@@ -97,10 +109,12 @@ inline double dihedral_angle(const Vec3& xa, const Vec3& xi, const Vec3& xj, con
 // An angle difference wrapped into [−π, π), so a twist through ±π is measured the short way
 // (by a product with 1/2π rather than a quotient: a division costs as much as ten products in
 // the spring loops).
-inline double wrap_angle(double angle) {
+template <class T>
+[[gnu::always_inline]] inline T wrap_angle(const T& angle) {
+  using std::floor;
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   constexpr double kInverseTwoPi = 1.0 / kTwoPi;
-  return angle - kTwoPi * std::floor((angle + std::numbers::pi) * kInverseTwoPi);
+  return angle - kTwoPi * floor((angle + std::numbers::pi) * kInverseTwoPi);
 }
 
 }  // namespace dinam

@@ -23,7 +23,7 @@ void add_axial_spring_forces(ForceContext& context) {
       context, springs,
       [](SpringBlock<2> & block, Index k, double rest, double stiffness, double plastic_set,
          double yield) __attribute__((always_inline)) {
-        const AxialSpringResult r =
+        const AxialSpringResult<double> r =
             axial_spring(block.node_position(0, k), block.node_position(1, k), rest, stiffness,
                          plastic_set, yield);
         block.set_force(0, k, r.force_on_n0);
@@ -76,6 +76,19 @@ double axial_spring_energy(const Model& model, const State& state) {
   return energy;
 }
 
+void add_axial_spring_stiffness(const Model& model, const State& state, StiffnessSink& sink) {
+  add_spring_stiffness<2>(
+      model.bar_count(), model.bar_nodes, state.bar_broken, state.x, sink,
+      [&](Index b, const std::array<Vec3, 2>& at) {
+        return local_stiffness<2>(at, [&](const auto& x) {
+          const auto r = axial_spring(
+              x[0], x[1], model.bar_rest_length[b], model.bar_axial_stiffness[b],
+              plastic_set_of(state.bar_plastic_set, b), yield_limit(model.bar_yield_force, b));
+          return std::array{r.force_on_n0, decltype(r.force_on_n0)(-r.force_on_n0)};
+        });
+      });
+}
+
 const SpringKind kAxialSprings{
     .name = "axial springs",
     .switched = &ForceSwitches::axial_springs,
@@ -83,6 +96,7 @@ const SpringKind kAxialSprings{
     .yields = [](const Model& model) { return model.bars_yield; },
     .add_forces = add_axial_spring_forces,
     .energy = axial_spring_energy,
+    .add_stiffness = add_axial_spring_stiffness,
     .report = &EnergyReport::axial,
     .plastic_set = &State::bar_plastic_set,
     .flow = &EnergyWorkspace::bar_flow,

@@ -12,25 +12,31 @@
 
 namespace dinam {
 
+template <class T>
 struct AxialSpringResult {
-  Vec3 force_on_n0;  // N; the force on n1 is its negative
-  double energy;     // J, ½ k (L − L0 − p)²
-  double plastic_set = 0.0;
+  Eigen::Matrix<T, 3, 1> force_on_n0;  // N; the force on n1 is its negative
+  T energy;                            // J, ½ k (L − L0 − p)²
+  T plastic_set = 0.0;
   double dissipated = 0.0;
 };
 
 // The kernel over one bar's two nodes. With d = x1 − x0, L = |d|, n = d / L and the axial force
 // N = k (L − L0 − p) (tension positive, flattened at ±Ny): f0 = N n, f1 = −f0.
 // A bar of zero current length has no direction and gives no force.
-// No branches: the spring loop vectorises (spring_block.hpp).
-[[gnu::always_inline]] inline AxialSpringResult axial_spring(
-    const Vec3& x0, const Vec3& x1, double rest_length, double stiffness, double plastic_set = 0.0,
+// No branches: the spring loop vectorises (spring_block.hpp). T is double, or Dual for the
+// forces' derivatives (axial_spring_hessian).
+template <class T>
+[[gnu::always_inline]] inline AxialSpringResult<T> axial_spring(
+    const Eigen::Matrix<T, 3, 1>& x0, const Eigen::Matrix<T, 3, 1>& x1, double rest_length,
+    double stiffness, double plastic_set = 0.0,
     double yield = std::numeric_limits<double>::infinity()) {
-  const Vec3 d = x1 - x0;
-  const double length = std::sqrt(dot3(d, d));
-  const ElastoplasticResult r = elastoplastic(length - rest_length, plastic_set, stiffness, yield);
-  const double quotient = r.force / (length > 0.0 ? length : 1.0);
-  const double scale = length > 0.0 ? quotient : 0.0;  // N / |d|
+  using std::sqrt;
+  const Eigen::Matrix<T, 3, 1> d = x1 - x0;
+  const T length = sqrt(dot3(d, d));
+  const ElastoplasticResult<T> r =
+      elastoplastic(T(length - rest_length), plastic_set, stiffness, yield);
+  const T quotient = r.force / (length > 0.0 ? length : T(1.0));
+  const T scale = length > 0.0 ? quotient : T(0.0);  // N / |d|
   return {scale * d, r.energy, r.plastic_set, r.dissipated};
 }
 
@@ -52,6 +58,8 @@ void add_axial_damper_forces(ForceContext& context);
 
 // Σ ½ k (L − L0 − p)² over all bars, J.
 double axial_spring_energy(const Model& model, const State& state);
+// Each bar's stiffness: k n nᵀ + (N / L)(I − n nᵀ) on its ends, as ±.
+void add_axial_spring_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 
 // The entry of spring_kinds.hpp.
 extern const SpringKind kAxialSprings;

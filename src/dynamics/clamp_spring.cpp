@@ -10,7 +10,7 @@
 namespace dinam {
 namespace {
 
-BendingSpringResult clamp_spring(const Model& model, const State& state, Index s) {
+BendingSpringResult<double> clamp_spring(const Model& model, const State& state, Index s) {
   const Index c = model.clamp_nodes[2 * s];
   const Index a = model.clamp_nodes[2 * s + 1];
   const Vec3 ghost = state.x[c] + model.clamp_ghost_offset[s];
@@ -36,7 +36,7 @@ void add_clamp_forces(ForceContext& context) {
       }
       continue;
     }
-    const BendingSpringResult r = clamp_spring(model, state, s);
+    const BendingSpringResult<double> r = clamp_spring(model, state, s);
     context.add(a, r.force_a);
     if (context.update_history && model.clamps_yield) {
       state.clamp_plastic_set[s] = r.plastic_set;
@@ -59,6 +59,22 @@ double clamp_spring_energy(const Model& model, const State& state) {
 }
 
 // A clamp is a bending spring, booked with them in the energy report.
+void add_clamp_stiffness(const Model& model, const State& state, StiffnessSink& sink) {
+  // Over (c, a); the ghost point moves with the support c, which is pinned, so only a's block
+  // counts: the bending spring's over (a, c, g) at a.
+  add_spring_stiffness<2>(model.clamp_count(), model.clamp_nodes, state.clamp_broken, state.x, sink,
+                          [&](Index s, const std::array<Vec3, 2>& at) {
+                            const LocalStiffness<3> bend = bending_spring_stiffness(
+                                {at[1], at[0], at[0] + model.clamp_ghost_offset[s]},
+                                std::numbers::pi, model.clamp_stiffness[s],
+                                plastic_set_of(state.clamp_plastic_set, s),
+                                yield_limit(model.clamp_yield_moment, s));
+                            LocalStiffness<2> k = LocalStiffness<2>::Zero();
+                            k.block<3, 3>(3, 3) = bend.block<3, 3>(0, 0);
+                            return k;
+                          });
+}
+
 const SpringKind kClampSprings{
     .name = "clamps",
     .switched = &ForceSwitches::clamps,
@@ -66,6 +82,7 @@ const SpringKind kClampSprings{
     .yields = [](const Model& model) { return model.clamps_yield; },
     .add_forces = add_clamp_forces,
     .energy = clamp_spring_energy,
+    .add_stiffness = add_clamp_stiffness,
     .report = &EnergyReport::bending,
     .plastic_set = &State::clamp_plastic_set,
     .flow = &EnergyWorkspace::clamp_flow,

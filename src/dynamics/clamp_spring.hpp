@@ -13,6 +13,8 @@ struct Model;
 // nodes.
 void add_clamp_forces(ForceContext& context);
 double clamp_spring_energy(const Model& model, const State& state);
+// Over the support c and the free node a; the support's share (its row) goes to the support.
+void add_clamp_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 
 // The entry of spring_kinds.hpp.
 extern const SpringKind kClampSprings;

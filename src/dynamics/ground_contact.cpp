@@ -119,4 +119,32 @@ double ground_contact_energy(const Model& model, const State& state) {
   return energy;
 }
 
+void anchor_nodes_at_rest(const Model& model, State& state) {
+  const GroundContact& ground = model.ground;
+  if (!ground.enabled) {
+    return;
+  }
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const double distance = dot3(state.x[i] - ground.point, ground.normal);
+    const bool touching = distance < 0.0 && !model.pinned(i);
+    state.contact_touching[i] = touching ? 1 : 0;
+    state.contact_sliding[i] = 0;
+    state.contact_anchor[i] = touching ? Vec3(state.x[i] - distance * ground.normal) : Vec3::Zero();
+  }
+}
+
+void add_ground_contact_stiffness(const Model& model, const State& state, StiffnessSink& sink) {
+  const GroundContact& ground = model.ground;
+  if (!ground.enabled) {
+    return;
+  }
+  const Mat3 normal_outer = ground.normal * ground.normal.transpose();
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dot3(state.x[i] - ground.point, ground.normal) < 0.0 && !model.pinned(i)) {
+      const Mat3 k = ground.node_stiffness[i] * normal_outer;
+      sink.add(&i, 1, k.data());
+    }
+  }
+}
+
 }  // namespace dinam

@@ -20,6 +20,7 @@
 #include "core/geometry.hpp"
 #include "core/types.hpp"
 #include "dynamics/force_context.hpp"
+#include "dynamics/stiffness.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -79,5 +80,15 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
                                std::vector<Vec3>* friction_ledger = nullptr);
 
 double ground_contact_energy(const Model& model, const State& state);  // Σ ½ k d², J
+
+// Every free node below the plane marked touching and sticking, its stick spring anchored at its
+// foot on the plane (so unstretched): the contact history of a static equilibrium found without
+// stepping, from which the motion then starts as from one it had come to rest in.
+void anchor_nodes_at_rest(const Model& model, State& state);
+
+// The stiffness of the normal penalty, k n nᵀ on each free node below the plane (stiffness.hpp).
+// Friction's stick spring is left out: it pulls towards an anchor that the motion's history
+// placed, which is no potential of the positions.
+void add_ground_contact_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 
 }  // namespace dinam

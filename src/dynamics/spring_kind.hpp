@@ -4,8 +4,7 @@
 // allocation, the memory estimate and the run-time estimate need of it. Each kind's entry sits in
 // its own file beside its kernel (axial_spring.cpp, …); spring_kinds.hpp lists them in the order a
 // step adds their forces. A new kind of spring is its kernel and entry, its arrays in model.hpp
-// and state.hpp (and their lists), its builder and reader, and one line in spring_kinds.hpp; a
-// Hessian, when Newton needs one, is one more member here.
+// and state.hpp (and their lists), its builder and reader, and one line in spring_kinds.hpp.
 #include <cstdint>
 #include <vector>
 
@@ -13,6 +12,7 @@
 #include "dynamics/force_context.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/state.hpp"
+#include "dynamics/stiffness.hpp"
 
 namespace dinam {
 
@@ -26,10 +26,13 @@ struct SpringKind {
                                   // no plastic sets or flows for the kind (model.hpp)
   void (*add_forces)(ForceContext&);             // on the context worker's own nodes
   double (*energy)(const Model&, const State&);  // J, elastic, of the springs not broken
-  double EnergyReport::*report;                  // the report's line it is booked on
-  std::vector<double> State::*plastic_set;       // (count, or empty when none yields)
-  std::vector<double> EnergyWorkspace::*flow;    // J its flow dissipated in the last step
-  std::vector<std::uint8_t> State::*broken;      // tearing: 1 for a broken one (empty: cannot)
+  // Each spring's stiffness matrix at the state's positions (stiffness.hpp), for Newton's method:
+  // the Jacobian of its forces, plastic sets held, of the springs not broken.
+  void (*add_stiffness)(const Model&, const State&, StiffnessSink&);
+  double EnergyReport::*report;                // the report's line it is booked on
+  std::vector<double> State::*plastic_set;     // (count, or empty when none yields)
+  std::vector<double> EnergyWorkspace::*flow;  // J its flow dissipated in the last step
+  std::vector<std::uint8_t> State::*broken;    // tearing: 1 for a broken one (empty: cannot)
   Index torn_code;  // how Model::bar_springs names it (kTornBend, …); −1 for the bar's own spring
   // Nanoseconds per spring on one thread, elastic and of a kind that can yield, from
   // `build/bench/bench_force_costs` (docs/performance.md, "Every force kind against the springs");

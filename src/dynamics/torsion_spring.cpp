@@ -22,7 +22,7 @@ void add_torsion_spring_forces(ForceContext& context) {
       context, springs,
       [](SpringBlock<4> & block, Index k, double rest, double stiffness, double plastic_set,
          double yield) __attribute__((always_inline)) {
-        const TorsionSpringResult r = torsion_spring(
+        const TorsionSpringResult<double> r = torsion_spring(
             block.node_position(0, k), block.node_position(1, k), block.node_position(2, k),
             block.node_position(3, k), rest, stiffness, plastic_set, yield);
         block.set_force(0, k, r.force_a);
@@ -51,6 +51,20 @@ double torsion_spring_energy(const Model& model, const State& state) {
   return energy;
 }
 
+void add_torsion_spring_stiffness(const Model& model, const State& state, StiffnessSink& sink) {
+  add_spring_stiffness<4>(model.torsion_count(), model.torsion_nodes, state.torsion_broken, state.x,
+                          sink, [&](Index s, const std::array<Vec3, 4>& at) {
+                            return local_stiffness<4>(at, [&](const auto& x) {
+                              const auto r = torsion_spring(
+                                  x[0], x[1], x[2], x[3], model.torsion_rest_angle[s],
+                                  model.torsion_stiffness[s],
+                                  plastic_set_of(state.torsion_plastic_set, s),
+                                  yield_limit(model.torsion_yield_moment, s));
+                              return std::array{r.force_a, r.force_i, r.force_j, r.force_b};
+                            });
+                          });
+}
+
 const SpringKind kTorsionSprings{
     .name = "torsion springs",
     .switched = &ForceSwitches::torsion,
@@ -58,6 +72,7 @@ const SpringKind kTorsionSprings{
     .yields = [](const Model& model) { return model.torsions_yield; },
     .add_forces = add_torsion_spring_forces,
     .energy = torsion_spring_energy,
+    .add_stiffness = add_torsion_spring_stiffness,
     .report = &EnergyReport::torsion,
     .plastic_set = &State::torsion_plastic_set,
     .flow = &EnergyWorkspace::torsion_flow,

@@ -23,11 +23,11 @@ TEST(AxialSpring, ForceIsMinusTheEnergyGradient) {
     const AxialSpringResult r = axial_spring(x0, x1, rest_length, k);
     for (int c = 0; c < 3; ++c) {
       const Vec3 dx = h * Vec3::Unit(c);
-      const double dE0 = (axial_spring(x0 + dx, x1, rest_length, k).energy -
-                          axial_spring(x0 - dx, x1, rest_length, k).energy) /
+      const double dE0 = (axial_spring(Vec3(x0 + dx), x1, rest_length, k).energy -
+                          axial_spring(Vec3(x0 - dx), x1, rest_length, k).energy) /
                          (2 * h);
-      const double dE1 = (axial_spring(x0, x1 + dx, rest_length, k).energy -
-                          axial_spring(x0, x1 - dx, rest_length, k).energy) /
+      const double dE1 = (axial_spring(x0, Vec3(x1 + dx), rest_length, k).energy -
+                          axial_spring(x0, Vec3(x1 - dx), rest_length, k).energy) /
                          (2 * h);
       const double scale = std::max(1.0, r.force_on_n0.norm());
       EXPECT_NEAR(r.force_on_n0[c], -dE0, test::kGradientRelative * scale);

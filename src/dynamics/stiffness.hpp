@@ -1,0 +1,83 @@
+#pragma once
+// The stiffness of a force kind, element by element: K_e = −∂f_e/∂x_e, the Jacobian of the forces
+// an element (a spring, a touching node) puts on its nodes, negated, at the present positions with
+// the histories (plastic sets) held as they are. For a conservative kind it is the Hessian of the
+// element's energy. Newton's method (solver/) assembles them into the sparse stiffness of the
+// whole model; dynamics/ only hands each element's matrix over, and never sees a global matrix.
+//
+// The spring kinds differentiate their own force kernels (templates on their scalar) in Dual
+// numbers (core/dual.hpp), so the stiffness is exactly that of the forces the step applies.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/dual.hpp"
+#include "core/types.hpp"
+
+namespace dinam {
+
+// Where a kind hands each element's stiffness.
+class StiffnessSink {
+ public:
+  // `stiffness` is (3 node_count × 3 node_count), column-major, symmetric, N/m: row and column
+  // 3 k + a are node k's coordinate a. Pinned nodes may be among `nodes`; the sink drops them.
+  virtual void add(const Index* nodes, int node_count, const double* stiffness) = 0;
+
+ protected:
+  StiffnessSink() = default;
+  ~StiffnessSink() = default;
+  StiffnessSink(const StiffnessSink&) = default;
+  StiffnessSink& operator=(const StiffnessSink&) = default;
+};
+
+template <int kNodes>
+using LocalStiffness = Eigen::Matrix<double, 3 * kNodes, 3 * kNodes>;
+
+template <class T>
+using Vec3Of = Eigen::Matrix<T, 3, 1>;
+
+// −∂f/∂x of `forces`, a generic callable from the positions of an element's kNodes nodes
+// (std::array of Vec3Of<T>) to the forces on them (the same), by forward-mode differentiation,
+// symmetrised: a conservative force's Jacobian is symmetric but for rounding.
+template <int kNodes, class Forces>
+LocalStiffness<kNodes> local_stiffness(const std::array<Vec3, kNodes>& x, const Forces& forces) {
+  using D = Dual<3 * kNodes>;
+  std::array<Vec3Of<D>, kNodes> seeded;
+  for (int j = 0; j < kNodes; ++j) {
+    for (int a = 0; a < 3; ++a) {
+      seeded[j][a] = D::input(x[j][a], 3 * j + a);
+    }
+  }
+  const std::array<Vec3Of<D>, kNodes> f = forces(seeded);
+  LocalStiffness<kNodes> k;
+  for (int j = 0; j < kNodes; ++j) {
+    for (int a = 0; a < 3; ++a) {
+      for (int m = 0; m < 3 * kNodes; ++m) {
+        k(3 * j + a, m) = -f[j][a].gradient[m];
+      }
+    }
+  }
+  return 0.5 * (k + k.transpose());
+}
+
+// The stiffness of every spring of a kind that is not broken: spring s has nodes
+// nodes[kNodes s …], and stiffness(s, x) gives its matrix at their positions x.
+template <int kNodes, class Stiffness>
+void add_spring_stiffness(Index count, const std::vector<Index>& nodes,
+                          const std::vector<std::uint8_t>& broken, const std::vector<Vec3>& x,
+                          StiffnessSink& sink, const Stiffness& stiffness) {
+  for (Index s = 0; s < count; ++s) {
+    if (!broken.empty() && broken[s] != 0) {
+      continue;
+    }
+    const Index* spring = &nodes[static_cast<std::size_t>(kNodes) * s];
+    std::array<Vec3, kNodes> at;
+    for (int j = 0; j < kNodes; ++j) {
+      at[j] = x[spring[j]];
+    }
+    const LocalStiffness<kNodes> k = stiffness(s, at);
+    sink.add(spring, kNodes, k.data());
+  }
+}
+
+}  // namespace dinam
