@@ -20,6 +20,7 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "solver/initial_state.hpp"
 
 namespace dinam {
 namespace {

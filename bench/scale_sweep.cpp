@@ -25,6 +25,7 @@
 #include "model_measures.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "rest_frame.hpp"
+#include "solver/initial_state.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {

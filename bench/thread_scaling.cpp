@@ -33,6 +33,7 @@
 #include "model/model.hpp"
 #include "model_measures.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/initial_state.hpp"
 
 namespace dinam {
 namespace {

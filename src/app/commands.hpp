@@ -47,6 +47,19 @@ struct SimulateOptions {
 // MDD) per object and manifest.json, all at once or not at all. Throws UserError for bad input.
 int run_simulate(const SimulateOptions& options);
 
+struct ModesOptions {
+  std::filesystem::path scene;
+  int count = 10;                               // the lowest modes to find
+  std::optional<std::filesystem::path> output;  // the cache; default: the scene's `output`/modes
+  bool quiet = false;
+};
+
+// Finds the scene's structure at rest under gravity (its `settle`, by default Newton's method),
+// prints its lowest natural modes (frequency, period, the share of the free mass that moves with
+// each in x, y and z) and writes them as a motion cache, one object per mode oscillating through
+// one cycle, with modes.csv. Throws UserError for bad input.
+int run_modes(const ModesOptions& options);
+
 struct MovieOptions {
   std::filesystem::path folder;      // frames and frames.json, written by render
   std::optional<std::string> movie;  // mp4 or gif: overrides frames.json's choice

@@ -12,6 +12,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/initial_state.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
@@ -134,11 +135,26 @@ std::string settle_summary(const SettleOutcome& settled, double dt) {
   if (!settled.ran) {
     return "";
   }
+  if (settled.by_newton) {
+    const std::string creep =
+        settled.steps == 0
+            ? ""
+            : fmt::format(", after {} steps ({:g} s) of relaxation through a buckling",
+                          settled.steps, static_cast<double>(settled.steps) * dt);
+    return fmt::format(
+        "settled under gravity by Newton's method in {} iterations{}; the largest "
+        "out-of-balance force is {:.2g} of a node's weight",
+        settled.newton_iterations, creep, settled.residual);
+  }
+  const std::string instead =
+      settled.fallback.empty() ? ""
+                               : fmt::format(" (instead of Newton's method: {})", settled.fallback);
   return fmt::format(
-      "settled under gravity in {:g} s ({} steps: {} overdamped, then {} of kinetic damping with "
-      "{} restarts from rest); the largest out-of-balance force is {:.2g} of a node's weight",
+      "settled under gravity by relaxation in {:g} s ({} steps: {} overdamped, then {} of kinetic "
+      "damping with {} restarts from rest){}; the largest out-of-balance force is {:.2g} of a "
+      "node's weight",
       static_cast<double>(settled.steps) * dt, settled.steps, settled.viscous_steps,
-      settled.steps - settled.viscous_steps, settled.restarts, settled.residual);
+      settled.steps - settled.viscous_steps, settled.restarts, instead, settled.residual);
 }
 
 SimulatedFrames cached_frames(const MotionCache& cache, int first, int last,

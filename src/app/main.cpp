@@ -154,6 +154,21 @@ int run(int argc, char** argv) {
   snapshot_command->add_flag("-q,--quiet", snapshot.quiet, "Print only differences and errors");
   add_threads_option(snapshot_command);
 
+  ModesOptions modes;
+  std::string modes_output;
+  CLI::App* modes_command = app.add_subcommand(
+      "modes",
+      "Print the lowest natural frequencies and mode shapes of a scene's structure at rest under "
+      "gravity, and write them as a motion cache (one object per mode)");
+  modes_command->add_option("scene", modes.scene, "Scene file (YAML)")->required();
+  modes_command->add_option("--count", modes.count, "How many of the lowest modes")
+      ->default_val(modes.count)
+      ->check(CLI::Range(1, 1000));
+  modes_command->add_option("-o,--output", modes_output,
+                            "Cache folder to write (default: the scene's output folder/modes)");
+  modes_command->add_flag("-q,--quiet", modes.quiet, "Print nothing but errors");
+  add_threads_option(modes_command);
+
   std::filesystem::path info_scene;
   CLI::App* info_command =
       app.add_subcommand("info",
@@ -207,6 +222,12 @@ int run(int argc, char** argv) {
         movie.movie = movie_format;
       }
       return run_movie(movie);
+    }
+    if (*modes_command) {
+      if (!modes_output.empty()) {
+        modes.output = modes_output;
+      }
+      return run_modes(modes);
     }
     if (*snapshot_command) {
       if (!snapshot_output.empty()) {

@@ -11,6 +11,7 @@
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/initial_state.hpp"
 
 namespace dinam {
 

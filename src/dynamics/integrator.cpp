@@ -15,7 +15,6 @@
 #include "dynamics/object_contact.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/pin_motion.hpp"
-#include "dynamics/settle.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/tearing.hpp"
 #include "dynamics/wind.hpp"
@@ -271,6 +270,13 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
   }
 }
 
+void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state) {
+  for (Vec3& v : state.v_half) {
+    v.setZero();
+  }
+  compute_forces(model, switches, state, false);
+}
+
 State make_state(const Model& model, bool track_energy) {
   const std::size_t n = model.node_count();
   State state;
@@ -319,16 +325,6 @@ void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches
   for (Index i = 0; i < model.node_count(); ++i) {
     state.v_half[i] -= 0.5 * dt * model.node_inv_mass[i] * state.force[i];
   }
-}
-
-State initial_state(const Model& model, double dt, const ForceSwitches& switches, bool track_energy,
-                    Settling settling) {
-  State state = make_state(model, track_energy);
-  if (settling == Settling::kRun) {
-    settle_under_gravity(model, dt, switches, state);
-  }
-  start_leapfrog(model, dt, switches, state);
-  return state;
 }
 
 bool worth_sharing(const Model& model) {

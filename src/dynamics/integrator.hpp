@@ -38,27 +38,22 @@ struct StepOptions {
 
 // Every array of the state for `model` allocated in this one place (state_arrays.hpp lists them),
 // at x_0 and v_0 from the model (driven pins where their paths start); the energy ledger's arrays
-// only with `track_energy`. Computes no force: initial_state does.
+// only with `track_energy`. Computes no force: start_leapfrog does (solver/initial_state.hpp makes
+// the state at t = 0, settled as the scene asks).
 State make_state(const Model& model, bool track_energy);
 
 // Starts leapfrog from rest or from v_0 at the state's positions: the forces at (x_0, v_0) into
 // state.force, then v_{−½} = v_0 − ½Δt a_0.
 void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches, State& state);
 
-// Whether initial_state runs the model's settling phase (settle.hpp), or starts from the mesh
-// as it is (to measure a step's cost, say).
-enum class Settling { kRun, kSkip };
-
-// The state at t = 0: x_0 and v_0 from the model, and v_{−½} = v_0 − ½Δt a_0 so that the first
-// half-step velocity is v_{½} = v_0 + ½Δt a_0. With `track_energy`, every step also keeps the
-// energy accounts and report (at some cost).
-State initial_state(const Model& model, double dt, const ForceSwitches& switches = {},
-                    bool track_energy = false, Settling settling = Settling::kRun);
-
 // Computes the total force on every node at (x_n, v_{n−½}, t_n) into state.force. With
 // update_history false, plastic sets and contact anchors are left as they are.
 void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
                     bool update_history = false);
+
+// The static forces at the present positions into state.force: velocities set to zero (no damping
+// or drag), plastic sets and contact anchors left as they are.
+void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state);
 
 // Whether a step of `model` has enough work to pay for sharing it between threads
 // (kMinParallelItems springs), and whether it does: where the process's team (core/

@@ -1,14 +1,11 @@
-#include "dynamics/settle.hpp"
+#include "dynamics/relaxation.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <string_view>
 #include <tuple>
 
-#include "core/error.hpp"
 #include "dynamics/integrator.hpp"
-#include "dynamics/state_arrays.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -33,15 +30,6 @@ double kinetic_measure(const Model& model, const State& state) {
     sum += model.node_mass[i] * state.v_half[i].squaredNorm();
   }
   return sum;
-}
-
-// The static forces at the present positions (velocities zero: no damping or drag) into
-// state.force, leaving plastic sets and contact anchors as they are.
-void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state) {
-  for (Vec3& v : state.v_half) {
-    v.setZero();
-  }
-  compute_forces(model, switches, state, false);
 }
 
 }  // namespace
@@ -99,7 +87,7 @@ std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches&
 
 SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
                                        std::int64_t max_steps, double residual, State& state,
-                                       const StepOptions& options) {
+                                       const StepOptions& options, const RestartTest& stop) {
   SettleOutcome outcome;
   outcome.ran = true;
   outcome.residual = std::numeric_limits<double>::infinity();
@@ -121,6 +109,10 @@ SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const Forc
       if (residual > 0.0 && outcome.residual <= residual) {
         break;
       }
+      if (peak && stop && stop(state)) {
+        outcome.stopped = true;
+        break;
+      }
       if (peak) {
         // Restart from rest at x: leapfrog starts from rest with v_{½} = ½ Δt a, so
         // v_{−½} = −½ Δt a. Zeroing v_{−½} instead would start every restart with a kick of
@@ -140,73 +132,53 @@ SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const Forc
   return outcome;
 }
 
-void settle_under_gravity(const Model& model, double dt, const ForceSwitches& switches,
-                          State& state) {
-  if (!model.settle.enabled) {
-    return;
-  }
-  // The same structure at rest with nothing but gravity and the ground acting: fields and wind
-  // off, supports held still where they start, in a state of its own that starts from rest at
-  // the state's positions (the model is not copied).
-  ForceSwitches quiet = switches;
-  quiet.fields = false;
-  quiet.wind = false;
+SettleOutcome creep_under_gravity(const Model& model, double dt, const ForceSwitches& quiet,
+                                  State& settling) {
   StepOptions options;
   options.pins_hold_still = true;
-  State settling = make_state(model, false);
-  settling.x = state.x;
   for (Vec3& v : settling.v_half) {
     v.setZero();
   }
   start_leapfrog(model, dt, quiet, settling);
-  const auto max_steps = std::max<std::int64_t>(1, std::llround(model.settle.duration / dt));
-  // First the large motion, overdamped: a path without swings, so that where a limp structure
-  // folds or which way a tie flops is decided by the structure, not by rounding (kinetic damping
-  // from the start lets the fall swing chaotically, and 1e-12 m moved a tie 7 cm). Then kinetic
-  // damping, which converges quickly near the equilibrium where viscous damping crawls.
+  SettleOutcome outcome;
+  outcome.ran = true;
+  outcome.max_steps = std::max<std::int64_t>(1, std::llround(model.settle.duration / dt));
+  // The large motion, overdamped: a path without swings, so that where a limp structure folds or
+  // which way a tie flops is decided by the structure, not by rounding (kinetic damping from the
+  // start lets the fall swing chaotically, and 1e-12 m moved a tie 7 cm).
   const double damping = model.settle.damping.value_or(automatic_settle_damping(model));
-  SettleOutcome viscous;
-  const std::int64_t viscous_steps =
-      damping > 0.0
-          ? relax_viscously(model, dt, quiet, options, std::min(damping, 0.2 / dt), max_steps,
-                            std::max(kViscousHandover, model.settle.residual), settling, viscous)
-          : 0;
-  if (viscous_steps > 0) {
-    // Hand over from rest, as kinetic damping's restarts do (v_{−½} = −½ Δt a).
+  if (damping > 0.0) {
+    outcome.viscous_steps =
+        relax_viscously(model, dt, quiet, options, std::min(damping, 0.2 / dt), outcome.max_steps,
+                        std::max(kViscousHandover, model.settle.residual), settling, outcome);
+    outcome.steps = outcome.viscous_steps;
+  }
+  return outcome;
+}
+
+SettleOutcome relax_to_rest(const Model& model, double dt, const ForceSwitches& quiet,
+                            State& settling, const RestartTest& stop) {
+  SettleOutcome viscous = creep_under_gravity(model, dt, quiet, settling);
+  if (viscous.steps >= viscous.max_steps) {
+    return viscous;
+  }
+  // Then kinetic damping, which converges quickly near the equilibrium where viscous damping
+  // crawls, handed over from rest as its restarts are (v_{−½} = −½ Δt a).
+  if (viscous.steps > 0) {
     for (Index i = 0; i < model.node_count(); ++i) {
       settling.v_half[i] = (-0.5 * dt * model.node_inv_mass[i]) * settling.force[i];
     }
   }
-  state.settled = viscous_steps < max_steps
-                      ? relax_by_kinetic_damping(model, dt, quiet, max_steps - viscous_steps,
-                                                 model.settle.residual, settling, options)
-                      : viscous;
-  state.settled.viscous_steps = viscous_steps;
-  state.settled.steps += viscous_steps;
-  const SettleOutcome& outcome = state.settled;
-  if (!(outcome.residual <= model.settle.residual)) {
-    const Index node = outcome.worst_node;
-    const ModelObject& object = model.objects[model.node_object[node]];
-    throw_user_error(
-        model.settle.loc,
-        "the settling phase did not come to rest within its {:g} s ({} steps): the largest "
-        "out-of-balance force is still {:.3g} of a node's weight (node {} of object '{}'), above "
-        "'settle.residual' {:g}. Give 'settle.duration' more time or 'settle.residual' a larger "
-        "value; if it never settles, part of the structure can move without resisting (a "
-        "mechanism, a node with too few bars) or the time step is too long for it",
-        model.settle.duration, max_steps, outcome.residual, node - object.first_node, object.name,
-        model.settle.residual);
-  }
-  // The shape reached, and what the way there left: plastic sets, what broke under its own
-  // weight, the ground's anchors. Velocities, time and the energy start afresh at t = 0.
-  state.x = std::move(settling.x);
-  for_each_state_array(
-      [](std::string_view, StateArrayRole role, auto& to, auto& from) {
-        if (role == StateArrayRole::kHistory) {
-          to = std::move(from);
-        }
-      },
-      state, settling);
+  StepOptions options;
+  options.pins_hold_still = true;
+  SettleOutcome outcome =
+      relax_by_kinetic_damping(model, dt, quiet, viscous.max_steps - viscous.steps,
+                               model.settle.residual, settling, options, stop);
+  outcome.ran = true;
+  outcome.viscous_steps = viscous.steps;
+  outcome.steps += viscous.steps;
+  outcome.max_steps = viscous.max_steps;
+  return outcome;
 }
 
 }  // namespace dinam

@@ -1,9 +1,11 @@
 #pragma once
-// The settling phase before t = 0 (SettlePhase): the structure hangs or rests under gravity alone
-// until it is in static equilibrium, and the shape it reaches becomes the start of the shown
-// motion. Fields, wind and initial velocities wait until t = 0; plastic sets and ground contact
-// history carry over, so a structure that yields under its own weight keeps that set.
+// Dynamic relaxation: the way the settling phase (solver/settle.hpp) comes to rest when Newton's
+// method cannot serve (`settle: {method: relax}`, or friction, yielding or tearing on the way):
+// the structure is stepped in time, overdamped and then by kinetic damping, until the static
+// out-of-balance force is small enough. Plastic sets and ground contact history evolve as in any
+// step, so a structure that yields under its own weight keeps that set.
 #include <cstdint>
+#include <functional>
 
 #include "dynamics/integrator.hpp"
 #include "dynamics/state.hpp"
@@ -21,10 +23,14 @@ std::pair<double, Index> relative_residual(const Model& model, const State& stat
 // removes the energy near a point of lowest potential, so the structure walks down to a static
 // equilibrium of the forces that `switches` leave on (plastic sets and contact history evolve as
 // in any step). Stops at the first restart whose out-of-balance force is at most `residual` of the
-// weight (0: never, run all the steps); positions and histories are left in `state`.
+// weight (0: never, run all the steps), or at the first restart where `stop` (if given) returns
+// true for the state at rest there (outcome.stopped); positions and histories are left in `state`,
+// the static forces in state.force.
+using RestartTest = std::function<bool(const State&)>;
 SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const ForceSwitches& switches,
                                        std::int64_t max_steps, double residual, State& state,
-                                       const StepOptions& options = {});
+                                       const StepOptions& options = {},
+                                       const RestartTest& stop = {});
 
 // The viscous damping of the settling phase's first stage when the scene leaves it to dinam:
 // α = 8 √(g / D), D the size (bounding-box diagonal) of the free nodes, four times critical for
@@ -38,13 +44,21 @@ std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches&
                              const StepOptions& options, double damping, std::int64_t max_steps,
                              double handover, State& state, SettleOutcome& outcome);
 
-// Runs the phase from `state` (at the mesh positions, at rest) with steps of dt: overdamped
-// viscous relaxation (model.settle.damping, automatic_settle_damping when empty; 0 skips it) until
-// every node carries 90 % of its weight, then kinetic damping until it reaches
-// model.settle.residual, leaving positions and histories in `state` and the outcome in
-// state.settled. Does nothing without a phase. Throws UserError at the scene's `settle` when it
-// has not converged within model.settle.duration.
-void settle_under_gravity(const Model& model, double dt, const ForceSwitches& switches,
-                          State& state);
+// Relaxation's first stage: from `settling` (at the positions to start from; velocities set to
+// zero), steps of dt with the forces `quiet` leaves on, supports held still, overdamped by
+// model.settle.damping (automatic_settle_damping when empty; 0 skips the stage), until every free
+// node carries 90 % of its weight (or model.settle.residual, if that is looser) or
+// model.settle.duration has passed. Positions, velocities and histories are left in `settling`,
+// the static forces there in settling.force; the outcome counts the steps.
+SettleOutcome creep_under_gravity(const Model& model, double dt, const ForceSwitches& quiet,
+                                  State& settling);
+
+// Both stages: the creep, then kinetic damping until the out-of-balance force is at most
+// model.settle.residual of every node's weight, `stop` ends it at a restart, or
+// model.settle.duration has passed. Positions and
+// histories are left in `settling`; the outcome is returned (converged when its residual is at
+// most model.settle.residual).
+SettleOutcome relax_to_rest(const Model& model, double dt, const ForceSwitches& quiet,
+                            State& settling, const RestartTest& stop = {});
 
 }  // namespace dinam

@@ -2,6 +2,7 @@
 // Everything that changes during a run. The model it belongs to is passed beside it.
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
@@ -68,14 +69,20 @@ struct EnergyWorkspace {
   }
 };
 
-// How the settling phase before t = 0 ended (settle.hpp); `ran` is false without one.
+// How the settling phase before t = 0 ended (solver/settle.hpp); `ran` is false without one.
 struct SettleOutcome {
   bool ran = false;
-  std::int64_t steps = 0;          // steps taken until it converged, in all
+  bool by_newton = false;  // Newton's method on the potential energy, else dynamic relaxation
+  int newton_iterations = 0;
+  // Why relaxation served where Newton's method was asked for; empty when it was not.
+  std::string fallback;
+  std::int64_t steps = 0;          // relaxation: steps taken until it converged, in all
   std::int64_t viscous_steps = 0;  // of which overdamped, before kinetic damping
+  std::int64_t max_steps = 0;      // relaxation: the most it could take (settle.duration)
   double residual = 0.0;  // largest out-of-balance force on a free node / that node's weight
   Index worst_node = -1;  // the node with that force
   int restarts = 0;       // kinetic-energy peaks, each a restart from rest
+  bool stopped = false;   // relaxation ended early by its caller's test at a restart
 };
 
 // The wind's scratch (empty without wind): the wind at each node where it is turbulent, and the

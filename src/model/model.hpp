@@ -49,13 +49,14 @@ struct PinMotion {
   TimeProfile profile;
 };
 
-// The settling phase before t = 0 (SettleDesc): gravity alone, by kinetic damping, until the
-// out-of-balance force on every free node is below `residual` of its weight.
+// The settling phase before t = 0 (SettleDesc): gravity alone, until the out-of-balance force on
+// every free node is below `residual` of its weight.
 struct SettlePhase {
   bool enabled = false;
-  double duration = 0.0;          // s, the longest it may take
+  SettleMethod method = SettleMethod::kNewton;
+  double duration = 0.0;          // s, the longest relaxation may take
   double residual = 0.0;          // of each node's weight
-  std::optional<double> damping;  // 1/s, of the first, viscous stage; empty: automatic
+  std::optional<double> damping;  // 1/s, of relaxation's first, viscous stage; empty: automatic
   FileLoc loc;  // of the scene's `settle`, for the message when it does not converge
 };
 

@@ -379,8 +379,8 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   Model model;
   model.gravity = scene.gravity;
   model.global_damping = scene.global_damping;
-  model.settle = {scene.settle.enabled, scene.settle.duration, scene.settle.residual,
-                  scene.settle.damping, scene.settle.loc};
+  model.settle = {scene.settle.enabled,  scene.settle.method,  scene.settle.duration,
+                  scene.settle.residual, scene.settle.damping, scene.settle.loc};
   model.face_offsets.push_back(0);
   std::vector<ObjectNodes> objects;
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {

@@ -282,11 +282,16 @@ struct ContactDesc {
   FileLoc stiffness_loc;  // where `stiffness` was given as a number
 };
 
+// How the settling phase finds the structure at rest: the static equilibrium by Newton's method
+// on the potential energy, or dynamic relaxation (stepping in time, damped, until it stops).
+enum class SettleMethod { kNewton, kRelax };
+
 // A phase before t = 0 in which the structure comes to rest under gravity alone (no fields, no
-// wind, no initial velocities, by kinetic damping); its final shape is the start of the shown
-// motion. The paper's flag begins this way.
+// wind, no initial velocities); its final shape is the start of the shown motion. The paper's flag
+// begins this way.
 struct SettleDesc {
-  bool enabled = false;      // false: no settling, the motion starts from the meshes as given
+  bool enabled = false;  // false: no settling, the motion starts from the meshes as given
+  SettleMethod method = SettleMethod::kNewton;
   double duration = 60.0;    // s, the longest the phase may take to reach `residual`
   double residual = 1.0e-6;  // largest out-of-balance force on a free node / that node's weight
   std::optional<double> damping;  // 1/s, of the first, overdamped stage; empty: automatic

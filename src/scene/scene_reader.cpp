@@ -292,6 +292,15 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     YamlMap settle(map.get("settle"), file, "settle");
     scene.settle.enabled = true;
     scene.settle.loc = settle.loc();
+    const std::string method = settle.string("method", "newton");
+    if (method == "newton") {
+      scene.settle.method = SettleMethod::kNewton;
+    } else if (method == "relax") {
+      scene.settle.method = SettleMethod::kRelax;
+    } else {
+      throw_user_error(settle.loc("method"), "'settle.method' must be newton or relax; got '{}'",
+                       method);
+    }
     scene.settle.duration = settle.number("duration", scene.settle.duration);
     require_positive(scene.settle.duration, settle.loc("duration"), "settle.duration", "s");
     scene.settle.residual = settle.number("residual", scene.settle.residual);

@@ -17,6 +17,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/initial_state.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -2,7 +2,8 @@
 # A motion cache opens in Blender: simulates a small flag (tests/data/end_to_end_flag.yaml) into
 # a cache with PC2 and MDD files, then runs scripts/blender-check-cache.py in Blender itself
 # (headless), which imports each OBJ, adds Mesh Cache modifiers and compares the moved vertices
-# with the cache files.
+# with the cache files; then the same for the cache of its natural modes (`dinam modes`, one
+# object per mode).
 #
 #   tests/cache/blender_open_test.sh DINAM SOURCE_DIR
 #
@@ -22,3 +23,9 @@ blender -b --factory-startup --python-exit-code 1 \
   { cat "$work/blender.log"; exit 1; }
 grep '^blender-check:' "$work/blender.log"
 grep -q '^blender-check: PASS' "$work/blender.log"
+"$dinam" modes "$source_dir/tests/data/end_to_end_flag.yaml" -o "$work/modes" --count 3 --quiet
+blender -b --factory-startup --python-exit-code 1 \
+  --python "$source_dir/scripts/blender-check-cache.py" -- "$work/modes" >"$work/modes.log" 2>&1 ||
+  { cat "$work/modes.log"; exit 1; }
+grep '^blender-check:' "$work/modes.log"
+grep -q '^blender-check: PASS' "$work/modes.log"

@@ -11,6 +11,7 @@
 #include "dynamics/stability.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
+#include "solver/initial_state.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

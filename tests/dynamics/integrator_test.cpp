@@ -1,4 +1,5 @@
 #include "dynamics/integrator.hpp"
+#include "solver/initial_state.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,6 +8,7 @@
 
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
+#include "solver/initial_state.hpp"
 
 namespace dinam::test {
 

@@ -8,6 +8,7 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "solver/initial_state.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -18,6 +18,7 @@
 #include "dynamics/work_split.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/initial_state.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -1,0 +1,214 @@
+#include "solver/equilibrium.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+#include "dynamics/relaxation.hpp"
+#include "model/model.hpp"
+#include "solver/potential.hpp"
+#include "solver/stiffness_matrix.hpp"
+
+namespace dinam {
+namespace {
+
+// A step is taken once the energy falls by at least this share of what the quadratic model of the
+// energy promised (any decrease that is not vanishing).
+constexpr double kSufficientDecrease = 1e-4;
+// Energies nearer than this share of the energy's magnitude are equal within rounding (a few
+// hundred ulps of the sum): near the equilibrium every step changes the energy by less, and the
+// line search judges it by the out-of-balance force instead.
+constexpr double kEnergyRounding = 1e-13;
+// Levenberg–Marquardt's added mass-proportional stiffness μ M, as a share of the mean K_ii/M_ii:
+// the least added when K is singular, and the most before the search gives up (a direction so
+// damped it moves nothing).
+constexpr double kLeastShift = 1e-10;
+constexpr double kMostShift = 1e6;
+// Beyond this shift the stiffness as it is is far from definite (a structure buckling or folding):
+// the elements are projected instead, and the shift starts again from zero.
+constexpr double kProjectAbove = 0.1;
+// Factorisations tried per iteration at most (each failed one raises the shift).
+constexpr int kAttemptsPerIteration = 4;
+// A pivot more negative than this share of the largest is a negative eigenvalue, not rounding.
+constexpr double kPivotRounding = 1e-10;
+
+using Vector = Eigen::VectorXd;
+
+// The free nodes' forces as a vector over the free dofs.
+Vector free_part(const FreeDofs& dofs, const std::vector<Vec3>& force) {
+  Vector f(dofs.count);
+  for (std::size_t i = 0; i < force.size(); ++i) {
+    if (dofs.first_dof[i] >= 0) {
+      f.segment<3>(dofs.first_dof[i]) = force[i];
+    }
+  }
+  return f;
+}
+
+void move_free_nodes(const FreeDofs& dofs, const std::vector<Vec3>& from, const Vector& step,
+                     double length, std::vector<Vec3>& to) {
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    to[i] = dofs.first_dof[i] >= 0 ? Vec3(from[i] + length * step.segment<3>(dofs.first_dof[i]))
+                                   : from[i];
+  }
+}
+
+}  // namespace
+
+EquilibriumOutcome find_equilibrium(const Model& model, const ForceSwitches& switches,
+                                    const EquilibriumOptions& options, State& state) {
+  EquilibriumOutcome outcome;
+  const FreeDofs dofs = free_dofs(model);
+  const std::vector<Vec3> origin = state.x;  // where gravity's energy is zero
+  compute_static_forces(model, switches, state);
+  std::tie(outcome.residual, outcome.worst_node) = relative_residual(model, state);
+  const double start_residual = outcome.residual;
+  if (dofs.count == 0 || outcome.residual <= options.residual) {
+    outcome.converged = true;
+    return outcome;
+  }
+  Vector mass(dofs.count);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dofs.first_dof[i] >= 0) {
+      mass.segment<3>(dofs.first_dof[i]).setConstant(model.node_mass[i]);
+    }
+  }
+
+  StiffnessAssembly assembly;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> factors;
+  bool pattern_analysed = false;
+  std::vector<Vec3> x = state.x;
+  Vector force = free_part(dofs, state.force);
+  Potential energy = potential_energy(model, state, switches, origin);
+  Definiteness definiteness = Definiteness::kExact;
+  SparseMatrix k;
+  bool assembled = false;
+  double shift = 0.0;        // μ, 1/s²: K + μ M is what is solved with
+  double shift_scale = 0.0;  // the mean K_ii / M_ii at the start, 1/s²
+  int attempts = 0;
+  // Takes a more cautious step: more of μ M, and where even a large μ is needed to make the
+  // stiffness as it is definite, its elements projected instead.
+  auto back_off = [&] {
+    shift = std::max(4.0 * shift, kLeastShift * shift_scale);
+    if (definiteness == Definiteness::kExact && shift > kProjectAbove * shift_scale) {
+      definiteness = Definiteness::kProjected;
+      assembled = false;
+      shift = 0.0;
+    }
+  };
+
+  while (outcome.iterations < options.max_iterations &&
+         attempts < kAttemptsPerIteration * options.max_iterations) {
+    attempts += 1;
+    if (!assembled) {
+      state.x = x;
+      k = assembly.assemble(model, state, switches, dofs, definiteness);
+      assembled = true;
+      if (shift_scale == 0.0) {
+        shift_scale = std::max(k.diagonal().cwiseQuotient(mass).mean(), 1e-300);
+      }
+    }
+    SparseMatrix shifted = k;
+    if (shift > 0.0) {
+      shifted.diagonal() += shift * mass;
+    }
+    if (!pattern_analysed) {
+      factors.analyzePattern(shifted);
+      pattern_analysed = true;
+    }
+    factors.factorize(shifted);
+    // Positive definite when every pivot of L D Lᵀ is positive; a negative pivot of the stiffness
+    // as it is (beyond rounding) means it has a negative eigenvalue: the structure is unstable
+    // there, about to buckle or fold.
+    const bool factored = factors.info() == Eigen::Success;
+    const double least_pivot = factored ? factors.vectorD().minCoeff() : 0.0;
+    if (!factored || !(least_pivot > 0.0)) {
+      if (definiteness == Definiteness::kExact && factored &&
+          least_pivot < -kPivotRounding * factors.vectorD().cwiseAbs().maxCoeff()) {
+        outcome.unstable = true;
+        if (options.stop_where_unstable) {
+          outcome.failure = "the structure is unstable on the way (it buckles or folds)";
+          break;
+        }
+      }
+      back_off();
+      if (shift > kMostShift * shift_scale) {
+        outcome.failure =
+            "the stiffness is singular: part of the structure can move without "
+            "resisting (a mechanism)";
+        break;
+      }
+      continue;
+    }
+    const Vector step = factors.solve(force);
+    // The decrease the quadratic model of the energy promises: F·Δ − ½ ΔᵀKΔ (> 0 since K + μM
+    // is positive definite).
+    const double promised = force.dot(step) - 0.5 * step.dot(k * step);
+    move_free_nodes(dofs, x, step, 1.0, state.x);
+    const Potential trial = potential_energy(model, state, switches, origin);
+    const double rounding = kEnergyRounding * std::max(energy.magnitude, trial.magnitude);
+    // How much of the promised decrease the step delivered. Where rounding hides the energy's
+    // change (near the equilibrium), a step that lowers the out-of-balance force counts as good.
+    double delivered = 0.0;
+    bool forces_at_trial = false;
+    if (std::abs(trial.energy - energy.energy) <= rounding) {
+      compute_static_forces(model, switches, state);
+      forces_at_trial = true;
+      delivered = free_part(dofs, state.force).squaredNorm() < force.squaredNorm() ? 1.0 : 0.0;
+    } else {
+      delivered = (energy.energy - trial.energy) / promised;
+    }
+    if (!(delivered > kSufficientDecrease)) {
+      back_off();
+      if (shift > kMostShift * shift_scale) {
+        outcome.failure = "no step lowers the energy any further";
+        break;
+      }
+      continue;
+    }
+    outcome.iterations += 1;
+    x = state.x;
+    energy = trial;
+    assembled = false;
+    if (!forces_at_trial) {
+      compute_static_forces(model, switches, state);
+    }
+    force = free_part(dofs, state.force);
+    std::tie(outcome.residual, outcome.worst_node) = relative_residual(model, state);
+    if (outcome.residual <= options.residual) {
+      outcome.converged = true;
+      break;
+    }
+    // Trust the quadratic model more where it predicted well (towards Newton's own step, with
+    // the stiffness as it is), less where it did not (Levenberg–Marquardt's rule).
+    if (delivered > 0.75) {
+      shift = shift > kLeastShift * shift_scale ? 0.25 * shift : 0.0;
+      definiteness = Definiteness::kExact;
+    } else if (delivered < 0.25) {
+      shift = std::max(2.0 * shift, kLeastShift * shift_scale);
+    }
+  }
+  if (!outcome.converged && outcome.failure.empty()) {
+    outcome.failure = fmt::format(
+        "it did not converge within {} Newton iterations (the out-of-balance force went from "
+        "{:.2g} to {:.2g} of a node's weight)",
+        options.max_iterations, start_residual, outcome.residual);
+  }
+  state.x = x;
+  compute_static_forces(model, switches, state);
+  return outcome;
+}
+
+bool is_stable(const Model& model, const ForceSwitches& switches, const State& state) {
+  const FreeDofs dofs = free_dofs(model);
+  StiffnessAssembly assembly;
+  const SparseMatrix& k = assembly.assemble(model, state, switches, dofs, Definiteness::kExact);
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> factors(k);
+  return factors.info() == Eigen::Success && factors.vectorD().minCoeff() > 0.0;
+}
+
+}  // namespace dinam

@@ -1,0 +1,139 @@
+#include "solver/natural_modes.hpp"
+
+#include <fmt/format.h>
+
+#include <Spectra/SymEigsShiftSolver.h>
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "model/model.hpp"
+#include "solver/stiffness_matrix.hpp"
+
+namespace dinam {
+namespace {
+
+using Vector = Eigen::VectorXd;
+
+// Models with at most this many free degrees of freedom are solved densely (all modes at once,
+// exactly): Lanczos needs a subspace of a few times the modes asked for, which small models do
+// not have.
+constexpr Index kLargestDense = 600;
+
+// The shift below which Lanczos looks, as a share of the mean ω²_ii: just below zero, so that
+// A − σI is positive definite for a stable structure (zero-frequency modes of a free one
+// included) and the modes nearest σ are the lowest.
+constexpr double kShiftShare = 1e-8;
+
+// Spectra's operator y = (A − σI)⁻¹ x, by a sparse LDLᵀ factorisation of A − σI.
+class ShiftSolve {
+ public:
+  using Scalar = double;
+  explicit ShiftSolve(const SparseMatrix& a) : a_(a) {}
+  Eigen::Index rows() const { return a_.rows(); }
+  Eigen::Index cols() const { return a_.cols(); }
+  void set_shift(double sigma) {
+    SparseMatrix shifted = a_;
+    shifted.diagonal().array() -= sigma;
+    factors_.compute(shifted);
+    if (factors_.info() != Eigen::Success) {
+      throw RuntimeError("the natural modes: the stiffness could not be factorised at the shift");
+    }
+  }
+  void perform_op(const double* x, double* y) const {
+    Eigen::Map<Vector>(y, a_.rows()) = factors_.solve(Eigen::Map<const Vector>(x, a_.rows()));
+  }
+
+ private:
+  const SparseMatrix& a_;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> factors_;
+};
+
+struct Eigenpairs {
+  Vector values;            // ascending
+  Eigen::MatrixXd vectors;  // orthonormal columns
+};
+
+Eigenpairs lowest_dense(const SparseMatrix& a, int count) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver{Eigen::MatrixXd(a)};
+  return {solver.eigenvalues().head(count), solver.eigenvectors().leftCols(count)};
+}
+
+Eigenpairs lowest_by_lanczos(const SparseMatrix& a, int count) {
+  ShiftSolve op(a);
+  const double sigma = -kShiftShare * a.diagonal().mean();
+  const auto n = static_cast<int>(a.rows());
+  const int subspace = std::min(n, std::max(2 * count + 1, count + 20));
+  Spectra::SymEigsShiftSolver<ShiftSolve> eigs(op, count, subspace, sigma);
+  eigs.init();
+  eigs.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
+  if (eigs.info() != Spectra::CompInfo::Successful) {
+    throw RuntimeError(fmt::format(
+        "the natural modes: Lanczos did not converge on the lowest {} modes ({} free degrees of "
+        "freedom); ask for fewer with --count",
+        count, n));
+  }
+  return {eigs.eigenvalues(), eigs.eigenvectors()};
+}
+
+}  // namespace
+
+std::vector<NaturalMode> natural_modes(const Model& model, const State& state,
+                                       const ForceSwitches& switches, int count) {
+  const FreeDofs dofs = free_dofs(model);
+  count = std::min<int>(count, dofs.count);
+  if (count <= 0) {
+    return {};
+  }
+  // A = M^{-½} K M^{-½}: its eigenvalues are ω², its eigenvectors M^{½} φ.
+  Vector inverse_root_mass(dofs.count);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dofs.first_dof[i] >= 0) {
+      inverse_root_mass.segment<3>(dofs.first_dof[i])
+          .setConstant(1.0 / std::sqrt(model.node_mass[i]));
+    }
+  }
+  StiffnessAssembly assembly;
+  const SparseMatrix k = assembly.assemble(model, state, switches, dofs, Definiteness::kExact);
+  SparseMatrix a = inverse_root_mass.asDiagonal() * k;
+  a = a * inverse_root_mass.asDiagonal();
+  const Eigenpairs pairs =
+      dofs.count <= kLargestDense ? lowest_dense(a, count) : lowest_by_lanczos(a, count);
+
+  double free_mass = 0.0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    free_mass += dofs.first_dof[i] >= 0 ? model.node_mass[i] : 0.0;
+  }
+  std::vector<NaturalMode> modes;
+  for (int m = 0; m < count; ++m) {
+    NaturalMode mode;
+    mode.omega_squared = pairs.values[m];
+    mode.frequency =
+        mode.omega_squared > 0.0 ? std::sqrt(mode.omega_squared) / (2.0 * std::numbers::pi) : 0.0;
+    Vector phi = inverse_root_mass.cwiseProduct(pairs.vectors.col(m));
+    Eigen::Index largest = 0;
+    phi.cwiseAbs().maxCoeff(&largest);
+    if (phi[largest] < 0.0) {
+      phi = -phi;
+    }
+    mode.shape.assign(static_cast<std::size_t>(model.node_count()), Vec3::Zero());
+    Vec3 participation = Vec3::Zero();  // Γ = φᵀ M r for r each axis
+    for (Index i = 0; i < model.node_count(); ++i) {
+      if (dofs.first_dof[i] >= 0) {
+        mode.shape[i] = phi.segment<3>(dofs.first_dof[i]);
+        participation += model.node_mass[i] * mode.shape[i];
+      }
+    }
+    mode.mass_share = participation.cwiseProduct(participation) / free_mass;
+    modes.push_back(std::move(mode));
+  }
+  std::sort(modes.begin(), modes.end(), [](const NaturalMode& p, const NaturalMode& q) {
+    return p.omega_squared < q.omega_squared;
+  });
+  return modes;
+}
+
+}  // namespace dinam

@@ -1,0 +1,48 @@
+#pragma once
+// The stiffness matrix of the whole model, K = −∂F/∂x over its free degrees of freedom, assembled
+// from each force kind's element matrices (dynamics/stiffness.hpp). Newton's method solves with it
+// (equilibrium.hpp); the natural modes are its eigenvectors against the masses (natural_modes.hpp).
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "core/types.hpp"
+#include "dynamics/integrator.hpp"
+#include "dynamics/state.hpp"
+
+namespace dinam {
+
+struct Model;
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// The free degrees of freedom: x, y and z of each free node, in node order. Pinned nodes (driven
+// or not) have none: their positions are given.
+struct FreeDofs {
+  std::vector<Index> first_dof;  // (n_nodes) the node's x dof (y, z follow), −1 when pinned
+  Index count = 0;
+};
+FreeDofs free_dofs(const Model& model);
+
+// kExact: the stiffness as it is, which is indefinite where the structure is unstable (a bar in
+// compression, a bent spring near its straight). kProjected: each element's matrix made positive
+// semi-definite first (its negative eigenvalues set to zero), so that the sum is too and a Newton
+// step with it goes downhill on the energy, wherever it starts.
+enum class Definiteness { kExact, kProjected };
+
+// Assembles K at state.x (plastic sets and broken springs as the state holds them) from every
+// spring kind `switches` leaves on and the ground's normal penalty; gravity and fields are
+// constant and add nothing. Every free node's diagonal block is in the pattern, zero where nothing
+// acts, so the pattern is the springs' alone whatever touches the ground: a solver can analyse it
+// once. Keeps its scratch between calls.
+class StiffnessAssembly {
+ public:
+  const SparseMatrix& assemble(const Model& model, const State& state,
+                               const ForceSwitches& switches, const FreeDofs& dofs,
+                               Definiteness definiteness);
+
+ private:
+  std::vector<Eigen::Triplet<double>> triplets_;
+  SparseMatrix matrix_;
+};
+
+}  // namespace dinam

@@ -1,0 +1,203 @@
+// The natural modes (solver/natural_modes.hpp) against closed forms: a clamped cantilever's first
+// three bending frequencies (Euler–Bernoulli), a beaded string's transverse and axial frequencies
+// (the discrete string, exactly), a pendulum's √(g/L) from the tension its weight puts in the bar
+// (the geometric stiffness), and the mass shares' sum; the Lanczos path against a dense solve.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <numbers>
+
+#include "model/model.hpp"
+#include "solver/natural_modes.hpp"
+#include "solver/settle.hpp"
+#include "solver/stiffness_matrix.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+ForceSwitches quiet() {
+  ForceSwitches switches;
+  switches.fields = false;
+  switches.wind = false;
+  return switches;
+}
+
+// A cantilever of 1 m in `segments` bars, clamped at x = 0, without gravity: E I = 8000 N·m²,
+// ρ A = 0.785 kg/m. Modes come in pairs, bending in y and in z alike.
+std::vector<NaturalMode> cantilever_modes(int segments, int count) {
+  std::string points = "[[0, 0, 1]";
+  for (int k = 1; k <= segments; ++k) {
+    points += fmt::format(", [{}, 0, 1]", static_cast<double>(k) / segments);
+  }
+  points += "]";
+  const Model model = build_model(test::scene_from_yaml(fmt::format(
+      R"(version: 1
+duration: 1
+gravity: [0, 0, 0]
+ground: {{contact: false}}
+objects:
+  - name: beam
+    mesh: {{polyline: {{points: {}}}, weld: off}}
+    material: {{density: 7850, youngs_modulus: 2.0e11, area: 1.0e-4, area_moment: 4.0e-8}}
+    pinned: {{indices: [0], clamped: true}}
+    torsion: false
+)",
+      points)));
+  const State state = make_state(model, false);  // at rest, unloaded: an equilibrium
+  return natural_modes(model, state, quiet(), count);
+}
+
+TEST(NaturalModes, CantileverBendsAtEulerBernoullisFrequencies) {
+  const double scale = std::sqrt(8000.0 / 0.785) / kTwoPi;  // Hz per (βL)²
+  const std::array<double, 3> beta_l = {1.875104, 4.694091, 7.854757};
+  std::array<double, 3> coarse_error{};
+  for (const int segments : {20, 80}) {
+    const std::vector<NaturalMode> modes = cantilever_modes(segments, 6);
+    ASSERT_EQ(modes.size(), 6u);
+    for (int n = 0; n < 3; ++n) {
+      const double expected = beta_l[n] * beta_l[n] * scale;
+      // The two bending planes give the same frequency.
+      EXPECT_NEAR(modes[2 * n].frequency, modes[2 * n + 1].frequency, 1e-9 * expected);
+      const double error = std::abs(modes[2 * n].frequency / expected - 1.0);
+      // Lumped masses and springs converge at second order: the error of mode n grows as
+      // (n / N)²; 80 bars put the third mode within 0.2 % and every mode at least ten times
+      // nearer than 20 bars do.
+      if (segments == 20) {
+        coarse_error[n] = error;
+      } else {
+        EXPECT_LT(error, 2e-3) << "mode " << n + 1;
+        EXPECT_LT(error, coarse_error[n] / 10.0) << "mode " << n + 1;
+      }
+    }
+  }
+}
+
+// N beads on a string between two supports, stretched by ε: each bead has the mass ρ A a0 of the
+// string around it, the tension is T = E A ε, and the discrete string's modes are exactly
+// ω_k = 2 √(T / (m a)) sin(kπ / 2(N + 1)) across (the tension's geometric stiffness T/a) and
+// 2 √(E A / (a0 m)) sin(kπ / 2(N + 1)) along (the bars' own stiffness).
+TEST(NaturalModes, BeadedStringIsTheDiscreteString) {
+  constexpr int kBeads = 7;
+  const Model model = build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+gravity: [0, 0, 0]
+ground: {{contact: false}}
+objects:
+  - name: string
+    mesh: {{polyline: {{points: [[0, 0, 1], [1, 0, 1]], segments: {}}}}}
+    material: {{density: 1000, youngs_modulus: 1.0e6, area: 1.0e-6}}
+    pinned: {{indices: [0, {}]}}
+    bending_pairs: none
+    torsion: false
+)",
+                                                                    kBeads + 1, kBeads + 1)));
+  constexpr double kStretch = 0.01;
+  State state = make_state(model, false);
+  for (Vec3& x : state.x) {
+    x.x() *= 1.0 + kStretch;  // uniform: still an equilibrium, now under tension
+  }
+  const double a0 = 1.0 / (kBeads + 1);
+  const double a = a0 * (1.0 + kStretch);
+  const double tension = 1.0e6 * 1.0e-6 * kStretch;
+  const double mass = 1000.0 * 1.0e-6 * a0;
+  ASSERT_NEAR(model.node_mass[1], mass, 1e-15);
+  const std::vector<NaturalMode> modes = natural_modes(model, state, quiet(), 3 * kBeads);
+  ASSERT_EQ(modes.size(), 3u * kBeads);
+  for (int k = 1; k <= kBeads; ++k) {
+    const double sine = std::sin(k * std::numbers::pi / (2.0 * (kBeads + 1)));
+    const double across = 2.0 * std::sqrt(tension / (mass * a)) * sine / kTwoPi;
+    const double along = 2.0 * std::sqrt(1.0e6 * 1.0e-6 / (a0 * mass)) * sine / kTwoPi;
+    // Across: each a pair (y and z), the lowest 2N modes; along: the rest, far above.
+    EXPECT_NEAR(modes[2 * (k - 1)].frequency, across, 1e-9 * across) << k;
+    EXPECT_NEAR(modes[2 * (k - 1) + 1].frequency, across, 1e-9 * across) << k;
+    EXPECT_NEAR(modes[2 * kBeads + k - 1].frequency, along, 1e-9 * along) << k;
+  }
+}
+
+// A bar hanging from a support under gravity is a pendulum: its free end swings at √(g/L) in
+// both directions, with L the length the weight has stretched it to (the stiffness across is
+// the tension over the length, m g / L), and bounces along the bar at √(k/m). The equilibrium is
+// the settle's (Newton's method, from the bar held out level).
+TEST(NaturalModes, HangingBarIsAPendulum) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+gravity: [0, 0, -9.81]
+ground: {contact: false}
+settle: {residual: 1.0e-12}
+objects:
+  - name: bar
+    mesh: {polyline: {points: [[0, 0, 2], [0.5, 0, 2]]}}
+    material: {density: 1000, youngs_modulus: 1.0e6, area: 1.0e-4}
+    pinned: {indices: [0]}
+)"));
+  State state = make_state(model, false);
+  settle_under_gravity(model, 1e-4, {}, state);
+  ASSERT_TRUE(state.settled.by_newton);
+  const double length = (state.x[1] - state.x[0]).norm();
+  const double mass = model.node_mass[1];
+  const std::vector<NaturalMode> modes = natural_modes(model, state, quiet(), 3);
+  ASSERT_EQ(modes.size(), 3u);
+  const double swing = std::sqrt(9.81 / length) / kTwoPi;
+  const double bounce = std::sqrt(1.0e6 * 1.0e-4 / 0.5 / mass) / kTwoPi;
+  EXPECT_NEAR(modes[0].frequency, swing, 1e-9 * swing);
+  EXPECT_NEAR(modes[1].frequency, swing, 1e-9 * swing);
+  EXPECT_NEAR(modes[2].frequency, bounce, 1e-9 * bounce);
+  // The bounce moves all of the free mass up and down, the swings none of it.
+  EXPECT_NEAR(modes[2].mass_share.z(), 1.0, 1e-9);
+  EXPECT_NEAR(modes[0].mass_share.z(), 0.0, 1e-9);
+}
+
+// Over all its modes a structure's mass shares add up to the whole free mass in each direction.
+TEST(NaturalModes, MassSharesOfAllModesSumToOne) {
+  const std::vector<NaturalMode> modes = cantilever_modes(6, 1000);
+  ASSERT_EQ(modes.size(), 18u);  // 6 free nodes
+  Vec3 sum = Vec3::Zero();
+  for (const NaturalMode& mode : modes) {
+    sum += mode.mass_share;
+  }
+  EXPECT_NEAR((sum - Vec3::Ones()).norm(), 0.0, 1e-9);
+}
+
+// Above 600 free degrees of freedom the lowest modes come from shift-invert Lanczos: the same as
+// a dense solve of M^{-½} K M^{-½}.
+TEST(NaturalModes, LanczosFindsTheLowestModesOfADenseSolve) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+gravity: [0, 0, 0]
+ground: {contact: false}
+objects:
+  - name: net
+    mesh:
+      grid: {width: 1.0, height: 1.0, columns: 14, rows: 14, diagonals: none}
+    material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.003}
+    pinned: {box: {min: [-2, -0.01, -1], max: [2, 0.01, 1]}, clamped: true}
+)"));
+  const State state = make_state(model, false);
+  const FreeDofs dofs = free_dofs(model);
+  ASSERT_GT(dofs.count, 600);
+  const std::vector<NaturalMode> modes = natural_modes(model, state, quiet(), 8);
+  StiffnessAssembly assembly;
+  const Eigen::MatrixXd k =
+      Eigen::MatrixXd(assembly.assemble(model, state, quiet(), dofs, Definiteness::kExact));
+  Eigen::VectorXd root(dofs.count);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dofs.first_dof[i] >= 0) {
+      root.segment<3>(dofs.first_dof[i]).setConstant(1.0 / std::sqrt(model.node_mass[i]));
+    }
+  }
+  const Eigen::VectorXd dense =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(root.asDiagonal() * k * root.asDiagonal(),
+                                                     Eigen::EigenvaluesOnly)
+          .eigenvalues();
+  ASSERT_EQ(modes.size(), 8u);
+  for (int m = 0; m < 8; ++m) {
+    EXPECT_NEAR(modes[m].omega_squared, dense[m], 1e-8 * dense[7]) << m;
+  }
+}
+
+}  // namespace
+}  // namespace dinam
