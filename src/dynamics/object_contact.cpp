@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
+#include "dynamics/contact_geometry.hpp"
 #include "dynamics/contact_pairs.hpp"
 #include "model/model.hpp"
 
@@ -17,6 +19,23 @@ Vec3 fallback_normal(const ContactPoint& point, const std::vector<Vec3>& x) {
                           ? Vec3((x[n[1]] - x[n[0]]).cross(x[n[3]] - x[n[2]]))
                           : Vec3((x[n[2]] - x[n[1]]).cross(x[n[3]] - x[n[1]]));
   return normal.squaredNorm() > 0.0 ? normal.normalized() : kWorldUp;
+}
+
+// The lightest free node on each side sets the pair's stiffness (see the header), or the scene
+// gives it.
+double pair_stiffness(const Model& model, const ContactPoint& point) {
+  const ObjectContact& contact = model.contact;
+  if (contact.omega_squared <= 0.0) {
+    return contact.stiffness;
+  }
+  const int side_a_nodes = (point.key >> 63) == kBarBarContact ? 2 : 1;  // then B's
+  double inverse_a = 0.0;
+  double inverse_b = 0.0;
+  for (int j = 0; j < 4; ++j) {
+    double& inverse = j < side_a_nodes ? inverse_a : inverse_b;
+    inverse = std::max(inverse, model.node_inv_mass[point.nodes[j]]);
+  }
+  return contact.omega_squared / (inverse_a + inverse_b);
 }
 
 }  // namespace
@@ -40,23 +59,15 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     }
     const bool touched_before =
         previous != work.previous.end() && previous->features == point.features;
-    const bool bar_pair = (point.key >> 63) == kBarBarContact;
-    const int side_a_nodes = bar_pair ? 2 : 1;  // the nodes before are A's, the rest B's
-    // The lightest free node on each side sets the pair's stiffness (see the header).
     // The damper acts on the mass the contact point moves, m = 1 / Σ w_j²/m_j.
-    double inverse_a = 0.0;
-    double inverse_b = 0.0;
     double inverse_moved = 0.0;
     Vec3 relative_velocity = Vec3::Zero();
     for (int j = 0; j < 4; ++j) {
       const double inverse_mass = model.node_inv_mass[point.nodes[j]];
-      double& inverse = j < side_a_nodes ? inverse_a : inverse_b;
-      inverse = std::max(inverse, inverse_mass);
       inverse_moved += point.weights[j] * point.weights[j] * inverse_mass;
       relative_velocity += point.weights[j] * state.v_half[point.nodes[j]];
     }
-    const double k = contact.omega_squared > 0.0 ? contact.omega_squared / (inverse_a + inverse_b)
-                                                 : contact.stiffness;
+    const double k = pair_stiffness(model, point);
     const double c =
         inverse_moved > 0.0 ? 2.0 * contact.damping_ratio * std::sqrt(k / inverse_moved) : 0.0;
 
@@ -110,6 +121,46 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
 
 double object_contact_energy(const State& state) {
   return state.object_contact.energy;
+}
+
+void add_object_contact_stiffness(const Model& model, const State& state, StiffnessSink& sink) {
+  if (!model.contact.enabled) {
+    return;
+  }
+  for (const ContactPoint& point : state.object_contact.touching) {
+    const double k = pair_stiffness(model, point);
+    const double reach = contact_reach(model.contact, point.key);
+    const bool bar_pair = (point.key >> 63) == kBarBarContact;
+    std::array<Vec3, 4> at;
+    for (int j = 0; j < 4; ++j) {
+      at[j] = state.x[point.nodes[j]];
+    }
+    // k (reach − |s|) s/|s| at the closest points, s = Σ w_j x_j their separation, shared out by
+    // the weights, which move with the nodes. Where the points coincide the direction is lost;
+    // the penalty there pushes along a fallback normal whose stiffness is left out.
+    const LocalStiffness<4> stiffness = local_stiffness<4>(at, [&](const auto& x) {
+      using V = std::decay_t<decltype(x[0])>;
+      using T = typename V::Scalar;
+      std::array<T, 4> w;
+      if (bar_pair) {
+        const SegmentPairOf<T> c = closest_points_of_segments(x[0], x[1], x[2], x[3]);
+        w = {T(1.0) - c.s, c.s, c.t - 1.0, -c.t};
+      } else {
+        const std::array<T, 3> c = closest_point_of_triangle(x[0], x[1], x[2], x[3]);
+        w = {T(1.0), -c[0], -c[1], -c[2]};
+      }
+      V separation = V::Zero();
+      for (int j = 0; j < 4; ++j) {
+        separation += w[j] * x[j];
+      }
+      using std::sqrt;
+      const T distance = sqrt(separation.squaredNorm());
+      const T scale = distance > 1e-12 * reach ? T(k * (reach - distance) / distance) : T(0.0);
+      const V on_a = scale * separation;
+      return std::array<V, 4>{w[0] * on_a, w[1] * on_a, w[2] * on_a, w[3] * on_a};
+    });
+    sink.add(point.nodes.data(), 4, stiffness.data());
+  }
 }
 
 }  // namespace dinam

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "dynamics/force_context.hpp"
+#include "dynamics/stiffness.hpp"
 
 namespace dinam {
 
@@ -39,5 +40,11 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
 
 // Σ ½ k δ² over the pairs touching at the last force evaluation, J.
 double object_contact_energy(const State& state);
+
+// The stiffness of the normal penalty of each pair touching at the last force evaluation
+// (stiffness.hpp), over its four nodes: the Jacobian of k δ n shared out by the closest points'
+// weights, the weights' own motion with the nodes included. Friction's stick springs and the
+// dampers are left out (history and velocity, not potentials of the positions).
+void add_object_contact_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 
 }  // namespace dinam

@@ -96,8 +96,11 @@ std::vector<NaturalMode> natural_modes(const Model& model, const State& state,
           .setConstant(1.0 / std::sqrt(model.node_mass[i]));
     }
   }
+  // The forces once, for the pairs of objects touching there.
+  State at = state;
+  compute_static_forces(model, switches, at);
   StiffnessAssembly assembly;
-  const SparseMatrix k = assembly.assemble(model, state, switches, dofs, Definiteness::kExact);
+  const SparseMatrix k = assembly.assemble(model, at, switches, dofs, Definiteness::kExact);
   SparseMatrix a = inverse_root_mass.asDiagonal() * k;
   a = a * inverse_root_mass.asDiagonal();
   const Eigenpairs pairs =

@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "dynamics/ground_contact.hpp"
+#include "dynamics/object_contact.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "model/model.hpp"
 
@@ -114,6 +115,9 @@ const SparseMatrix& StiffnessAssembly::assemble(const Model& model, const State&
   }
   if (switches.ground) {
     add_ground_contact_stiffness(model, state, sink);
+  }
+  if (switches.object_contact) {
+    add_object_contact_stiffness(model, state, sink);
   }
   matrix_.resize(dofs.count, dofs.count);
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());

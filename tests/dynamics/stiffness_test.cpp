@@ -15,6 +15,7 @@
 #include "dynamics/bending_spring.hpp"
 #include "dynamics/ground_contact.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/object_contact.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/stiffness.hpp"
 #include "dynamics/torsion_spring.hpp"
@@ -260,6 +261,45 @@ TEST(Stiffness, GroundGivesItsNormalPenaltyOnTheNodesBelowIt) {
   ForceSwitches only = nothing_on();
   only.ground = true;
   expect_model_stiffness(p.model, p.state, only, sink.k, "ground");
+}
+
+// A rod pressed into a sheet: node–triangle and bar–bar pairs, each with its closest points moving
+// with the nodes. The stiffness is taken at the pairs the last force evaluation found.
+TEST(Stiffness, ContactBetweenObjectsGivesTheJacobianOfItsNormalPenalty) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+ground: {contact: false}
+contact: {objects: true}
+objects:
+  - name: sheet
+    mesh: {grid: {width: 1.0, height: 1.0, columns: 3, rows: 3, diagonals: one}}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.004}
+    pinned: {all: true}
+  - name: rod
+    mesh: {polyline: {points: [[0.21, 0.28, 0.1], [0.83, 0.52, 0.1]], segments: 3}}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
+)"));
+  State state = make_state(model, false);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> offset(-0.002, 0.002);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (!model.pinned(i)) {  // the rod, 7 to 11 mm deep into the sheet's 14 mm reach
+      state.x[i] += Vec3(offset(random), offset(random), -0.095 + offset(random));
+    }
+  }
+  ForceSwitches only = nothing_on();
+  only.object_contact = true;
+  compute_static_forces(model, only, state);
+  int node_triangle = 0;
+  int bar_bar = 0;
+  for (const ContactPoint& point : state.object_contact.touching) {
+    ((point.key >> 63) == 0 ? bar_bar : node_triangle) += 1;
+  }
+  ASSERT_GT(node_triangle, 0);
+  ASSERT_GT(bar_bar, 0);
+  DenseSink sink(model.node_count());
+  add_object_contact_stiffness(model, state, sink);
+  expect_model_stiffness(model, state, only, sink.k, "contact between objects");
 }
 
 }  // namespace
