@@ -7,8 +7,9 @@ packages=(
   g++ cmake make pkg-config
   libeigen3-dev libassimp-dev libosmesa6-dev libgl-dev libpng-dev
   libyaml-cpp-dev libcli11-dev libfmt-dev nlohmann-json3-dev libssl-dev
-  # Newton's method and the natural modes: Spectra's Lanczos on Eigen's sparse matrices.
-  libspectra-dev
+  # Newton's method and the natural modes: Spectra's Lanczos on Eigen's sparse matrices, and
+  # SuiteSparse's CHOLMOD for large models' factorisations.
+  libspectra-dev libsuitesparse-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
   # Real components the tests use where users meet them: Blender opens the motion cache

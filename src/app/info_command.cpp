@@ -97,6 +97,9 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"duration_s", scene.duration},
       {"settle_s", model.settle.enabled ? model.settle.duration : 0.0},
       {"settle_residual", model.settle.enabled ? model.settle.residual : 0.0},
+      {"settle_method", !model.settle.enabled                          ? "none"
+                        : model.settle.method == SettleMethod::kNewton ? "newton"
+                                                                       : "relax"},
       {"steps", run.estimate.steps},
       {"threads", run.estimate.step.threads},
       {"threads_chosen", run.threads.threads},
@@ -189,8 +192,11 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
              steps_to_last_frame + timestep.steps_per_frame, scene.duration, steps_to_last_frame);
   if (model.settle.enabled) {
     fmt::print(
-        "settling         before t = 0 under gravity alone, until the out-of-balance force on "
-        "every node is below {:g} of its weight; at most {:g} s ({} steps)\n",
+        "settling         before t = 0 under gravity alone, {}, until the out-of-balance force "
+        "on every node is below {:g} of its weight; relaxation at most {:g} s ({} steps)\n",
+        model.settle.method == SettleMethod::kNewton
+            ? "by Newton's method (relaxation where the way there decides the shape)"
+            : "by relaxation",
         model.settle.residual, model.settle.duration,
         std::llround(model.settle.duration / timestep.dt));
   }

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <tuple>
@@ -10,6 +9,7 @@
 
 #include "dynamics/relaxation.hpp"
 #include "model/model.hpp"
+#include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
 
@@ -33,8 +33,9 @@ constexpr double kMostShift = 1e6;
 constexpr double kProjectAbove = 0.1;
 // Factorisations tried per iteration at most (each failed one raises the shift).
 constexpr int kAttemptsPerIteration = 4;
-// A pivot more negative than this share of the largest is a negative eigenvalue, not rounding.
-constexpr double kPivotRounding = 1e-10;
+// The stiffness as it is, still not positive definite with this much μ M (as a share of the mean
+// K_ii/M_ii) added, has a negative eigenvalue, not a zero one rounded below zero.
+constexpr double kUnstableShift = 1e-8;
 
 using Vector = Eigen::VectorXd;
 
@@ -79,8 +80,7 @@ EquilibriumOutcome find_equilibrium(const Model& model, const ForceSwitches& swi
   }
 
   StiffnessAssembly assembly;
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> factors;
-  bool pattern_analysed = false;
+  PositiveDefiniteSolver factors;
   std::vector<Vec3> x = state.x;
   Vector force = free_part(dofs, state.force);
   Potential energy = potential_energy(model, state, switches, origin);
@@ -116,19 +116,11 @@ EquilibriumOutcome find_equilibrium(const Model& model, const ForceSwitches& swi
     if (shift > 0.0) {
       shifted.diagonal() += shift * mass;
     }
-    if (!pattern_analysed) {
-      factors.analyzePattern(shifted);
-      pattern_analysed = true;
-    }
-    factors.factorize(shifted);
-    // Positive definite when every pivot of L D Lᵀ is positive; a negative pivot of the stiffness
-    // as it is (beyond rounding) means it has a negative eigenvalue: the structure is unstable
-    // there, about to buckle or fold.
-    const bool factored = factors.info() == Eigen::Success;
-    const double least_pivot = factored ? factors.vectorD().minCoeff() : 0.0;
-    if (!factored || !(least_pivot > 0.0)) {
-      if (definiteness == Definiteness::kExact && factored &&
-          least_pivot < -kPivotRounding * factors.vectorD().cwiseAbs().maxCoeff()) {
+    if (!factors.factorize(shifted)) {
+      // Not positive definite. Where the stiffness as it is needs more than a trace of μ M to be
+      // (more than rounding or a mechanism's zero would), it has a negative eigenvalue: the
+      // structure is unstable there, about to buckle or fold.
+      if (definiteness == Definiteness::kExact && shift >= kUnstableShift * shift_scale) {
         outcome.unstable = true;
         if (options.stop_where_unstable) {
           outcome.failure = "the structure is unstable on the way (it buckles or folds)";
@@ -201,14 +193,6 @@ EquilibriumOutcome find_equilibrium(const Model& model, const ForceSwitches& swi
   state.x = x;
   compute_static_forces(model, switches, state);
   return outcome;
-}
-
-bool is_stable(const Model& model, const ForceSwitches& switches, const State& state) {
-  const FreeDofs dofs = free_dofs(model);
-  StiffnessAssembly assembly;
-  const SparseMatrix& k = assembly.assemble(model, state, switches, dofs, Definiteness::kExact);
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> factors(k);
-  return factors.info() == Eigen::Success && factors.vectorD().minCoeff() > 0.0;
 }
 
 }  // namespace dinam

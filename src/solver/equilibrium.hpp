@@ -43,9 +43,4 @@ struct EquilibriumOutcome {
 EquilibriumOutcome find_equilibrium(const Model& model, const ForceSwitches& switches,
                                     const EquilibriumOptions& options, State& state);
 
-// Whether the stiffness as it is at state.x, with what `switches` leaves on, is positive definite:
-// the structure is stable there, the potential energy convex about it, and Newton's method from
-// it heads for the equilibrium of its own basin.
-bool is_stable(const Model& model, const ForceSwitches& switches, const State& state);
-
 }  // namespace dinam

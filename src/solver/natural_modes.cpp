@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "model/model.hpp"
+#include "solver/positive_definite_solver.hpp"
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
@@ -28,7 +29,8 @@ constexpr Index kLargestDense = 600;
 // included) and the modes nearest σ are the lowest.
 constexpr double kShiftShare = 1e-8;
 
-// Spectra's operator y = (A − σI)⁻¹ x, by a sparse LDLᵀ factorisation of A − σI.
+// Spectra's operator y = (A − σI)⁻¹ x: a Cholesky factorisation where A − σI is positive definite
+// (a stable equilibrium), else an LDLᵀ one (an unstable equilibrium, whose modes below σ grow).
 class ShiftSolve {
  public:
   using Scalar = double;
@@ -38,18 +40,24 @@ class ShiftSolve {
   void set_shift(double sigma) {
     SparseMatrix shifted = a_;
     shifted.diagonal().array() -= sigma;
-    factors_.compute(shifted);
-    if (factors_.info() != Eigen::Success) {
-      throw RuntimeError("the natural modes: the stiffness could not be factorised at the shift");
+    definite_ = cholesky_.factorize(shifted);
+    if (!definite_) {
+      indefinite_.compute(shifted);
+      if (indefinite_.info() != Eigen::Success) {
+        throw RuntimeError("the natural modes: the stiffness could not be factorised at the shift");
+      }
     }
   }
   void perform_op(const double* x, double* y) const {
-    Eigen::Map<Vector>(y, a_.rows()) = factors_.solve(Eigen::Map<const Vector>(x, a_.rows()));
+    const Eigen::Map<const Vector> in(x, a_.rows());
+    Eigen::Map<Vector>(y, a_.rows()) = definite_ ? cholesky_.solve(in) : indefinite_.solve(in);
   }
 
  private:
   const SparseMatrix& a_;
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> factors_;
+  PositiveDefiniteSolver cholesky_;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> indefinite_;
+  bool definite_ = true;
 };
 
 struct Eigenpairs {

@@ -34,6 +34,21 @@ std::string why_not_static(const Model& model) {
   if (model.contact.enabled) {
     return "contact between objects: where a body rests on another depends on how it slid there";
   }
+  // Under gravity, an object with no pinned node and no ground below it has no equilibrium.
+  if (model.gravity.norm() > 0.0 && !model.ground.enabled) {
+    for (const ModelObject& object : model.objects) {
+      bool held = false;
+      for (Index i = object.first_node; i < object.first_node + object.node_count && !held; ++i) {
+        held = model.pinned(i);
+      }
+      if (!held) {
+        return fmt::format(
+            "object '{}' is held by nothing (no pinned node, no ground), so it "
+            "has no equilibrium",
+            object.name);
+      }
+    }
+  }
   return {};
 }
 
@@ -146,8 +161,8 @@ bool settle_by_newton(const Model& model, double dt, const ForceSwitches& quiet,
     if (!outcome.stopped) {  // relaxation got there first, or ran out of time
       outcome.fallback = on_sloping_ground(model, settling)
                              ? kSlopeReason
-                             : "it is unstable on the way (it buckles or folds), and relaxation "
-                               "came to rest before Newton's method could take over";
+                             : "it is unstable on the way (it buckles or folds), so relaxation "
+                               "takes it along its path; Newton's method did not take over";
       if (!(outcome.residual <= model.settle.residual)) {
         report_not_settled(model, outcome);
       }

@@ -31,9 +31,10 @@ enum class Definiteness { kExact, kProjected };
 
 // Assembles K at state.x (plastic sets and broken springs as the state holds them) from every
 // spring kind `switches` leaves on, the ground's normal penalty and that of the pairs of objects
-// touching at the state's last force evaluation; gravity and fields are constant and add nothing. Every free node's diagonal block is in the pattern, zero where nothing
-// acts, so the pattern is the springs' alone whatever touches the ground: a solver can analyse it
-// once. Keeps its scratch between calls.
+// touching at the state's last force evaluation; gravity and fields are constant and add nothing.
+// Every free node's diagonal block is in the pattern, zero where nothing acts, so the pattern is
+// the springs' alone whatever touches the ground: a solver can analyse it once. Keeps its scratch
+// between calls.
 class StiffnessAssembly {
  public:
   const SparseMatrix& assemble(const Model& model, const State& state,
