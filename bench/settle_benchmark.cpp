@@ -20,8 +20,10 @@
 #include "dynamics/stability.hpp"
 #include "median_time.hpp"
 #include "model/model.hpp"
+#include "solver/natural_modes.hpp"
 #include "solver/potential.hpp"
 #include "solver/settle.hpp"
+#include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
 namespace {
@@ -90,8 +92,10 @@ void compare(const char* name, const SceneDescription& scene, double dt, int rep
 int main(int argc, char** argv) {
   using namespace dinam;
   bool large = false;
+  bool modes = false;
   for (int a = 1; a < argc; ++a) {
     large = large || std::strcmp(argv[a], "--large") == 0;
+    modes = modes || std::strcmp(argv[a], "--modes") == 0;
   }
   set_thread_count(1);
   const std::filesystem::path source = DINAM_SOURCE_DIR;
@@ -114,6 +118,19 @@ int main(int argc, char** argv) {
     const SceneDescription large_scene = large_flag_scene();
     const Model model = build_model(large_scene);
     compare("large flag", large_scene, kAutoTimestepSafety * critical_timestep(model), 1, 0.0);
+  }
+  // 3. The lowest ten modes of the large flag, about its mesh without gravity (an equilibrium
+  //    already, so that the figure is the modes' alone).
+  if (modes) {
+    SceneDescription scene = large_flag_scene();
+    scene.gravity = Vec3::Zero();
+    const Model model = build_model(scene);
+    const State state = make_state(model, false);
+    std::vector<NaturalMode> found;
+    const double seconds = median_seconds(1, [&] { found = natural_modes(model, state, {}, 10); });
+    fmt::print(
+        "large flag, the lowest 10 modes: {:.2f} s ({} free unknowns); {:.4g} to {:.4g} Hz\n",
+        seconds, free_dofs(model).count, found.front().frequency, found.back().frequency);
   }
   return 0;
 }

@@ -64,8 +64,8 @@ class TripletSink final : public StiffnessSink {
         }
         for (int b = 0; b < 3; ++b) {
           for (int a = 0; a < 3; ++a) {
-            const double value =
-                scratch_[static_cast<std::size_t>((3 * col_node + b) * size + 3 * row_node + a)];
+            const std::size_t column = 3 * static_cast<std::size_t>(col_node) + b;
+            const double value = scratch_[column * size + 3 * row_node + a];
             triplets_.emplace_back(row_dof + a, col_dof + b, value);
           }
         }

@@ -2,6 +2,7 @@
 // its entry alone, so that a new kind is checked by adding it to the list: its forces are minus
 // the gradient of its energy (central differences, at a configuration where every spring is bent
 // or twisted away from rest and none is straight), and the energy report books every kind.
+// (stiffness_test.cpp checks every kind's stiffness the same way.)
 #include "dynamics/spring_kinds.hpp"
 
 #include <gtest/gtest.h>
@@ -11,54 +12,23 @@
 
 #include "dynamics/energy.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/perturbed_lattice.hpp"
 #include "model/model.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
 namespace {
 
-// A wire lattice standing on a clamped edge (so clamps exist beside axial, bending and torsion
-// springs), every free node moved by up to 3 mm at random from its rest place (bars 0.2 m).
-struct Perturbed {
-  Model model;
-  State state;
-};
-
-Perturbed perturbed_lattice() {
-  Perturbed p{build_model(test::scene_from_yaml(R"(version: 1
-duration: 1
-objects:
-  - name: lattice
-    mesh:
-      grid: {width: 1.0, height: 1.0, columns: 5, rows: 5, diagonals: none}
-      rotation: [90, 0, 0]
-      translation: [0, 0, 0.5]
-    material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.002}
-    pinned: {box: {min: [-1, -1, 0.499], max: [1, 1, 0.501]}, clamped: true}
-)")),
-              {}};
-  p.state = make_state(p.model, false);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> offset(-0.003, 0.003);
-  for (Index i = 0; i < p.model.node_count(); ++i) {
-    if (!p.model.pinned(i)) {
-      p.state.x[i] += Vec3(offset(random), offset(random), offset(random));
-    }
-  }
-  return p;
-}
+using test::perturbed_lattice;
 
 ForceSwitches only(const SpringKind& kind) {
-  ForceSwitches switches;
-  switches.gravity = switches.fields = switches.axial_springs = switches.axial_dampers = false;
-  switches.bending = switches.torsion = switches.clamps = switches.global_damping = false;
-  switches.wind = switches.ground = switches.object_contact = false;
+  ForceSwitches switches = test::nothing_on();
   switches.*kind.switched = true;
   return switches;
 }
 
 TEST(SpringKinds, EveryKindsForceIsMinusTheGradientOfItsEnergy) {
-  Perturbed p = perturbed_lattice();
+  test::PerturbedLattice p = perturbed_lattice();
   const Model& model = p.model;
   State& state = p.state;
   constexpr double kStep = 1e-7;  // m: central differences err by O(h²) ≈ 1e-14 of the curvature
@@ -93,7 +63,7 @@ TEST(SpringKinds, EveryKindsForceIsMinusTheGradientOfItsEnergy) {
 }
 
 TEST(SpringKinds, TheEnergyReportBooksEveryKind) {
-  const Perturbed p = perturbed_lattice();
+  const test::PerturbedLattice p = perturbed_lattice();
   double springs = 0.0;
   for (const SpringKind* kind : kSpringKinds) {
     const double energy = kind->energy(p.model, p.state);

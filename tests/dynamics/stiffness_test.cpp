@@ -16,6 +16,7 @@
 #include "dynamics/ground_contact.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/object_contact.hpp"
+#include "dynamics/perturbed_lattice.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/stiffness.hpp"
 #include "dynamics/torsion_spring.hpp"
@@ -164,13 +165,8 @@ class DenseSink final : public StiffnessSink {
   Eigen::MatrixXd k;
 };
 
-ForceSwitches nothing_on() {
-  ForceSwitches switches;
-  switches.gravity = switches.fields = switches.axial_springs = switches.axial_dampers = false;
-  switches.bending = switches.torsion = switches.clamps = switches.global_damping = false;
-  switches.wind = switches.ground = switches.object_contact = false;
-  return switches;
-}
+using test::nothing_on;
+using test::perturbed_lattice;
 
 // Checks the free nodes' rows and columns of `k` against central differences of the forces
 // `switches` leave on.
@@ -204,40 +200,8 @@ void expect_model_stiffness(const Model& model, State state, const ForceSwitches
   }
 }
 
-// A wire lattice hanging from a clamped edge, every free node moved by up to 3 mm at random and
-// 4 mm down, so that its lowest row, 2 mm above the ground, dips into it.
-struct Perturbed {
-  Model model;
-  State state;
-};
-
-Perturbed perturbed_lattice() {
-  Perturbed p{build_model(test::scene_from_yaml(R"(version: 1
-duration: 1
-ground: {height: -0.3}
-objects:
-  - name: lattice
-    mesh:
-      grid: {width: 1.0, height: 1.0, columns: 5, rows: 5, diagonals: none}
-      rotation: [-90, 0, 0]
-      translation: [0, 0, 0.702]
-    material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.002}
-    pinned: {box: {min: [-1, -1, 0.701], max: [1, 1, 0.703]}, clamped: true}
-)")),
-              {}};
-  p.state = make_state(p.model, false);
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> offset(-0.003, 0.003);
-  for (Index i = 0; i < p.model.node_count(); ++i) {
-    if (!p.model.pinned(i)) {
-      p.state.x[i] += Vec3(offset(random), offset(random), offset(random) - 0.004);
-    }
-  }
-  return p;
-}
-
 TEST(Stiffness, EveryKindInTheListGivesTheJacobianOfItsForces) {
-  const Perturbed p = perturbed_lattice();
+  const test::PerturbedLattice p = perturbed_lattice();
   for (const SpringKind* kind : kSpringKinds) {
     SCOPED_TRACE(kind->name);
     ASSERT_GT(kind->count(p.model), 0);
@@ -250,7 +214,7 @@ TEST(Stiffness, EveryKindInTheListGivesTheJacobianOfItsForces) {
 }
 
 TEST(Stiffness, GroundGivesItsNormalPenaltyOnTheNodesBelowIt) {
-  const Perturbed p = perturbed_lattice();
+  const test::PerturbedLattice p = perturbed_lattice();
   Index below = 0;
   for (const Vec3& x : p.state.x) {
     below += x.z() < -0.3 ? 1 : 0;

@@ -15,6 +15,7 @@
 #include "model/model.hpp"
 #include "solver/equilibrium.hpp"
 #include "solver/settle.hpp"
+#include "solver/solver_support.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
@@ -23,10 +24,7 @@ namespace {
 constexpr double kGravity = 9.81;
 
 ForceSwitches quiet() {
-  ForceSwitches switches;
-  switches.fields = false;
-  switches.wind = false;
-  return switches;
+  return test::static_forces();
 }
 
 State settled(const Model& model, double dt = 1e-4) {
@@ -72,33 +70,12 @@ objects:
 // residual asked is what a steel bar of 2.5 cm allows: its axial force rounds to about
 // E A ε / h, 5e-7 of a node's weight.)
 double cantilever_sag(int segments) {
-  constexpr double kE = 2.0e11;
-  constexpr double kDensity = 7850.0;
-  constexpr double kArea = 1.0e-4;
-  constexpr double kInertia = 4.0e-8;
-  std::string points = "[[0, 0, 1]";
-  for (int k = 1; k <= segments; ++k) {
-    points += fmt::format(", [{}, 0, 1]", static_cast<double>(k) / segments);
-  }
-  points += "]";
-  const Model model = build_model(test::scene_from_yaml(fmt::format(
-      R"(version: 1
-duration: 1
-gravity: [0, 0, -9.81]
-ground: {{contact: false}}
-settle: {{residual: 1.0e-5}}
-objects:
-  - name: beam
-    mesh: {{polyline: {{points: {}}}, weld: off}}
-    material: {{density: {}, youngs_modulus: {}, area: {}, area_moment: {}}}
-    pinned: {{indices: [0], clamped: true}}
-    torsion: false
-)",
-      points, kDensity, kE, kArea, kInertia)));
+  const Model model =
+      test::clamped_cantilever(segments, "gravity: [0, 0, -9.81]\nsettle: {residual: 1.0e-5}");
   const State state = settled(model);
   EXPECT_TRUE(state.settled.by_newton);
   EXPECT_EQ(state.settled.steps, 0);  // no relaxation: nothing buckles
-  const double reference = kDensity * kArea * kGravity / (8.0 * kE * kInertia);  // 0.12 mm
+  const double reference = 7850.0 * 1e-4 * kGravity / (8.0 * 2.0e11 * 4.0e-8);  // 0.12 mm
   return (1.0 - state.x[segments].z()) / reference;
 }
 

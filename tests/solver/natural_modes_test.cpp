@@ -11,6 +11,7 @@
 #include "model/model.hpp"
 #include "solver/natural_modes.hpp"
 #include "solver/settle.hpp"
+#include "solver/solver_support.hpp"
 #include "solver/stiffness_matrix.hpp"
 #include "test_support.hpp"
 
@@ -20,33 +21,13 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 ForceSwitches quiet() {
-  ForceSwitches switches;
-  switches.fields = false;
-  switches.wind = false;
-  return switches;
+  return test::static_forces();
 }
 
 // A cantilever of 1 m in `segments` bars, clamped at x = 0, without gravity: E I = 8000 N·m²,
 // ρ A = 0.785 kg/m. Modes come in pairs, bending in y and in z alike.
 std::vector<NaturalMode> cantilever_modes(int segments, int count) {
-  std::string points = "[[0, 0, 1]";
-  for (int k = 1; k <= segments; ++k) {
-    points += fmt::format(", [{}, 0, 1]", static_cast<double>(k) / segments);
-  }
-  points += "]";
-  const Model model = build_model(test::scene_from_yaml(fmt::format(
-      R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-ground: {{contact: false}}
-objects:
-  - name: beam
-    mesh: {{polyline: {{points: {}}}, weld: off}}
-    material: {{density: 7850, youngs_modulus: 2.0e11, area: 1.0e-4, area_moment: 4.0e-8}}
-    pinned: {{indices: [0], clamped: true}}
-    torsion: false
-)",
-      points)));
+  const Model model = test::clamped_cantilever(segments, "gravity: [0, 0, 0]");
   const State state = make_state(model, false);  // at rest, unloaded: an equilibrium
   return natural_modes(model, state, quiet(), count);
 }
