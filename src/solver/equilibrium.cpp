@@ -72,12 +72,7 @@ EquilibriumOutcome find_equilibrium(const Model& model, const ForceSwitches& swi
     outcome.converged = true;
     return outcome;
   }
-  Vector mass(dofs.count);
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (dofs.first_dof[i] >= 0) {
-      mass.segment<3>(dofs.first_dof[i]).setConstant(model.node_mass[i]);
-    }
-  }
+  const Vector mass = free_masses(model, dofs);
 
   StiffnessAssembly assembly;
   PositiveDefiniteSolver factors;

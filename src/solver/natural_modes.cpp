@@ -97,13 +97,7 @@ std::vector<NaturalMode> natural_modes(const Model& model, const State& state,
     return {};
   }
   // A = M^{-½} K M^{-½}: its eigenvalues are ω², its eigenvectors M^{½} φ.
-  Vector inverse_root_mass(dofs.count);
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (dofs.first_dof[i] >= 0) {
-      inverse_root_mass.segment<3>(dofs.first_dof[i])
-          .setConstant(1.0 / std::sqrt(model.node_mass[i]));
-    }
-  }
+  const Vector inverse_root_mass = free_masses(model, dofs).cwiseSqrt().cwiseInverse();
   // The forces once, for the pairs of objects touching there.
   State at = state;
   compute_static_forces(model, switches, at);

@@ -94,6 +94,16 @@ FreeDofs free_dofs(const Model& model) {
   return dofs;
 }
 
+Eigen::VectorXd free_masses(const Model& model, const FreeDofs& dofs) {
+  Eigen::VectorXd mass(dofs.count);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (dofs.first_dof[i] >= 0) {
+      mass.segment<3>(dofs.first_dof[i]).setConstant(model.node_mass[i]);
+    }
+  }
+  return mass;
+}
+
 const SparseMatrix& StiffnessAssembly::assemble(const Model& model, const State& state,
                                                 const ForceSwitches& switches, const FreeDofs& dofs,
                                                 Definiteness definiteness) {

@@ -23,6 +23,10 @@ struct FreeDofs {
 };
 FreeDofs free_dofs(const Model& model);
 
+// The lumped mass of each free degree of freedom, kg: each free node's mass three times, in the
+// order of `dofs`. M of Newton's shift μM and of the modes' K φ = ω² M φ.
+Eigen::VectorXd free_masses(const Model& model, const FreeDofs& dofs);
+
 // kExact: the stiffness as it is, which is indefinite where the structure is unstable (a bar in
 // compression, a bent spring near its straight). kProjected: each element's matrix made positive
 // semi-definite first (its negative eigenvalues set to zero), so that the sum is too and a Newton

@@ -164,12 +164,7 @@ objects:
   StiffnessAssembly assembly;
   const Eigen::MatrixXd k =
       Eigen::MatrixXd(assembly.assemble(model, state, quiet(), dofs, Definiteness::kExact));
-  Eigen::VectorXd root(dofs.count);
-  for (Index i = 0; i < model.node_count(); ++i) {
-    if (dofs.first_dof[i] >= 0) {
-      root.segment<3>(dofs.first_dof[i]).setConstant(1.0 / std::sqrt(model.node_mass[i]));
-    }
-  }
+  const Eigen::VectorXd root = free_masses(model, dofs).cwiseSqrt().cwiseInverse();
   const Eigen::VectorXd dense =
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(root.asDiagonal() * k * root.asDiagonal(),
                                                      Eigen::EigenvaluesOnly)
