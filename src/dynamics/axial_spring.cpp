@@ -90,10 +90,8 @@ void add_axial_spring_stiffness(const Model& model, const State& state, Stiffnes
 }
 
 const SpringKind kAxialSprings{
-    .name = "axial springs",
+    .built = &kAxialSpringModel,
     .switched = &ForceSwitches::axial_springs,
-    .count = [](const Model& model) { return model.bar_count(); },
-    .yields = [](const Model& model) { return model.bars_yield; },
     .add_forces = add_axial_spring_forces,
     .energy = axial_spring_energy,
     .add_stiffness = add_axial_spring_stiffness,
@@ -101,7 +99,6 @@ const SpringKind kAxialSprings{
     .plastic_set = &State::bar_plastic_set,
     .flow = &EnergyWorkspace::bar_flow,
     .broken = &State::bar_broken,
-    .torn_code = -1,
     .ns_per_item = 5.5,
     .ns_per_item_yielding = 6.6,
 };

@@ -94,10 +94,8 @@ void add_bending_spring_stiffness(const Model& model, const State& state, Stiffn
 }
 
 const SpringKind kBendingSprings{
-    .name = "bending springs",
+    .built = &kBendingSpringModel,
     .switched = &ForceSwitches::bending,
-    .count = [](const Model& model) { return model.bend_count(); },
-    .yields = [](const Model& model) { return model.bends_yield; },
     .add_forces = add_bending_spring_forces,
     .energy = bending_spring_energy,
     .add_stiffness = add_bending_spring_stiffness,
@@ -105,7 +103,6 @@ const SpringKind kBendingSprings{
     .plastic_set = &State::bend_plastic_set,
     .flow = &EnergyWorkspace::bend_flow,
     .broken = &State::bend_broken,
-    .torn_code = kTornBend,
     .ns_per_item = 14.5,
     .ns_per_item_yielding = 18.2,
 };

@@ -76,10 +76,8 @@ void add_clamp_stiffness(const Model& model, const State& state, StiffnessSink& 
 }
 
 const SpringKind kClampSprings{
-    .name = "clamps",
+    .built = &kClampModel,
     .switched = &ForceSwitches::clamps,
-    .count = [](const Model& model) { return model.clamp_count(); },
-    .yields = [](const Model& model) { return model.clamps_yield; },
     .add_forces = add_clamp_forces,
     .energy = clamp_spring_energy,
     .add_stiffness = add_clamp_stiffness,
@@ -87,7 +85,6 @@ const SpringKind kClampSprings{
     .plastic_set = &State::clamp_plastic_set,
     .flow = &EnergyWorkspace::clamp_flow,
     .broken = &State::clamp_broken,
-    .torn_code = kTornClamp,
     .ns_per_item = 20.0,  // serial: one loop in clamp order
     .ns_per_item_yielding = 20.0,
 };

@@ -3,8 +3,9 @@
 // assembly, and of MuJoCo's tables): what the step, the energy report, tearing, the state's
 // allocation, the memory estimate and the run-time estimate need of it. Each kind's entry sits in
 // its own file beside its kernel (axial_spring.cpp, …); spring_kinds.hpp lists them in the order a
-// step adds their forces. A new kind of spring is its kernel and entry, its arrays in model.hpp
-// and state.hpp (and their lists), its builder and reader, and one line in spring_kinds.hpp.
+// step adds their forces. A new kind of spring is its kernel and entry here, its builder and the
+// model stage's entry (model/model_spring_kind.hpp) beside it, its arrays in model.hpp and
+// state.hpp (and their lists), its reader and doc row, and one line in each stage's list.
 #include <cstdint>
 #include <vector>
 
@@ -13,17 +14,16 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/state.hpp"
 #include "dynamics/stiffness.hpp"
+#include "model/model.hpp"
+#include "model/model_spring_kinds.hpp"
 
 namespace dinam {
 
-struct Model;
-
 struct SpringKind {
-  const char* name;               // "bending springs": in reports and the run-time estimate
+  // The model stage's half (model/model_spring_kind.hpp): its name, arrays, stability bound and
+  // tearing.
+  const ModelSpringKind* built;
   bool ForceSwitches::*switched;  // its switch: off, the step leaves it out (tests isolate kinds)
-  Index (*count)(const Model&);   // how many the model has
-  bool (*yields)(const Model&);   // whether some can flow plastically; if none, the state keeps
-                                  // no plastic sets or flows for the kind (model.hpp)
   void (*add_forces)(ForceContext&);             // on the context worker's own nodes
   double (*energy)(const Model&, const State&);  // J, elastic, of the springs not broken
   // Each spring's stiffness matrix at the state's positions (stiffness.hpp), for Newton's method:
@@ -33,12 +33,17 @@ struct SpringKind {
   std::vector<double> State::*plastic_set;     // (count, or empty when none yields)
   std::vector<double> EnergyWorkspace::*flow;  // J its flow dissipated in the last step
   std::vector<std::uint8_t> State::*broken;    // tearing: 1 for a broken one (empty: cannot)
-  Index torn_code;  // how Model::bar_springs names it (kTornBend, …); −1 for the bar's own spring
   // Nanoseconds per spring on one thread, elastic and of a kind that can yield, from
   // `build/bench/bench_force_costs` (docs/performance.md, "Every force kind against the springs");
   // only the run-time estimate (step_cost.hpp) reads them. Measure again when a kernel changes.
   double ns_per_item;
   double ns_per_item_yielding;
+
+  const char* name() const { return built->name; }  // "bending springs"
+  Index count(const Model& model) const { return built->count(model); }
+  // Whether some can flow plastically; if none, the state keeps no plastic sets or flows for the
+  // kind (model.hpp).
+  bool yields(const Model& model) const { return model.*built->yields; }
 };
 
 }  // namespace dinam

@@ -1,8 +1,9 @@
 #pragma once
 // Every kind of spring, in the order a step adds their forces (which is part of the motion's
 // bits: each node sums its forces kind by kind in this order, whatever the threads). The step,
-// the energy report, tearing, the state's allocation, the memory estimate and the run-time
-// estimate iterate this list.
+// the energy report, tearing, the state's allocation, the memory estimate, the run-time estimate,
+// the settle and the tests iterate this list; the model stage's kModelSpringKinds holds each
+// entry's `built` half in the same order (spring_kinds_test checks it).
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -21,7 +22,7 @@ inline constexpr std::array<const SpringKind*, 4> kSpringKinds{&kAxialSprings, &
 // The kind that Model::bar_springs names by `torn_code` (kTornBend, kTornTorsion, kTornClamp).
 inline const SpringKind& spring_kind_torn_as(Index torn_code) {
   for (const SpringKind* kind : kSpringKinds) {
-    if (kind->torn_code == torn_code) {
+    if (kind->built->torn_code == torn_code) {
       return *kind;
     }
   }

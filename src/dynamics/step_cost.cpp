@@ -45,7 +45,7 @@ StepCost estimate_step_cost(const Model& model, int threads) {
   };
   const double nodes = static_cast<double>(model.node_count());
   for (const SpringKind* kind : kSpringKinds) {
-    add(kind->name, static_cast<double>(kind->count(model)),
+    add(kind->name(), static_cast<double>(kind->count(model)),
         kind->yields(model) ? kind->ns_per_item_yielding : kind->ns_per_item);
   }
   add("axial dampers", model.any_bar_damping ? static_cast<double>(model.bar_count()) : 0.0,

@@ -66,10 +66,8 @@ void add_torsion_spring_stiffness(const Model& model, const State& state, Stiffn
 }
 
 const SpringKind kTorsionSprings{
-    .name = "torsion springs",
+    .built = &kTorsionSpringModel,
     .switched = &ForceSwitches::torsion,
-    .count = [](const Model& model) { return model.torsion_count(); },
-    .yields = [](const Model& model) { return model.torsions_yield; },
     .add_forces = add_torsion_spring_forces,
     .energy = torsion_spring_energy,
     .add_stiffness = add_torsion_spring_stiffness,
@@ -77,7 +75,6 @@ const SpringKind kTorsionSprings{
     .plastic_set = &State::torsion_plastic_set,
     .flow = &EnergyWorkspace::torsion_flow,
     .broken = &State::torsion_broken,
-    .torn_code = kTornTorsion,
     .ns_per_item = 23.2,
     .ns_per_item_yielding = 25.0,
 };

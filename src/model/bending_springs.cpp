@@ -2,6 +2,9 @@
 #include <numbers>
 
 #include "core/geometry.hpp"
+#include "model/bar_lookup.hpp"
+#include "model/frequency_bound.hpp"
+#include "model/model_spring_kinds.hpp"
 #include "model/spring_builders.hpp"
 
 namespace dinam {
@@ -110,5 +113,42 @@ void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
     }
   }
 }
+
+namespace {
+
+// |∂θ/∂x_a| = 1/L1, |∂θ/∂x_b| = 1/L2, |∂θ/∂x_c| ≤ 1/L1 + 1/L2.
+void add_bending_frequency_terms(const Model& model, GershgorinSums& sums) {
+  const auto& x = model.node_initial_x;
+  for (Index s = 0; s < model.bend_count(); ++s) {
+    const Index* nodes = &model.bend_nodes[3 * s];
+    const double l1 = (x[nodes[0]] - x[nodes[1]]).norm();
+    const double l2 = (x[nodes[2]] - x[nodes[1]]).norm();
+    const double norms[3] = {1.0 / l1, 1.0 / l1 + 1.0 / l2, 1.0 / l2};
+    sums.add(model, model.bend_stiffness[s], nodes, norms, 3);
+  }
+}
+
+// A bending spring stands on its two bars.
+void add_bars_under_bends(const Model& model, const BarLookup& lookup,
+                          std::vector<BarSpring>& stood_on) {
+  for (Index s = 0; s < model.bend_count(); ++s) {
+    const Index* n = &model.bend_nodes[3 * s];
+    stood_on.emplace_back(lookup.find(n[0], n[1]), s);
+    stood_on.emplace_back(lookup.find(n[1], n[2]), s);
+  }
+}
+
+}  // namespace
+
+const ModelSpringKind kBendingSpringModel{
+    .name = "bending springs",
+    .count = [](const Model& model) { return model.bend_count(); },
+    .stiffness = &Model::bend_stiffness,
+    .yield_limit = &Model::bend_yield_moment,
+    .yields = &Model::bends_yield,
+    .add_frequency_terms = add_bending_frequency_terms,
+    .add_bars_stood_on = add_bars_under_bends,
+    .torn_code = kTornBend,
+};
 
 }  // namespace dinam

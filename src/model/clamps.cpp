@@ -1,5 +1,8 @@
 #include <cmath>
 
+#include "model/bar_lookup.hpp"
+#include "model/frequency_bound.hpp"
+#include "model/model_spring_kinds.hpp"
 #include "model/spring_builders.hpp"
 
 namespace dinam {
@@ -48,5 +51,37 @@ void add_clamps(const BarMaterials& materials, const ModelObject& object,
     }
   }
 }
+
+namespace {
+
+// A bending spring whose other two points are held: |∂θ/∂x_a| = 1/L.
+void add_clamp_frequency_terms(const Model& model, GershgorinSums& sums) {
+  for (Index s = 0; s < model.clamp_count(); ++s) {
+    const Index a = model.clamp_nodes[2 * s + 1];
+    const double norm = 1.0 / model.clamp_ghost_offset[s].norm();
+    sums.add(model, model.clamp_stiffness[s], &a, &norm, 1);
+  }
+}
+
+// A clamp stands on the bar it holds.
+void add_bars_under_clamps(const Model& model, const BarLookup& lookup,
+                           std::vector<BarSpring>& stood_on) {
+  for (Index s = 0; s < model.clamp_count(); ++s) {
+    stood_on.emplace_back(lookup.find(model.clamp_nodes[2 * s], model.clamp_nodes[2 * s + 1]), s);
+  }
+}
+
+}  // namespace
+
+const ModelSpringKind kClampModel{
+    .name = "clamps",
+    .count = [](const Model& model) { return model.clamp_count(); },
+    .stiffness = &Model::clamp_stiffness,
+    .yield_limit = &Model::clamp_yield_moment,
+    .yields = &Model::clamps_yield,
+    .add_frequency_terms = add_clamp_frequency_terms,
+    .add_bars_stood_on = add_bars_under_clamps,
+    .torn_code = kTornClamp,
+};
 
 }  // namespace dinam

@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
+#include "model/model_spring_kinds.hpp"
 
 namespace dinam {
 namespace {
@@ -60,18 +61,21 @@ void check_derived_quantities(const Model& model, const SceneDescription& scene)
              model.bar_axial_stiffness[b]);
     }
   }
-  // Bending and torsion stiffnesses, and the ground's, belong to springs that span one object.
-  for (const auto* values :
-       {&model.bend_stiffness, &model.torsion_stiffness, &model.clamp_stiffness,
-        &model.ground.node_stiffness, &model.ground.node_damping}) {
-    if (const Index k = first_unusable(*values, 0, static_cast<Index>(values->size()), false);
+  // The springs of every kind, and the ground's, span one object each.
+  const auto check_spring_values = [&](const std::vector<double>& values, const char* what) {
+    if (const Index k = first_unusable(values, 0, static_cast<Index>(values.size()), false);
         k >= 0) {
       throw_user_error(scene.objects.front().material.loc,
-                       "a spring stiffness of the model is {:g}; the materials' values combine "
+                       "a stiffness of the model's {} is {:g}; the materials' values combine "
                        "beyond double precision (check density, youngs_modulus and the section)",
-                       (*values)[k]);
+                       what, values[k]);
     }
+  };
+  for (const ModelSpringKind* kind : kModelSpringKinds) {
+    check_spring_values(model.*kind->stiffness, kind->name);
   }
+  check_spring_values(model.ground.node_stiffness, "ground contact");
+  check_spring_values(model.ground.node_damping, "ground contact dampers");
   const double omega_squared = max_frequency_squared_bound(model, true);
   if (!std::isfinite(omega_squared)) {
     throw_user_error(scene.objects.front().material.loc,

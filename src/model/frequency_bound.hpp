@@ -3,9 +3,24 @@
 // eigen-solve: they set the stable time step.
 #include <vector>
 
+#include "core/types.hpp"
+
 namespace dinam {
 
 struct Model;
+
+// The bound's sums, which each kind of spring adds its terms to (ModelSpringKind::
+// add_frequency_terms): the diagonal blocks (N/m) and the scaled couplings (1/s²).
+struct GershgorinSums {
+  std::vector<Mat3> diagonal;    // (n_nodes) Σ k g_i g_iᵀ, or an isotropic upper bound of it
+  std::vector<double> coupling;  // (n_nodes) Σ k |g_i| |g_j| / √(m_i m_j) over free j ≠ i
+
+  explicit GershgorinSums(Index n) : diagonal(n, Mat3::Zero()), coupling(n, 0.0) {}
+
+  // A spring k over `count` (≤ 4) nodes whose gradient blocks have norms at most `norms`. A
+  // pinned node (inverse mass 0) neither couples nor is coupled to: its terms are exactly 0.
+  void add(const Model& model, double k, const Index* nodes, const double* norms, int count);
+};
 
 // Upper bound of ω_max², rad²/s², by the block Gershgorin theorem on D = M^{-½} K M^{-½} over
 // the free nodes. Every spring's stiffness is a sum of rank-one terms k g gᵀ, g the gradient of

@@ -12,6 +12,7 @@
 #include "model/mesh_cleaning.hpp"
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
+#include "model/model_spring_kinds.hpp"
 #include "model/spring_builders.hpp"
 #include "model/step_aiming.hpp"
 #include "model/vertex_welding.hpp"
@@ -316,18 +317,14 @@ void add_axial_damping(const ObjectNodes& object, Model& model) {
 
 // Which kinds of spring can yield; an elastic kind keeps no yield limits (model.hpp).
 void note_yielding_kinds(Model& model) {
-  auto yields = [](std::vector<double>& yield) {
-    const bool any =
-        std::any_of(yield.begin(), yield.end(), [](double y) { return y != kNoYield; });
-    if (!any) {
-      yield = {};
+  for (const ModelSpringKind* kind : kModelSpringKinds) {
+    std::vector<double>& limit = model.*kind->yield_limit;
+    model.*kind->yields =
+        std::any_of(limit.begin(), limit.end(), [](double y) { return y != kNoYield; });
+    if (!(model.*kind->yields)) {
+      limit = {};
     }
-    return any;
-  };
-  model.bars_yield = yields(model.bar_yield_force);
-  model.bends_yield = yields(model.bend_yield_moment);
-  model.torsions_yield = yields(model.torsion_yield_moment);
-  model.clamps_yield = yields(model.clamp_yield_moment);
+  }
 }
 
 // Marks the bars that are an edge of some mesh face, found through each node's bars.

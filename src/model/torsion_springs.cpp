@@ -4,6 +4,9 @@
 #include <vector>
 
 #include "core/geometry.hpp"
+#include "model/bar_lookup.hpp"
+#include "model/frequency_bound.hpp"
+#include "model/model_spring_kinds.hpp"
 #include "model/spring_builders.hpp"
 
 namespace dinam {
@@ -190,5 +193,90 @@ void add_torsion_springs(const BarMaterials& materials, const ModelObject& objec
     push_torsion_spring(model, a, run.first, run.last, b, 1.0 / compliance, yield);
   }
 }
+
+namespace {
+
+// |∂φ/∂x_a| = 1/(|b1| sin θ1), |∂φ/∂x_b| = 1/(|b3| sin θ2), and the axis nodes' blocks are
+// combinations of those: |g_i| ≤ (1 + |b1|/|b2|) |g_a| + |b3|/|b2| |g_b|. The spring's stiffness
+// in φ is its weight sin²θ1 sin²θ2 times torsion_stiffness.
+void add_torsion_frequency_terms(const Model& model, GershgorinSums& sums) {
+  const auto& x = model.node_initial_x;
+  for (Index s = 0; s < model.torsion_count(); ++s) {
+    const Index* nodes = &model.torsion_nodes[4 * s];
+    const Vec3 b1 = x[nodes[1]] - x[nodes[0]];
+    const Vec3 b2 = x[nodes[2]] - x[nodes[1]];
+    const Vec3 b3 = x[nodes[3]] - x[nodes[2]];
+    const double ga = b2.norm() / b1.cross(b2).norm();
+    const double gb = b2.norm() / b2.cross(b3).norm();
+    const double r1 = b1.norm() / b2.norm();
+    const double r3 = b3.norm() / b2.norm();
+    const double norms[4] = {ga, (1 + r1) * ga + r3 * gb, (1 + r3) * gb + r1 * ga, gb};
+    const double weight = b1.cross(b2).squaredNorm() / (b1.squaredNorm() * b2.squaredNorm()) *
+                          b2.cross(b3).squaredNorm() / (b3.squaredNorm() * b2.squaredNorm());
+    sums.add(model, weight * model.torsion_stiffness[s], nodes, norms, 4);
+  }
+}
+
+// The bars of the straight run from node i to node j (a torsion spring's axis that is no bar):
+// from i, each step takes the bar that heads most nearly towards j.
+std::vector<Index> run_bars(const Model& model, const NodeAdjacency& adjacency, Index offset,
+                            Index i, Index j) {
+  std::vector<Index> bars;
+  Index node = i;
+  while (node != j && bars.size() <= static_cast<std::size_t>(adjacency.node_count())) {
+    Index best_bar = -1;
+    Index best_node = -1;
+    double best = -std::numeric_limits<double>::infinity();
+    const Vec3 towards = (model.node_initial_x[j] - model.node_initial_x[node]).normalized();
+    for (const auto& [other, bar] : adjacency[node - offset]) {
+      const double along =
+          (model.node_initial_x[other] - model.node_initial_x[node]).normalized().dot(towards);
+      if (along > best) {
+        best = along;
+        best_bar = bar;
+        best_node = other;
+      }
+    }
+    bars.push_back(best_bar);
+    node = best_node;
+  }
+  return bars;
+}
+
+// A torsion spring stands on its two arms and on its axis: a bar, or a straight run of them.
+void add_bars_under_torsions(const Model& model, const BarLookup& lookup,
+                             std::vector<BarSpring>& stood_on) {
+  std::vector<NodeAdjacency> adjacency;
+  for (const ModelObject& object : model.objects) {
+    adjacency.push_back(node_adjacency(model, object));
+  }
+  for (Index s = 0; s < model.torsion_count(); ++s) {
+    const Index* n = &model.torsion_nodes[4 * s];
+    stood_on.emplace_back(lookup.find(n[0], n[1]), s);
+    stood_on.emplace_back(lookup.find(n[2], n[3]), s);
+    if (const Index axis = lookup.find(n[1], n[2]); axis >= 0) {
+      stood_on.emplace_back(axis, s);
+    } else {
+      const Index object = model.node_object[n[1]];
+      for (const Index bar : run_bars(model, adjacency[static_cast<std::size_t>(object)],
+                                      model.objects[object].first_node, n[1], n[2])) {
+        stood_on.emplace_back(bar, s);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+const ModelSpringKind kTorsionSpringModel{
+    .name = "torsion springs",
+    .count = [](const Model& model) { return model.torsion_count(); },
+    .stiffness = &Model::torsion_stiffness,
+    .yield_limit = &Model::torsion_yield_moment,
+    .yields = &Model::torsions_yield,
+    .add_frequency_terms = add_torsion_frequency_terms,
+    .add_bars_stood_on = add_bars_under_torsions,
+    .torn_code = kTornTorsion,
+};
 
 }  // namespace dinam

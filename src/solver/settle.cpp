@@ -103,7 +103,7 @@ std::string why_path_matters(const Model& model, const ForceSwitches& quiet, con
         return fmt::format(
             "{} would yield under the structure's own weight (the set they keep "
             "depends on the way there)",
-            kind->name);
+            kind->name());
       }
     }
   }

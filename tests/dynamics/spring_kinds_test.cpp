@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -27,13 +28,29 @@ ForceSwitches only(const SpringKind& kind) {
   return switches;
 }
 
+// The model stage lists the same kinds in the same order (the stability bound sums their terms in
+// it), and each names its springs in Model::bar_springs by a code of its own.
+TEST(SpringKinds, BothStagesListTheSameKindsInOneOrder) {
+  ASSERT_EQ(kSpringKinds.size(), kModelSpringKinds.size());
+  std::vector<Index> codes;
+  for (std::size_t k = 0; k < kSpringKinds.size(); ++k) {
+    EXPECT_EQ(kSpringKinds[k]->built, kModelSpringKinds[k]) << kSpringKinds[k]->name();
+    const Index code = kModelSpringKinds[k]->torn_code;
+    EXPECT_EQ(std::count(codes.begin(), codes.end(), code), 0) << kSpringKinds[k]->name();
+    codes.push_back(code);
+    if (code >= 0) {
+      EXPECT_EQ(&spring_kind_torn_as(code), kSpringKinds[k]);
+    }
+  }
+}
+
 TEST(SpringKinds, EveryKindsForceIsMinusTheGradientOfItsEnergy) {
   test::PerturbedLattice p = perturbed_lattice();
   const Model& model = p.model;
   State& state = p.state;
   constexpr double kStep = 1e-7;  // m: central differences err by O(h²) ≈ 1e-14 of the curvature
   for (const SpringKind* kind : kSpringKinds) {
-    SCOPED_TRACE(kind->name);
+    SCOPED_TRACE(kind->name());
     ASSERT_GT(kind->count(model), 0);
     compute_forces(model, only(*kind), state, false);
     const std::vector<Vec3> force = state.force;
@@ -67,7 +84,7 @@ TEST(SpringKinds, TheEnergyReportBooksEveryKind) {
   double springs = 0.0;
   for (const SpringKind* kind : kSpringKinds) {
     const double energy = kind->energy(p.model, p.state);
-    EXPECT_GT(energy, 0.0) << kind->name;
+    EXPECT_GT(energy, 0.0) << kind->name();
     springs += energy;
   }
   const EnergyReport report = energy_report(p.model, p.state, p.state.v_half);

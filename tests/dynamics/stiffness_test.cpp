@@ -5,6 +5,8 @@
 // solver the same K as central differences of the step's forces.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -20,6 +22,7 @@
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/stiffness.hpp"
 #include "dynamics/torsion_spring.hpp"
+#include "model/frequency_bound.hpp"
 #include "model/model.hpp"
 #include "test_support.hpp"
 
@@ -203,13 +206,51 @@ void expect_model_stiffness(const Model& model, State state, const ForceSwitches
 TEST(Stiffness, EveryKindInTheListGivesTheJacobianOfItsForces) {
   const test::PerturbedLattice p = perturbed_lattice();
   for (const SpringKind* kind : kSpringKinds) {
-    SCOPED_TRACE(kind->name);
+    SCOPED_TRACE(kind->name());
     ASSERT_GT(kind->count(p.model), 0);
     DenseSink sink(p.model.node_count());
     kind->add_stiffness(p.model, p.state, sink);
     ForceSwitches only = nothing_on();
     only.*kind->switched = true;
-    expect_model_stiffness(p.model, p.state, only, sink.k, kind->name);
+    expect_model_stiffness(p.model, p.state, only, sink.k, kind->name());
+  }
+}
+
+// The stable step rests on each kind's terms of the Gershgorin bound (the model stage's half of
+// its entry, model/frequency_bound.hpp): at rest, every kind's highest ω² by itself, the largest
+// eigenvalue of M^{-½} K M^{-½} from the stiffness the step's forces have, lies under the bound
+// its terms alone give. A kind whose terms fell short would let `timestep: auto` go unstable.
+TEST(Stiffness, EveryKindsStabilityTermsBoundItsHighestFrequencyAtRest) {
+  const test::PerturbedLattice p = perturbed_lattice();
+  const Model& model = p.model;
+  const State rest = make_state(model, false);
+  const Index n = model.node_count();
+  Eigen::VectorXd root_inverse_mass(3 * n);
+  for (Index i = 0; i < n; ++i) {
+    root_inverse_mass.segment<3>(3 * i).setConstant(std::sqrt(model.node_inv_mass[i]));
+  }
+  for (const SpringKind* kind : kSpringKinds) {
+    SCOPED_TRACE(kind->name());
+    DenseSink sink(n);
+    kind->add_stiffness(model, rest, sink);
+    const Eigen::MatrixXd scaled =
+        root_inverse_mass.asDiagonal() * sink.k * root_inverse_mass.asDiagonal();
+    const double highest =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scaled, Eigen::EigenvaluesOnly)
+            .eigenvalues()
+            .maxCoeff();
+    GershgorinSums sums(n);
+    kind->built->add_frequency_terms(model, sums);
+    double bound = 0.0;
+    for (Index i = 0; i < n; ++i) {
+      if (!model.pinned(i)) {
+        const double own =
+            Eigen::SelfAdjointEigenSolver<Mat3>(sums.diagonal[i]).eigenvalues().maxCoeff();
+        bound = std::max(bound, own * model.node_inv_mass[i] + sums.coupling[i]);
+      }
+    }
+    EXPECT_GT(highest, 0.0);
+    EXPECT_LE(highest, bound * (1.0 + 1e-12));  // rounding of the two sums' order
   }
 }
 

@@ -279,7 +279,7 @@ TEST(ModelBuilder, DerivedQuantitiesBeyondDoublePrecisionAreRefused) {
   scene.objects[0].material.youngs_modulus = 1e308;
   scene.objects[0].material.area_moment = 1e300;
   test::expect_user_error([&] { build_model(scene); }, 6,
-                          {"spring stiffness of the model is inf", "beyond double precision"});
+                          {"a stiffness of the model's bending springs is inf", "beyond double precision"});
 }
 
 }  // namespace
