@@ -186,15 +186,25 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
   return estimate;
 }
 
-void refuse_if_over_budget(const std::filesystem::path& scene_path, const MemoryEstimate& estimate,
-                           const MemoryBudget& budget, bool force) {
+void refuse_if_over_budget(const std::filesystem::path& scene_path, const FileLoc& frames_key,
+                           const MemoryEstimate& estimate, const MemoryBudget& budget, bool force) {
   if (force || budget.source.empty() || estimate.peak() <= budget.bytes) {
     return;
   }
   // The advice that shrinks the largest part.
   const std::uint64_t mesh_parts = estimate.scene + estimate.model + estimate.dynamics;
   std::string advice = "use a coarser mesh";
-  if (estimate.frames >= mesh_parts && estimate.frames >= estimate.drawing) {
+  const bool frames_largest = estimate.frames >= mesh_parts && estimate.frames >= estimate.drawing;
+  if (frames_largest && frames_key.known()) {
+    throw_user_error(frames_key,
+                     "this run's frames need about {} of the {} it needs in all ({}), more than "
+                     "the {} available ({}); a shorter 'duration', or draw it in parts from a "
+                     "motion cache (dinam simulate, then render --cache DIR --frames A-B: only "
+                     "those frames are held), or pass --force to run it anyway",
+                     byte_size(estimate.frames), byte_size(estimate.peak()), estimate.summary(),
+                     byte_size(budget.bytes), budget.source);
+  }
+  if (frames_largest) {
     advice =
         "draw it in parts from a motion cache (dinam simulate, then render --cache DIR --frames "
         "A-B: only those frames are held)";

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "core/error.hpp"
 #include "core/memory_budget.hpp"
 
 namespace dinam {
@@ -44,9 +45,10 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
 std::uint64_t made_state_bytes(const Model& model, bool energy);
 
 // Throws UserError naming the scene, the estimate by part, the budget and what to do, when the
-// estimate passes the budget and `force` is off.
-void refuse_if_over_budget(const std::filesystem::path& scene_path, const MemoryEstimate& estimate,
-                           const MemoryBudget& budget, bool force);
+// estimate passes the budget and `force` is off; at `frames_key` (the scene's `duration`, when the
+// frames held are the whole run's) when the frames are the largest part.
+void refuse_if_over_budget(const std::filesystem::path& scene_path, const FileLoc& frames_key,
+                           const MemoryEstimate& estimate, const MemoryBudget& budget, bool force);
 
 // "1.23 GB", "456 MB", "789 kB": decimal units, three significant figures.
 std::string byte_size(std::uint64_t bytes);

@@ -68,13 +68,13 @@ int run_render(const RenderOptions& options) {
   const int frames_held = cache ? range.last - range.first + 1 : scene.frame_count();
   const MotionBlurDesc& blur = scene.quality.motion_blur;
   const int instants = blur.enabled() ? blur.samples : 0;
-  refuse_if_over_budget(options.scene,
+  refuse_if_over_budget(options.scene, cache ? FileLoc{} : scene.duration_loc,
                         estimate_memory(scene, model,
                                         {frames_held, options.energy_csv, scene.image_width,
                                          scene.image_height, instants}),
                         available_memory(), options.force);
   if (timestep) {
-    refuse_if_too_long(options.scene, model, *timestep,
+    refuse_if_too_long(scene, model, *timestep,
                        estimate_run(scene, model, *timestep, thread_count()), options.force);
   }
   std::vector<Image> textures = read_textures(scene);

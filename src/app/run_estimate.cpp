@@ -15,17 +15,26 @@
 
 namespace dinam {
 
+namespace {
+
+// The most steps settling may take: its duration's.
+long long settle_steps(const Model& model, const TimeStep& timestep) {
+  return model.settle.enabled ? std::llround(model.settle.duration / timestep.dt) : 0;
+}
+
+}  // namespace
+
 long long steps_in_all(const SceneDescription& scene, const Model& model,
                        const TimeStep& timestep) {
-  const long long settling =
-      model.settle.enabled ? std::llround(model.settle.duration / timestep.dt) : 0;
-  return static_cast<long long>(scene.frame_count()) * timestep.steps_per_frame + settling;
+  return static_cast<long long>(scene.frame_count()) * timestep.steps_per_frame +
+         settle_steps(model, timestep);
 }
 
 RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
                          const TimeStep& timestep, int threads) {
   RunEstimate estimate;
   estimate.steps = steps_in_all(scene, model, timestep);
+  estimate.settle_steps = settle_steps(model, timestep);
   estimate.step = estimate_step_cost(model, threads);
   estimate.seconds = estimate.step.seconds * static_cast<double>(estimate.steps);
   return estimate;
@@ -60,37 +69,53 @@ std::string duration_text(double seconds) {
   return fmt::format("{:.0f} days", seconds / 86400.0);
 }
 
-void refuse_if_too_long(const std::filesystem::path& scene_path, const Model& model,
-                        const TimeStep& timestep, const RunEstimate& estimate, bool force) {
+void refuse_if_too_long(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
+                        const RunEstimate& estimate, bool force) {
   if (force || !estimate.long_run()) {
     return;
   }
+  const std::string cost = fmt::format(
+      "would take about {} ({:.3g} ms a step on {} thread{}, estimated from the model's springs "
+      "and nodes), more than {}",
+      duration_text(estimate.seconds), 1e3 * estimate.step.seconds, estimate.step.threads,
+      estimate.step.threads == 1 ? "" : "s", duration_text(kLongRunSeconds));
+  // Settling that may run longer than the motion itself: its duration is the key to change.
+  if (2 * estimate.settle_steps > estimate.steps) {
+    throw_user_error(scene.settle.duration_loc,
+                     "settling may take {} steps of {:.3g} s (its 'duration' of {:g} s is the "
+                     "longest it runs before the structure rests) and the run {}; give "
+                     "'settle.duration' a few times the structure's slowest period (a few "
+                     "seconds for most scenes), or pass --force to run it anyway",
+                     estimate.settle_steps, timestep.dt, scene.settle.duration, cost);
+  }
   const StepLimits limits = find_step_limits(model);
   std::string cause;
+  FileLoc key = scene.duration_loc;  // when no one node limits the step
   if (limits.fastest_node >= 0) {
-    cause = limits.contact_dominates
-                ? fmt::format(" (the contact penalty at {} sets it)",
-                              describe_node(model, limits.fastest_node))
-                : fmt::format(
-                      " (set by {}, whose shortest bar is {:.3g} m; the median bar is "
-                      "{:.3g} m)",
+    const ObjectDesc& object = scene.objects[model.node_object[limits.fastest_node]];
+    if (limits.contact_dominates) {
+      cause = fmt::format(" (the contact penalty at {} sets it)",
+                          describe_node(model, limits.fastest_node));
+      const FileLoc& stiffness = scene.ground.stiffness_loc.known() ? scene.ground.stiffness_loc
+                                                                    : scene.contact.stiffness_loc;
+      key = stiffness.known() ? stiffness : scene.duration_loc;
+    } else {
+      cause =
+          fmt::format(" (set by {}, whose shortest bar is {:.3g} m; the median bar is {:.3g} m)",
                       describe_node(model, limits.fastest_node), limits.shortest_at_fastest,
                       limits.median_length);
+      key = object.material.loc;
+    }
   }
   // The step that would bring the run within the limit, as a `max_steps`.
   const auto max_steps = static_cast<long long>(
       std::floor(static_cast<double>(estimate.steps) * kLongRunSeconds / estimate.seconds));
-  throw_user_error({},
-                   "{}: this run needs {} steps of {:.3g} s{} and would take about {} ({:.3g} ms "
-                   "a step on {} thread{}, estimated from the model's springs and nodes), more "
-                   "than {}; aim the step with "
+  throw_user_error(key,
+                   "this run of {:g} s needs {} steps of {:.3g} s{} and {}; aim the step with "
                    "'timestep: {{max_steps: {}}}' (mass scaling and collapsing the shortest bars), "
                    "collapse short bars with 'mesh: {{weld: 0.1}}', use a softer material, or "
                    "pass --force to run it anyway",
-                   scene_path.string(), estimate.steps, timestep.dt, cause,
-                   duration_text(estimate.seconds), 1e3 * estimate.step.seconds,
-                   estimate.step.threads, estimate.step.threads == 1 ? "" : "s",
-                   duration_text(kLongRunSeconds), max_steps);
+                   scene.duration, estimate.steps, timestep.dt, cause, cost, max_steps);
 }
 
 }  // namespace dinam

@@ -4,7 +4,6 @@
 // on a busy one. Contact that starts later, tearing and plastic flow change the cost as the run
 // goes, so the figure is an estimate of the simulation, not a promise; drawing the frames comes
 // on top.
-#include <filesystem>
 #include <string>
 
 #include "dynamics/stability.hpp"
@@ -19,9 +18,10 @@ struct SceneDescription;
 inline constexpr double kLongRunSeconds = 3600.0;
 
 struct RunEstimate {
-  long long steps = 0;   // over the frames, and the most that settling may take
-  StepCost step;         // a step's estimated cost on the threads in use
-  double seconds = 0.0;  // steps × step.seconds
+  long long steps = 0;         // over the frames, and the most that settling may take
+  long long settle_steps = 0;  // of those, the settling's
+  StepCost step;               // a step's estimated cost on the threads in use
+  double seconds = 0.0;        // steps × step.seconds
 
   bool long_run() const { return seconds > kLongRunSeconds; }
 };
@@ -46,9 +46,11 @@ MeasuredStep measure_step_now(const Model& model, const TimeStep& timestep,
 // "3.2 s", "17 min", "5.1 h", "12 days".
 std::string duration_text(double seconds);
 
-// Throws UserError for a run estimated above kLongRunSeconds unless `force`, naming what limits
-// the step and the fixes. What `render` and `simulate` check before they start.
-void refuse_if_too_long(const std::filesystem::path& scene_path, const Model& model,
-                        const TimeStep& timestep, const RunEstimate& estimate, bool force);
+// Throws UserError for a run estimated above kLongRunSeconds unless `force`, at the key to change:
+// `settle.duration` when the settling's most steps are the larger part, else the key that sets
+// the step (the material of the node that limits it, or the contact stiffness), naming the fixes.
+// What `render` and `simulate` check before they start.
+void refuse_if_too_long(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
+                        const RunEstimate& estimate, bool force);
 
 }  // namespace dinam

@@ -64,10 +64,11 @@ int run_simulate(const SimulateOptions& options) {
   request.shutter = scene.quality.motion_blur.shutter;
   request.steps_per_frame = timestep.steps_per_frame;
   // One frame's positions at a time: each goes to the files as soon as it is simulated.
-  refuse_if_over_budget(options.scene, estimate_memory(scene, model, {2, options.energy, 0, 0}),
+  refuse_if_over_budget(options.scene, scene.duration_loc,
+                        estimate_memory(scene, model, {2, options.energy, 0, 0}),
                         available_memory(), options.force);
-  refuse_if_too_long(options.scene, model, timestep,
-                     estimate_run(scene, model, timestep, thread_count()), options.force);
+  refuse_if_too_long(scene, model, timestep, estimate_run(scene, model, timestep, thread_count()),
+                     options.force);
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
   SettleOutcome settled;

@@ -296,6 +296,7 @@ struct SettleDesc {
   double residual = 1.0e-6;  // largest out-of-balance force on a free node / that node's weight
   std::optional<double> damping;  // 1/s, of the first, overdamped stage; empty: automatic
   FileLoc loc;
+  FileLoc duration_loc;  // of `duration`, or of the settle map when it is left at its default
 };
 
 // One setting that decides the motion: a key path as the file spells it and the text of its
@@ -332,7 +333,8 @@ struct SceneDescription {
   int version = 1;
   std::string name;  // movie file name; default: the scene file's stem
 
-  double duration = 0.0;           // s
+  double duration = 0.0;  // s
+  FileLoc duration_loc;
   double fps = 0.0;                // frames per second
   std::optional<double> timestep;  // s; empty for `auto`
   StepTargetDesc step_target;      // what an automatic step aims at

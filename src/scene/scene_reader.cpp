@@ -269,6 +269,7 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
   }
 
   scene.duration = map.required_number("duration");  // no sensible default for a movie's length
+  scene.duration_loc = map.loc("duration");
   require_positive(scene.duration, map.loc("duration"), "duration", "s");
   scene.fps = map.number("fps", 24.0);
   require_positive(scene.fps, map.loc("fps"), "fps", "frames per second");
@@ -302,6 +303,7 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
                        method);
     }
     scene.settle.duration = settle.number("duration", scene.settle.duration);
+    scene.settle.duration_loc = settle.loc("duration");
     require_positive(scene.settle.duration, settle.loc("duration"), "settle.duration", "s");
     scene.settle.residual = settle.number("residual", scene.settle.residual);
     if (!(scene.settle.residual >= 1e-12 && scene.settle.residual <= 0.1)) {

@@ -143,7 +143,8 @@ std::string YamlMap::path(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
-bool YamlMap::has(const std::string& key) const {
+bool YamlMap::has(const std::string& key) {
+  asked_.insert(key);
   return static_cast<bool>(node_[key]);
 }
 

@@ -32,7 +32,8 @@ class YamlMap {
   // Throws if `node` is not a map.
   YamlMap(const YAML::Node& node, std::string file, std::string path);
 
-  bool has(const std::string& key) const;
+  // Whether `key` is present; asking counts it among the keys the map accepts (finish()).
+  bool has(const std::string& key);
   // Marks `key` as read and returns it (an undefined node when absent).
   YAML::Node get(const std::string& key);
   // The same, but a missing key is an error. When a present key is a near miss (`densty` for
