@@ -14,6 +14,7 @@
 #include <assimp/Importer.hpp>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -44,12 +45,30 @@ bool write_all(int fd, const std::string& bytes) {
   return true;
 }
 
-// Seconds the importer may take for a file, plus 2 s per megabyte: $DINAM_MESH_IMPORT_TIMEOUT, else
-// 60.
-double import_time_limit() {
+// The processor time the importer may spend on a file: 2 s (or $DINAM_MESH_IMPORT_TIMEOUT) plus 2 s
+// per megabyte. assimp reads a sound file at tens of megabytes a second, so this is far more than
+// any needs, yet a small file that makes it loop is refused in a couple of seconds. It counts the
+// child's own processor time, which another program on the machine does not lengthen; a child
+// that waits without computing (a mesh path naming a pipe) meets the clock's limit instead.
+// Whole seconds, as the system counts them for the limit.
+long import_cpu_seconds(std::uintmax_t file_bytes) {
   const char* text = std::getenv("DINAM_MESH_IMPORT_TIMEOUT");
-  const double seconds = text != nullptr ? std::strtod(text, nullptr) : 0.0;
-  return seconds > 0.0 ? seconds : 60.0;
+  const double set = text != nullptr ? std::strtod(text, nullptr) : 0.0;
+  const double seconds = (set > 0.0 ? set : 2.0) + 2.0 * static_cast<double>(file_bytes) / 1e6;
+  return std::max(1L, std::lround(std::min(seconds, 1e9)));
+}
+
+// The wall-clock time the parent waits for the child, whatever it does: a minute more than its
+// processor time, for a machine busy with other work.
+double import_wall_seconds(std::uintmax_t file_bytes) {
+  return 60.0 + 2.0 * static_cast<double>(import_cpu_seconds(file_bytes));
+}
+
+// Stops the child at its processor time: SIGXCPU at the soft limit, SIGKILL a second later.
+void limit_processor_time(std::uintmax_t file_bytes) {
+  const auto seconds = static_cast<rlim_t>(import_cpu_seconds(file_bytes));
+  const rlimit limit{seconds, seconds + 1};
+  setrlimit(RLIMIT_CPU, &limit);
 }
 
 // A malformed header can make assimp reserve memory for 10⁹ vertices and then touch it page by
@@ -105,7 +124,9 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
   if (pid == 0) {
     close(ends[0]);
     std::error_code size_error;
-    limit_address_space(std::filesystem::file_size(path, size_error));
+    const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
+    limit_address_space(size_error ? 0 : bytes);
+    limit_processor_time(size_error ? 0 : bytes);
     Assimp::Importer importer;
     // No post-processing at all: triangulating would add diagonals that are not edges of the
     // model, and model/ welds coincident vertices itself. Node transforms are applied here.
@@ -120,8 +141,9 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
   // A malformed file can also make assimp loop for ever (fuzzing found PLY files that do); the
   // child gets a time that no sound file of this size needs, then it is stopped.
   std::error_code ec;
-  const double megabytes = static_cast<double>(std::filesystem::file_size(path, ec)) / 1e6;
-  const double limit = import_time_limit() + (ec ? 0.0 : 2.0 * megabytes);
+  const std::uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+  const auto cpu_limit = static_cast<double>(import_cpu_seconds(ec ? 0 : file_bytes));
+  const double limit = import_wall_seconds(ec ? 0 : file_bytes);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(limit);
   std::string reply;
   std::array<char, 65536> buffer{};
@@ -150,14 +172,24 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
   }
   close(ends[0]);
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  rusage usage{};
+  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
   }
-  if (timed_out) {
+  const double cpu_used =
+      static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+      1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  // SIGXCPU at the soft limit, or SIGKILL at the hard one (a SIGKILL before it is another cause:
+  // the system out of memory).
+  const bool out_of_time =
+      WIFSIGNALED(status) &&
+      (WTERMSIG(status) == SIGXCPU || (WTERMSIG(status) == SIGKILL && cpu_used >= cpu_limit));
+  if (timed_out || out_of_time) {
     throw_user_error(where,
-                     "the mesh importer (assimp) did not finish reading '{}' in {:.0f} s, which "
-                     "a sound file of its size never needs (a malformed file can make it loop); "
-                     "only this file is refused: mend it or convert it to OBJ",
-                     path.string(), limit);
+                     "the mesh importer (assimp) did not finish reading '{}' in {:.0f} s of "
+                     "processor time, which a sound file of its size never needs (a malformed "
+                     "file can make it loop); only this file is refused: mend it or convert it "
+                     "to OBJ",
+                     path.string(), timed_out ? limit : cpu_limit);
   }
   if (WIFSIGNALED(status)) {
     throw_user_error(where,

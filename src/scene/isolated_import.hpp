@@ -12,9 +12,10 @@
 namespace dinam {
 
 // The mesh of `path` in the file's own space (node transforms applied), unchecked. Throws
-// UserError at `where` when assimp cannot read it, crashes, or runs past its time (60 s plus 2 s
-// per megabyte of file; $DINAM_MESH_IMPORT_TIMEOUT replaces the 60); RuntimeError when the child
-// cannot be started or sends what is not a mesh.
+// UserError at `where` when assimp cannot read it, crashes, or runs past its processor time (2 s
+// plus 2 s per megabyte of file; $DINAM_MESH_IMPORT_TIMEOUT replaces the 2) or, waiting without
+// computing, a minute more than that on the clock; RuntimeError when the child cannot be started
+// or sends what is not a mesh.
 RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where);
 
 }  // namespace dinam
