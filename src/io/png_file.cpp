@@ -50,6 +50,9 @@ bool write_rows(std::FILE* file, const Image& image, const PngOptions& options,
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width),
                static_cast<png_uint_32>(image.height), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  // The pixels are sRGB-encoded (the renderer's display pass encodes them): say so, with the
+  // gAMA and cHRM chunks that readers without sRGB support fall back on.
+  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(png, info);
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 4;
   for (int y = 0; y < image.height; ++y) {

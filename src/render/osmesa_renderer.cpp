@@ -439,6 +439,13 @@ void OsmesaRenderer::read_display(Image& image) {
     std::memcpy(image.rgba.data() + static_cast<std::size_t>(height - 1 - y) * row_bytes,
                 source + static_cast<std::size_t>(y) * row_bytes, row_bytes);
   }
+  // The frame is a picture of the whole scene, sky included, so it is opaque everywhere. The
+  // buffer's alpha is what alpha to coverage and blending left at the edges of wires (the
+  // covered fraction, not a transparency): written to a PNG it gave the wires dark fringes over
+  // any background.
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) {
+    image.rgba[i] = 255;
+  }
 }
 
 void OsmesaRenderer::render(const DrawList& list, std::span<const FrameSample> samples,

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+#include <string>
+
 #include "core/error.hpp"
 #include "test_support.hpp"
 
@@ -33,6 +37,21 @@ TEST(PngFile, RoundTripKeepsEveryPixelAndLeavesNoTemporaryFile) {
     EXPECT_EQ(back.rgba, image.rgba);
   }
   EXPECT_TRUE(test::temporary_files_in(folder.path()).empty());
+}
+
+// Frames say they are sRGB (an sRGB chunk, with gAMA for older readers), before the pixels, so
+// that a compositor or browser does not guess another encoding.
+TEST(PngFile, FramesAreTaggedSrgbBeforeTheirPixels) {
+  test::TemporaryFolder folder("png");
+  write_png(folder.path() / "frame.png", gradient(8, 8));
+  std::ifstream file(folder.path() / "frame.png", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::size_t srgb = bytes.find("sRGB");
+  const std::size_t gama = bytes.find("gAMA");
+  const std::size_t pixels = bytes.find("IDAT");
+  ASSERT_NE(pixels, std::string::npos);
+  EXPECT_LT(srgb, pixels);
+  EXPECT_LT(gama, pixels);
 }
 
 TEST(PngFile, UnwritablePathIsAnErrorAndLeavesNothing) {

@@ -124,6 +124,34 @@ TEST(OsmesaRenderer, BarNarrowerThanAPixelShowsAlongItsWholeLength) {
   }
 }
 
+// Every pixel of a frame is opaque: the edges of wires, drawn with alpha to coverage, once left
+// alpha below 255 in the PNG, so a frame laid over black gave its wires dark fringes.
+TEST(OsmesaRenderer, FramesAreOpaqueAlongTheEdgesOfWires) {
+  const int width = 160;
+  const int height = 120;
+  const RenderCamera camera = front_camera();
+  DrawList wires = one_bar();
+  wires.segment_points = {0, 1, 2, 3};
+  wires.segment_radius = {0.0012f, 0.02f};
+  wires.segment_color = {Vec3f(0.9f, 0.05f, 0.05f), Vec3f(0.1f, 0.1f, 0.8f)};
+  wires.point_radius.assign(4, 0.0f);
+  wires.point_color.assign(4, Vec3f::Zero());
+  const std::vector<Vec3f> positions = {Vec3f(-1, 0, 1.003f), Vec3f(1, 0.5f, 1.2f),
+                                        Vec3f(-0.7f, 0, 0.6f), Vec3f(0.9f, -0.3f, 1.4f)};
+  for (const int samples : {1, 4}) {
+    OsmesaRenderer renderer({width, height, samples, 512, {}});
+    Image image;
+    renderer.render(wires, positions, camera, image);
+    int translucent = 0;
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        translucent += image.pixel(x, y)[3] != 255 ? 1 : 0;
+      }
+    }
+    EXPECT_EQ(translucent, 0) << samples << " samples";
+  }
+}
+
 // A 1 m square facing the camera, textured with a red left half and a blue right half: each half
 // shows where the camera puts it, lit from either side.
 TEST(OsmesaRenderer, TexturedSurfaceShowsItsPictureWhereTheCameraPutsIt) {
