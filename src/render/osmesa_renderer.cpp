@@ -28,6 +28,10 @@ constexpr int kSceneDepthUnit = 4;
 // 24-bit depth buffer): a polygon offset for triangles, added by the shader for the capsules,
 // whose depth it writes itself.
 constexpr float kPrepassDepthMargin = 8.0f / 16777216.0f;
+// How far the ground yields its depths to what lies on it (draw_ground): a polygon offset, on top
+// of any of the pass.
+constexpr float kGroundYieldFactor = 2.0f;
+constexpr float kGroundYieldUnits = 16.0f;
 const Vec3f kHorizonColor{0.78f, 0.82f, 0.86f};
 const Vec3f kZenithColor{0.30f, 0.45f, 0.68f};
 
@@ -254,9 +258,28 @@ void OsmesaRenderer::draw_ground(const DrawList& list, const Mat4f& clip_from_wo
     set_lighting(ground, list, camera, light_from_world);
     set_output(ground, direct);
   }
+  // The ground yields its depths to what lies on it: contact holds a resting cloth a micrometre
+  // into the plane (or on it), where its depths and the ground's are equal to the buffer's
+  // precision, and the ground would hide it in speckle or whole. Pushed back by a few units of
+  // depth and twice the slope, on top of any offset its pass already has, the ground still hides
+  // what sinks into it by more than about a millimetre at a few metres.
+  const bool offset_before = glIsEnabled(GL_POLYGON_OFFSET_FILL) == GL_TRUE;
+  GLfloat factor_before = 0.0f;
+  GLfloat units_before = 0.0f;
+  if (offset_before) {
+    glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor_before);
+    glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units_before);
+  }
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(factor_before + kGroundYieldFactor, units_before + kGroundYieldUnits);
   glBindVertexArray(ground_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 6);
   glBindVertexArray(0);
+  if (offset_before) {
+    glPolygonOffset(factor_before, units_before);
+  } else {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
 }
 
 void OsmesaRenderer::set_output(const ShaderProgram& program, bool direct) const {

@@ -185,6 +185,54 @@ TEST(OsmesaRenderer, TexturedSurfaceShowsItsPictureWhereTheCameraPutsIt) {
   }
 }
 
+// A cloth lying on the ground, as contact leaves it (a micrometre into it): the ground never
+// hides it, in a frame of one instant and in one averaged over several (motion blur), where the
+// depths are drawn in a pass of their own. Before the ground yielded its depths, the cloth showed
+// as speckle or not at all.
+TEST(OsmesaRenderer, GroundNeverHidesASurfaceLyingOnIt) {
+  const int width = 160;
+  const int height = 120;
+  DrawList list = one_bar();
+  list.segment_points.clear();
+  list.segment_radius.clear();
+  list.segment_color.clear();
+  list.ground_visible = true;
+  list.point_radius.assign(4, 0.0f);
+  list.point_color.assign(4, Vec3f(0.5f, 0.5f, 0.5f));
+  list.point_uv = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+  Image red(1, 1);
+  red.rgba = {230, 20, 20, 255};
+  list.textures.push_back(red);
+  list.surfaces.push_back({{0, 1, 2, 0, 2, 3}, 0});
+  list.light_direction = Vec3f(0.3f, -0.4f, 1.0f);
+  const float below = -1.13e-6f;  // m, where contact's penalty holds a resting node
+  const std::vector<Vec3f> positions = {Vec3f(-1, -1, below), Vec3f(1, -1, below),
+                                        Vec3f(1, 1, below), Vec3f(-1, 1, below)};
+  RenderCamera camera;
+  camera.position = Vec3f(0, -5, 1.2f);  // low: the ground is seen at a grazing angle
+  camera.look_at = Vec3f(0, 0, 0);
+  camera.fov_degrees = 40.0f;
+  for (const int instants : {1, 3}) {
+    OsmesaRenderer renderer({width, height, 4, 512, {}});
+    const std::vector<FrameSample> samples(static_cast<std::size_t>(instants),
+                                           FrameSample{&positions, camera});
+    Image image;
+    renderer.render(list, samples, image);
+    int points = 0;
+    int hidden = 0;
+    for (float x = -0.8f; x <= 0.8f; x += 0.1f) {
+      for (float y = -0.8f; y <= 0.8f; y += 0.1f) {
+        const Eigen::Vector2f pixel = pixel_from_world(camera, width, height, Vec3f(x, y, 0));
+        const std::uint8_t* p =
+            image.pixel(static_cast<int>(pixel.x()), static_cast<int>(pixel.y()));
+        ++points;
+        hidden += p[0] > p[1] + 40 ? 0 : 1;  // the red cloth, or the grey ground
+      }
+    }
+    EXPECT_EQ(hidden, 0) << "of " << points << " points, " << instants << " instants";
+  }
+}
+
 // A bar held above the ground under a light from straight above darkens the ground beneath it
 // (compared with the same pixel drawn without shadows), and only there.
 TEST(OsmesaRenderer, BarCastsAShadowOnTheGround) {
