@@ -73,9 +73,10 @@ int run_movie(const MovieOptions& options);
 
 // Prints the model summary to stdout, as text or as one JSON object, with the run's estimates on
 // the process's threads (core/thread_team.hpp) and `threads`' reason for their count. Throws
-// UserError for a bad scene.
+// UserError for a bad scene. With `energy`, the text says what energy balance the step gives and
+// what step gives 0.1 %.
 int run_info(const std::filesystem::path& scene, bool json = false,
-             const ThreadChoice& threads = {});
+             const ThreadChoice& threads = {}, bool energy = false);
 
 struct SnapshotOptions {
   std::filesystem::path scene;

@@ -177,6 +177,10 @@ int run(int argc, char** argv) {
   info_command->add_option("scene", info_scene, "Scene file (YAML)")->required();
   bool info_json = false;
   info_command->add_flag("--json", info_json, "Print one JSON object, for scripts");
+  bool info_energy = false;
+  info_command->add_flag("--energy", info_energy,
+                         "Also say what energy balance the time step gives (energy.csv's "
+                         "total_J) and what step gives 0.1 %");
   add_threads_option(info_command);
 
   try {
@@ -235,7 +239,7 @@ int run(int argc, char** argv) {
       }
       return run_snapshot(snapshot);
     }
-    return run_info(info_scene, info_json, thread_choice);
+    return run_info(info_scene, info_json, thread_choice, info_energy);
   } catch (const Interrupted& e) {
     fmt::print(stderr, "dinam: {}\n", e.what());
     return 128 + e.signal();

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -233,6 +234,33 @@ TEST_F(EndToEnd, InfoPrintsTheModelSummary) {
         "frames           3 at 10 fps"}) {
     EXPECT_NE(result.output.find(line), std::string::npos) << line << "\n" << result.output;
   }
+}
+
+// `info --energy` says what balance to expect: the automatic step is at most 0.8 of the stability
+// limit, itself at most 2/ω_max (less with damping), so ω_max·Δt is at most 1.6; the step it
+// offers for 0.1 % is smaller by √(0.1 % / the expected share), since the error grows as Δt².
+TEST_F(EndToEnd, InfoSaysWhatEnergyBalanceTheStepGives) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const CommandResult text = run(dinam("info --energy '" + scene.string() + "'"));
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("energy balance   ω_max·Δt = "), std::string::npos) << text.output;
+  EXPECT_NE(text.output.find("brings that to about 0.1 %"), std::string::npos) << text.output;
+  const CommandResult json = run(dinam("info --json '" + scene.string() + "'"));
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const auto number = [&](const std::string& key) {
+    const std::size_t at = json.output.find("\"" + key + "\": ");
+    EXPECT_NE(at, std::string::npos) << key;
+    return at == std::string::npos ? 0.0 : std::stod(json.output.substr(at + key.size() + 4));
+  };
+  const double omega_dt = number("omega_max_dt");
+  const double limit = number("stability_limit_s");
+  const double step = number("timestep_s");
+  EXPECT_GT(omega_dt, 0.0);
+  EXPECT_LE(omega_dt, 2.0 * step / limit * (1.0 + 1e-12));  // the limit is at most 2/ω_max
+  EXPECT_LE(step, 0.8 * limit * (1.0 + 1e-12));             // so ω_max·Δt ≤ 1.6
+  const double balance = number("expected_energy_balance");
+  EXPECT_NEAR(number("timestep_for_0_1_percent_balance_s") / step, std::sqrt(0.001 / balance),
+              1e-9);
 }
 
 }  // namespace
