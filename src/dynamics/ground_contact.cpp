@@ -1,5 +1,7 @@
 #include "dynamics/ground_contact.hpp"
 
+#include <algorithm>
+
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/vector_lanes.hpp"
 
@@ -13,13 +15,16 @@ constexpr Index kGroundBlock = 64;
 
 struct GroundBlock {
   // Inputs: each touching node's position, velocity, stick anchor (kept, or the foot of a new
-  // touch), whether it slid last step (1 or 0), and its penalty's stiffness and damping.
+  // touch), whether it slid last step (1 or 0), its penalty's stiffness and damping, and what
+  // its damper needs (ground_contact.hpp): v*·n and 1 / (1 + cΔt/2m).
   Vec3Lanes<kGroundBlock> x;
   Vec3Lanes<kGroundBlock> v;
   Vec3Lanes<kGroundBlock> anchor;
   double sliding[kGroundBlock];
   double stiffness[kGroundBlock];
   double damping[kGroundBlock];
+  double normal_speed[kGroundBlock];
+  double implicit[kGroundBlock];
   // Outputs: ContactForces, by coordinate.
   Vec3Lanes<kGroundBlock> elastic;
   Vec3Lanes<kGroundBlock> normal_damping;
@@ -38,6 +43,7 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     return;
   }
   State& state = context.state;
+  const double dt = state.dt;
   for_each_own_node_chunk(
       context.worker, model.node_count(), kGroundBlock, [&](Index first, Index size) {
         // 1. Gather the nodes below the plane, packed; a block above it (the usual case) ends here.
@@ -45,7 +51,7 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
         double distance[kGroundBlock];
         Index count = 0;
         for (Index i = first; i < first + size; ++i) {
-          const double d = dot3(state.x[i] - ground.point, ground.normal);
+          const double d = dot3(state.x[i] - ground.point, ground.normal) - ground.node_radius[i];
           if (d < 0.0 && !model.pinned(i)) {
             distance[count] = d;
             touching[count++] = i;
@@ -60,23 +66,37 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
         GroundBlock block;
         for (Index k = 0; k < count; ++k) {
           const Index i = touching[k];
-          block.x.set(k, state.x[i]);
+          // The node meets the plane with its lowest point, x − r n.
+          const Vec3 lowest = state.x[i] - ground.node_radius[i] * ground.normal;
+          block.x.set(k, lowest);
           block.v.set(k, state.v_half[i]);
           // A node that has just touched is anchored at its foot on the plane.
           block.anchor.set(k, state.contact_touching[i] != 0
                                   ? state.contact_anchor[i]
-                                  : Vec3(state.x[i] - distance[k] * ground.normal));
+                                  : Vec3(lowest - distance[k] * ground.normal));
           block.sliding[k] = state.contact_sliding[i] != 0 ? 1.0 : 0.0;
           block.stiffness[k] = ground.node_stiffness[i];
-          block.damping[k] = ground.node_damping[i];
+          // The damper: its share of the step a node crosses the plane in, τ + Δt/2 of Δt where
+          // it crossed τ = −d / (−v·n) ago (a node found deeper than a step's travel started
+          // there); then the velocity at t_n that the other forces bring about.
+          const double approach = -dot3(state.v_half[i], ground.normal);
+          double damping = ground.node_damping[i];
+          if (state.contact_touching[i] == 0 && dt > 0.0 && -distance[k] < approach * dt) {
+            damping *= (-distance[k] / approach + 0.5 * dt) / dt;
+          }
+          const double half_step = 0.5 * dt * model.node_inv_mass[i];
+          block.damping[k] = damping;
+          block.normal_speed[k] = -approach + half_step * dot3(context.force[i], ground.normal);
+          block.implicit[k] = 1.0 / (1.0 + damping * half_step);
         }
         // 2. The contact forces, one node per lane (vectorised by GCC without `omp simd`, which
         // would
         //    put the Vec3 temporaries in per-lane arrays in memory and keep it from vectorising).
         for (Index k = 0; k < count; ++k) {
           const ContactForces f =
-              ground_contact(ground, block.stiffness[k], block.damping[k], block.x.get(k),
-                             block.v.get(k), block.anchor.get(k), block.sliding[k] != 0.0);
+              ground_contact(ground, block.stiffness[k], block.damping[k], block.normal_speed[k],
+                             block.implicit[k], block.x.get(k), block.v.get(k), block.anchor.get(k),
+                             block.sliding[k] != 0.0);
           block.elastic.set(k, f.normal_elastic);
           block.normal_damping.set(k, f.normal_damping);
           block.friction.set(k, f.friction);
@@ -111,7 +131,7 @@ double ground_contact_energy(const Model& model, const State& state) {
   }
   double energy = 0.0;
   for (Index i = 0; i < model.node_count(); ++i) {
-    const double penetration = -dot3(state.x[i] - ground.point, ground.normal);
+    const double penetration = -ground.clearance(i, state.x[i]);
     if (penetration > 0.0 && !model.pinned(i)) {
       energy += 0.5 * ground.node_stiffness[i] * penetration * penetration;
     }
@@ -125,11 +145,13 @@ void anchor_nodes_at_rest(const Model& model, State& state) {
     return;
   }
   for (Index i = 0; i < model.node_count(); ++i) {
-    const double distance = dot3(state.x[i] - ground.point, ground.normal);
+    const double distance = ground.clearance(i, state.x[i]);
     const bool touching = distance < 0.0 && !model.pinned(i);
     state.contact_touching[i] = touching ? 1 : 0;
     state.contact_sliding[i] = 0;
-    state.contact_anchor[i] = touching ? Vec3(state.x[i] - distance * ground.normal) : Vec3::Zero();
+    state.contact_anchor[i] =
+        touching ? Vec3(state.x[i] - (ground.node_radius[i] + distance) * ground.normal)
+                 : Vec3::Zero();
   }
 }
 
@@ -140,7 +162,7 @@ void add_ground_contact_stiffness(const Model& model, const State& state, Stiffn
   }
   const Mat3 normal_outer = ground.normal * ground.normal.transpose();
   for (Index i = 0; i < model.node_count(); ++i) {
-    if (dot3(state.x[i] - ground.point, ground.normal) < 0.0 && !model.pinned(i)) {
+    if (ground.clearance(i, state.x[i]) < 0.0 && !model.pinned(i)) {
       const Mat3 k = ground.node_stiffness[i] * normal_outer;
       sink.add(&i, 1, k.data());
     }

@@ -2,17 +2,27 @@
 // Impact on a rigid ground: a half-space behind a plane (point p, outward unit normal n).
 //
 // Normal: a node at signed distance d = (x − p)·n < 0 is pushed out by the penalty k (−d) and
-// damped by −c (v·n); the sum is clipped at zero, so the ground only ever pushes. Because the
+// damped by −c v_n·n; the sum is clipped at zero, so the ground only ever pushes. Because the
 // ground is a half-space, not a sheet, a node can never pass through it however fast it hits:
 // it is pushed back for as long as it is below.
 //
+// The damper is where central differences lose the spring–dashpot's restitution: it switches on
+// at full strength the instant a node crosses the plane, and it would act on v_{n−½}, half a step
+// late. So it acts on the velocity at t_n, v_n = v_{n−½} + Δt/2m (F_other + F_ground) with every
+// other force on the node and its own push solved for (implicit in itself, for one node:
+// N = (k(−d) − c v*)/(1 + cΔt/2m), v* the velocity at t_n without the ground); and in the step a
+// node first touches, c is scaled by (τ + Δt/2)/Δt, τ = −d / (−v·n) the time since it crossed,
+// the damper's share of that step. The rebound then keeps the closed form's restitution to 2 %
+// at the automatic stiffness (contact_builder.cpp), and at rest v_n = 0 exactly.
+//
 // Tangential: Coulomb friction regularised by a stick spring. On touching, a node is anchored
 // where it meets the plane; the trial force −k (x_t − anchor) − c v_t (the same k and c as the
-// normal direction, so a block landing on a slope loads both in proportion) holds it while
-// |F_t| ≤ μs N
+// normal direction, v_t at n − ½) holds it while |F_t| ≤ μs N
 // (sticking: it moves only by the spring's elastic give, |F_t|/k). Beyond that it slides, with
 // the force μk N against the trial direction and the anchor dragged along, until the trial
-// force falls back to μk N. With `stick` it never slides (the paper's falling ball).
+// force falls back to μk N. A node that touches without pressing (N = 0, lifting off) holds
+// nothing and is not marked sliding: pressed again, it sticks up to μs N. With `stick` it never
+// slides (the paper's falling ball).
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -34,11 +44,14 @@ struct ContactForces {
   double energy = 0.0;  // J, ½ k d²
 };
 
-// One node below the plane. `anchor` and `sliding` are its history from the last step.
+// One node below the plane. `anchor` and `sliding` are its history from the last step;
+// `damping` is its damper's c (scaled for a first touch), `normal_speed` v*·n (the velocity at
+// t_n without the ground, along n) and `implicit` 1 / (1 + cΔt/2m).
 // Selects rather than branches, and dot3 rather than Eigen's dot, so that the loop over the nodes
 // vectorises (ground_contact.cpp).
 [[gnu::always_inline]] inline ContactForces ground_contact(const GroundContact& ground,
                                                            double stiffness, double damping,
+                                                           double normal_speed, double implicit,
                                                            const Vec3& x, const Vec3& v,
                                                            const Vec3& anchor, bool sliding) {
   ContactForces result;
@@ -46,7 +59,7 @@ struct ContactForces {
   const double distance = dot3(x - ground.point, n);
   const double penetration = -distance;
   const double elastic = stiffness * penetration;
-  const double normal_force = std::max(0.0, elastic - damping * dot3(v, n));
+  const double normal_force = std::max(0.0, (elastic - damping * normal_speed) * implicit);
   result.normal_elastic = elastic * n;
   result.normal_damping = (normal_force - elastic) * n;
   result.energy = 0.5 * elastic * penetration;
@@ -68,13 +81,14 @@ struct ContactForces {
     result.friction[c] = sticks ? trial[c] : slide[c];
     result.anchor[c] = sticks ? anchor[c] : dragged[c];
   }
-  result.sliding = !sticks;
+  result.sliding = !sticks && normal_force > 0.0;
   return result;
 }
 
 // Adds the contact forces of every free node below the plane to context.force, on the context
 // worker's own nodes (parallel_loops.hpp): the elastic push, the normal damping and the friction,
-// in that order. While the energy is tracked the
+// in that order, after every other force of the team's (their sum sets v*). While the energy is
+// tracked the
 // damping and the friction also go to their ledgers (both given or both null).
 void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger = nullptr,
                                std::vector<Vec3>* friction_ledger = nullptr);

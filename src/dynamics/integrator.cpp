@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
@@ -124,7 +125,7 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
     compute_wind_drag(wind);
   }
   // 2. Node by node: the total starts at zero, then gravity, the scene's fields at t_n, the
-  //    wind's drag, global viscous friction and the ground.
+  //    wind's drag and global viscous friction.
   for_each_own_node(worker, model.node_count(), [&](Index i) {
     state.force[i].setZero();
     if (ledger.enabled) {
@@ -146,10 +147,6 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
   if (switches.global_damping) {
     add_global_damping_forces(damping, options.global_damping.value_or(model.global_damping));
   }
-  if (switches.ground) {
-    add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
-                              ledger.enabled ? &ledger.friction : nullptr);
-  }
   // 3. The springs, kind by kind (spring_kinds.hpp) in spring order, then the bars' dampers.
   for (const SpringKind* kind : kSpringKinds) {
     if (switches.*kind->switched) {
@@ -159,9 +156,15 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
   if (switches.axial_dampers) {
     add_axial_damper_forces(damping);
   }
+  // 4. The ground, last: its damper acts on the velocity at t_n that every other force on the
+  //    node brings about (ground_contact.hpp), so the rest of the node's total must be in.
+  if (switches.ground) {
+    add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
+                              ledger.enabled ? &ledger.friction : nullptr);
+  }
 }
 
-// 4. Contact between objects and within one, after the team's forces: its search shares its
+// 5. Contact between objects and within one, after the team's forces: its search shares its
 //    loops with the team by itself, then the pairs' forces are added on the calling thread.
 void add_contact_forces(const Model& model, const ForceSwitches& switches, State& state,
                         bool update_history) {
@@ -274,7 +277,9 @@ void compute_static_forces(const Model& model, const ForceSwitches& switches, St
   for (Vec3& v : state.v_half) {
     v.setZero();
   }
+  const double dt = std::exchange(state.dt, 0.0);
   compute_forces(model, switches, state, false);
+  state.dt = dt;
 }
 
 State make_state(const Model& model, bool track_energy) {
@@ -316,7 +321,7 @@ State make_state(const Model& model, bool track_energy) {
 }
 
 void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches, State& state) {
-  state.object_contact.dt = dt;
+  state.dt = dt;
   compute_forces(model, switches, state, false);
   if (state.energy_workspace.enabled) {  // after the forces: contact between objects finds its
                                          // pairs there
@@ -367,7 +372,7 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
   if (switches.object_contact && model.contact.enabled) {
     // Contact between objects searches for its pairs between two jobs of the team.
     for (std::int64_t s = 0; s < steps && !diverged.load(std::memory_order_relaxed); ++s) {
-      state.object_contact.dt = dt;
+      state.dt = dt;
       thread_team().run(
           [&](const TeamMember& member) {
             if (model.can_tear()) {

@@ -49,6 +49,7 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
   }
   State& state = context.state;
   ObjectContactWorkspace& work = state.object_contact;
+  const double dt = state.dt;
   find_touching_pairs(model, state);
 
   work.energy = 0.0;
@@ -59,16 +60,23 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     }
     const bool touched_before =
         previous != work.previous.end() && previous->features == point.features;
-    // The damper acts on the mass the contact point moves, m = 1 / Σ w_j²/m_j.
+    // The damper acts on the mass the contact point moves, m = 1 / Σ w_j²/m_j, and on the relative
+    // velocity at t_n: v_{n−½} plus what the forces added so far on its nodes bring about by then
+    // (the team's, and the pairs' before it), its own push solved for, as at the ground
+    // (ground_contact.hpp); and in the step a pair first touches, only for its share of that step.
     double inverse_moved = 0.0;
     Vec3 relative_velocity = Vec3::Zero();
+    Vec3 predicted_velocity = Vec3::Zero();
     for (int j = 0; j < 4; ++j) {
-      const double inverse_mass = model.node_inv_mass[point.nodes[j]];
+      const Index node = point.nodes[j];
+      const double inverse_mass = model.node_inv_mass[node];
       inverse_moved += point.weights[j] * point.weights[j] * inverse_mass;
-      relative_velocity += point.weights[j] * state.v_half[point.nodes[j]];
+      relative_velocity += point.weights[j] * state.v_half[node];
+      predicted_velocity += point.weights[j] * (0.5 * dt * inverse_mass) * context.force[node];
     }
+    predicted_velocity += relative_velocity;
     const double k = pair_stiffness(model, point);
-    const double c =
+    double c =
         inverse_moved > 0.0 ? 2.0 * contact.damping_ratio * std::sqrt(k / inverse_moved) : 0.0;
 
     const double distance = point.separation.norm();
@@ -76,8 +84,13 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     const Vec3 normal = distance > 1e-12 * reach ? Vec3(point.separation / distance)
                                                  : fallback_normal(point, state.x);
     const double penetration = reach - distance;
+    const double approach = -relative_velocity.dot(normal);
+    if (!touched_before && dt > 0.0 && penetration < approach * dt) {
+      c *= (penetration / approach + 0.5 * dt) / dt;
+    }
     const double elastic = k * penetration;
-    const double normal_force = std::max(0.0, elastic - c * relative_velocity.dot(normal));
+    const double normal_force = std::max(
+        0.0, (elastic - c * predicted_velocity.dot(normal)) / (1.0 + 0.5 * dt * c * inverse_moved));
     point.energy = 0.5 * elastic * penetration;
     work.energy += point.energy;
 
@@ -85,7 +98,7 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     // touched, kept in the current tangent plane.
     const Vec3 tangential_velocity = relative_velocity - relative_velocity.dot(normal) * normal;
     Vec3 slip = touched_before ? previous->slip : Vec3::Zero();
-    slip += work.dt * tangential_velocity;
+    slip += dt * tangential_velocity;
     slip -= slip.dot(normal) * normal;
     const Vec3 trial = -k * slip - c * tangential_velocity;
     const double trial_norm = trial.norm();

@@ -34,7 +34,7 @@ namespace dinam {
 
 // Adds the contact forces between objects and within them to context.force; while the energy
 // is tracked, the normal damping and the friction also go to their ledgers (both or neither).
-// The friction's stick springs stretch by the relative velocity times state.object_contact.dt.
+// The friction's stick springs stretch by the relative velocity times state.dt.
 void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger = nullptr,
                                std::vector<Vec3>* friction_ledger = nullptr);
 

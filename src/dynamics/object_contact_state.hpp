@@ -62,7 +62,6 @@ struct ObjectContactWorkspace {
   ContactGrid bar_grid;
   ContactGrid triangle_grid;
   double energy = 0.0;  // J, Σ ½ k δ² over `touching`
-  double dt = 0.0;      // s, the step the integrator takes (set by it)
 };
 
 }  // namespace dinam

@@ -100,8 +100,11 @@ struct PlasticSetUpdate {
 
 // Leapfrog state at step n: positions at whole steps, velocities at half steps.
 struct State {
-  double time = 0.0;         // s, t_n
-  std::int64_t step = 0;     // n
+  double time = 0.0;      // s, t_n
+  std::int64_t step = 0;  // n
+  // s, the step being taken (set by the integrator); 0 while forces are found at rest
+  // (compute_static_forces), where the contact dampers then act on the velocities alone.
+  double dt = 0.0;
   std::vector<Vec3> x;       // (n_nodes) m, x_n
   std::vector<Vec3> v_half;  // (n_nodes) m/s, v_{n−½}
   std::vector<Vec3> force;   // (n_nodes) N, scratch: the total force at t_n on each node

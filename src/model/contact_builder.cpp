@@ -18,6 +18,11 @@ namespace {
 // `timestep: auto` would make the run last days without a word.
 constexpr double kStiffestPenaltyFrequencyRatio = 100.0;
 
+// The automatic contact frequencies, as shares of the structure's highest: of the ground, and of
+// contact between objects (stiffer, for its speed envelope: object_contact.hpp).
+constexpr double kGroundContactFrequency = 0.125;
+constexpr double kObjectContactFrequency = 0.5;
+
 // `inv_mass` is what the penalty's oscillation sees on the lightest contact: 1/m against the
 // ground, 1/m + 1/m for two nodes pressed together (ω² = k · inv_mass). `structure` is the
 // structure's highest ω² bound.
@@ -76,6 +81,30 @@ void refuse_start_below_ground(const SceneDescription& scene, const Model& model
                    object.name, depth, deepest - object.first_node);
 }
 
+// A bar's contact radius: its object's, else its wire radius.
+double bar_contact_radius(const SceneDescription& scene, const Model& model, Index bar) {
+  const Index object = model.node_object[model.bar_nodes[2 * bar]];
+  return scene.objects[object].contact.radius.value_or(model.bar_radius[bar]);
+}
+
+// Where each node meets the ground: at its contact radius, the largest of its bars', but never
+// below where it starts. A node modelled nearer the plane than its radius (a cloth laid on z = 0)
+// meets it where it lies, instead of being thrown off by a penalty it was placed inside of.
+std::vector<double> ground_contact_radius(const SceneDescription& scene, const Model& model) {
+  const GroundContact& ground = model.ground;
+  std::vector<double> radius(model.node_count(), 0.0);
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    for (const Index n : {model.bar_nodes[2 * b], model.bar_nodes[2 * b + 1]}) {
+      radius[n] = std::max(radius[n], bar_contact_radius(scene, model, b));
+    }
+  }
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const double height = (model.node_initial_x[i] - ground.point).dot(ground.normal);
+    radius[i] = std::clamp(height, 0.0, radius[i]);
+  }
+  return radius;
+}
+
 double largest_inv_mass(const Model& model, std::span<const Index> nodes) {
   double largest = 0.0;
   for (const Index i : nodes) {
@@ -99,9 +128,11 @@ void add_ground_contact(const SceneDescription& scene, Model& model) {
     return;
   }
   refuse_start_below_ground(scene, model);
-  // Auto: every node gets the same contact frequency ω_c = ½ ω_max of the structure, so the
-  // ground stiffens the model's highest frequency by about 12 % and penetration at impact speed
-  // v stays near v / ω_c.
+  ground.node_radius = ground_contact_radius(scene, model);
+  // Auto: every node gets the same contact frequency ω_c = ω_max / 8 of the structure: at the
+  // automatic step (ω_max Δt ≤ 1.6) ω_c Δt ≤ 0.2, an impact lasts some 16 steps, and the rebound
+  // keeps the spring–dashpot's restitution to 2 % (ground_contact.hpp). The ground then costs
+  // the step about 1 %, and an impact at speed v penetrates about v / ω_c.
   const double structure = max_frequency_squared_bound(model, false);
   if (desc.stiffness) {
     const double lightest_inv_mass =
@@ -109,7 +140,8 @@ void add_ground_contact(const SceneDescription& scene, Model& model) {
     check_penalty_stiffness(desc.stiffness_loc, "ground", *desc.stiffness, lightest_inv_mass,
                             structure);
   }
-  const double contact_omega_squared = structure > 0.0 ? 0.25 * structure : 1e4;
+  const double contact_omega_squared =
+      structure > 0.0 ? kGroundContactFrequency * kGroundContactFrequency * structure : 1e4;
   ground.node_stiffness.resize(model.node_count());
   ground.node_damping.resize(model.node_count());
   for (Index i = 0; i < model.node_count(); ++i) {
@@ -155,7 +187,7 @@ void add_object_contact(const SceneDescription& scene, Model& model) {
     if (!takes_part(object)) {
       continue;
     }
-    const double radius = scene.objects[object].contact.radius.value_or(model.bar_radius[b]);
+    const double radius = bar_contact_radius(scene, model, b);
     contact.bars.push_back(b);
     contact.bar_radius[b] = radius;
     for (const Index n : {n0, model.bar_nodes[2 * b + 1]}) {
@@ -217,7 +249,8 @@ void add_object_contact(const SceneDescription& scene, Model& model) {
     check_penalty_stiffness(desc.stiffness_loc, "contact", contact.stiffness,
                             2.0 * largest_inv_mass(model, contact.points), structure);
   } else {
-    contact.omega_squared = structure > 0.0 ? 0.25 * structure : 1e4;
+    contact.omega_squared =
+        structure > 0.0 ? kObjectContactFrequency * kObjectContactFrequency * structure : 1e4;
   }
   contact.damping_ratio = desc.damping_ratio;
   contact.static_friction = desc.static_friction;

@@ -67,9 +67,17 @@ struct GroundContact {
   Vec3 normal = kWorldUp;
   std::vector<double> node_stiffness;  // (n_nodes) N/m, normal and tangential (stick) penalty
   std::vector<double> node_damping;    // (n_nodes) N·s/m, normal direction only
-  double static_friction = 0.5;        // μs
-  double kinetic_friction = 0.4;       // μk
-  bool stick = false;                  // never slide
+  // (n_nodes) m: where each node meets the plane, its contact radius (the largest of its bars',
+  // as in contact between objects), so that a wire rests on the ground, not half in it.
+  std::vector<double> node_radius;
+  double static_friction = 0.5;   // μs
+  double kinetic_friction = 0.4;  // μk
+  bool stick = false;             // never slide
+
+  // m, the height of node i's lowest point (x − r n) above the plane: < 0 when it touches.
+  double clearance(Index i, const Vec3& x) const {
+    return (x - point).dot(normal) - node_radius[i];
+  }
 };
 
 // Contact between objects and within one, as the dynamics sees it (dynamics/object_contact.hpp):

@@ -73,6 +73,7 @@ void for_each_model_array(ModelType& model, Visit&& visit) {
 
   visit(std::string_view("ground.node_stiffness"), model.ground.node_stiffness);
   visit(std::string_view("ground.node_damping"), model.ground.node_damping);
+  visit(std::string_view("ground.node_radius"), model.ground.node_radius);
 
   visit(std::string_view("contact.object_between"), model.contact.object_between);
   visit(std::string_view("contact.object_self"), model.contact.object_self);

@@ -258,7 +258,7 @@ struct GroundDesc {
   bool visible = true;
   bool checker = true;  // a checkerboard, or plain
   bool contact = true;
-  // Penalty stiffness per node: empty for auto (a contact frequency half the model's highest).
+  // Penalty stiffness per node: empty for auto (a contact frequency an eighth of the model's highest).
   std::optional<double> stiffness;  // N/m
   FileLoc stiffness_loc;            // where `stiffness` was given as a number
   double damping_ratio = 0.3;       // of the contact oscillation; normal direction only

@@ -65,7 +65,7 @@ bool on_sloping_ground(const Model& model, const State& at) {
     return false;
   }
   for (Index i = 0; i < model.node_count(); ++i) {
-    if (!model.pinned(i) && (at.x[i] - model.ground.point).dot(model.ground.normal) < 0.0) {
+    if (!model.pinned(i) && model.ground.clearance(i, at.x[i]) < 0.0) {
       return true;
     }
   }

@@ -174,9 +174,9 @@ TEST(GroundContact, NormalForceIsMinusTheGradientOfThePenaltyEnergy) {
   const double k = 400.0;
   const std::vector<Vec3> x = {Vec3(0.3, 0.1, 0.1)};  // below the plane
   ASSERT_LT((x[0] - ground.point).dot(ground.normal), 0.0);
-  const ContactForces f = ground_contact(ground, k, 0.0, x[0], Vec3::Zero(), x[0], false);
+  const ContactForces f = ground_contact(ground, k, 0.0, 0.0, 1.0, x[0], Vec3::Zero(), x[0], false);
   expect_force_is_minus_gradient(x, {f.normal_elastic}, [&](const auto& y) {
-    return ground_contact(ground, k, 0.0, y[0], Vec3::Zero(), y[0], false).energy;
+    return ground_contact(ground, k, 0.0, 0.0, 1.0, y[0], Vec3::Zero(), y[0], false).energy;
   });
 }
 
@@ -184,10 +184,33 @@ TEST(GroundContact, OnlyEverPushes) {
   GroundContact ground;
   ground.enabled = true;
   // Barely below the plane but leaving it fast: the damper would pull; the clip stops that.
-  const ContactForces f =
-      ground_contact(ground, 1e4, 50.0, Vec3(0, 0, -1e-4), Vec3(0, 0, 10.0), Vec3::Zero(), false);
+  const ContactForces f = ground_contact(ground, 1e4, 50.0, 10.0, 1.0, Vec3(0, 0, -1e-4),
+                                         Vec3(0, 0, 10.0), Vec3::Zero(), false);
   EXPECT_GE((f.normal_elastic + f.normal_damping).dot(ground.normal), 0.0);
   EXPECT_NEAR((f.normal_elastic + f.normal_damping).norm(), 0.0, 1e-12);
+}
+
+// A node lifting off (N = 0) with a tangential velocity holds nothing, but is not sliding: when
+// it presses again, static friction holds it up to μs N, not μk N.
+TEST(GroundContact, LiftingOffLeavesStaticFrictionForTheNextTouch) {
+  GroundContact ground;
+  ground.enabled = true;
+  ground.static_friction = 0.5;
+  ground.kinetic_friction = 0.2;
+  const double k = 1e4;
+  const Vec3 below(0, 0, -1e-4);
+  const ContactForces lifting =
+      ground_contact(ground, k, 50.0, 10.0, 1.0, below, Vec3(1, 0, 10), Vec3::Zero(), false);
+  EXPECT_EQ(lifting.normal_elastic.z() + lifting.normal_damping.z(), 0.0);
+  EXPECT_EQ(lifting.friction.norm(), 0.0);
+  EXPECT_FALSE(lifting.sliding);
+  // Pressed at rest: N = k·1e-4 = 1 N, and the stick spring's pull 0.3 N lies between μk N and
+  // μs N, so it sticks.
+  const Vec3 anchor(0.3 / k, 0, 0);
+  const ContactForces pressed =
+      ground_contact(ground, k, 0.0, 0.0, 1.0, below, Vec3::Zero(), anchor, lifting.sliding);
+  EXPECT_FALSE(pressed.sliding);
+  EXPECT_NEAR(pressed.friction.x(), 0.3, 1e-12);
 }
 
 // Straight bars: the angle is π, the direction of bending is undefined. The force must stay

@@ -13,6 +13,7 @@
 #include "dynamics/contact_geometry.hpp"
 #include "dynamics/contact_grid.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/restitution.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "solver/initial_state.hpp"
@@ -170,11 +171,11 @@ TEST(ObjectContact, ForcesConserveMomentum) {
   const std::string objects = R"(  - name: a
     mesh: {polyline: {points: [[-0.3, 0.05, 0], [0.3, -0.05, 0]], segments: 3}}
     material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.01}
-    initial_velocity: [0.2, 0.5, -1]
+    initial_velocity: [0.2, 0.5, 1]
   - name: b
     mesh: {polyline: {points: [[0.02, -0.3, 0.012], [-0.02, 0.3, 0.015]], segments: 4}}
     material: {density: 3000, youngs_modulus: 1.0e7, radius: 0.008}
-    initial_velocity: [0, -0.4, 1]
+    initial_velocity: [0, -0.4, -1]
 )";
   const Model model = contact_scene(objects, "{objects: true, damping_ratio: 0.4}");
   ForceSwitches only_contact;
@@ -345,35 +346,40 @@ TEST(ObjectContact, ElasticCollisionKeepsTheEnergy) {
   EXPECT_GT(momentum, 0.0);  // and it bounced
 }
 
-// The restitution of a mass on a spring and a damper of ratio ζ whose force is clipped at zero
-// (it only pushes): the contact ends when k x + c ẋ = 0, at ω_d t = π − atan(2ζ√(1−ζ²) / (1 −
-// 2ζ²)), so e = exp(−ζ ω t) |cos ω_d t − ζ/√(1−ζ²) sin ω_d t|.
-double restitution_of(double zeta) {
-  const double root = std::sqrt(1.0 - zeta * zeta);
-  const double phase = std::numbers::pi - std::atan(2.0 * zeta * root / (1.0 - 2.0 * zeta * zeta));
-  return std::exp(-zeta * phase / root) * std::abs(std::cos(phase) - zeta / root * std::sin(phase));
-}
-
 // A stiff bar dropped across a pinned wire at its middle rebounds with the restitution of the
-// contact's spring and damper.
+// contact's spring and damper to 2 %, whatever the instant within a step it touches (drops from
+// eight heights an eighth of a step's travel apart), once the step resolves the contact in some
+// 20 steps (ω_c Δt ≈ 0.16), a quarter of the automatic step. (At the automatic step, ω_c Δt ≈
+// 0.65, kept for the speed envelope, the rebound is up to 4, 7 and 13 % livelier at ζ = 0.1, 0.3,
+// 0.5: docs/scene-format.md.)
 TEST(ObjectContact, ReboundHasTheRestitutionOfTheDampingRatio) {
   for (const double zeta : {0.1, 0.3, 0.5}) {
     // Across the fixed wire between two of its nodes, so that one pair touches.
     const Model model =
         contact_scene(wire_at_wire(0.0, Vec3(0, 0.05, 0.011), Vec3(0, 0, -1), 1, 0.2),
                       fmt::format("{{objects: true, damping_ratio: {}}}", zeta));
-    const double dt = 0.2 * kAutoTimestepSafety * critical_timestep(model);
-    State state = initial_state(model, dt);
-    while (state.time < 0.05) {
-      step(model, dt, {}, state);
-    }
+    const double dt = 0.25 * kAutoTimestepSafety * critical_timestep(model);
     const ModelObject& bar = model.objects[1];
-    const double rebound =
-        0.5 * (state.v_half[bar.first_node].z() + state.v_half[bar.first_node + 1].z());
-    const double expected = restitution_of(zeta);
-    EXPECT_NEAR(rebound / 1.0, expected, 0.02 * expected) << zeta;
-    std::printf("damping ratio %.1f: restitution %.4f, closed form %.4f\n", zeta, rebound,
-                expected);
+    const double expected = test::restitution_of(zeta);
+    double lowest = 1.0;
+    double highest = 0.0;
+    for (int drop = 0; drop < 8; ++drop) {
+      State state = initial_state(model, dt);
+      for (Index i = bar.first_node; i < bar.first_node + bar.node_count; ++i) {
+        state.x[i].z() += dt * drop / 8.0;
+      }
+      while (state.time < 0.05) {
+        step(model, dt, {}, state);
+      }
+      const double rebound =
+          0.5 * (state.v_half[bar.first_node].z() + state.v_half[bar.first_node + 1].z());
+      lowest = std::min(lowest, rebound);
+      highest = std::max(highest, rebound);
+    }
+    std::printf("damping ratio %.1f: restitution %.4f to %.4f, closed form %.4f\n", zeta, lowest,
+                highest, expected);
+    EXPECT_NEAR(lowest, expected, 0.02 * expected) << zeta;
+    EXPECT_NEAR(highest, expected, 0.02 * expected) << zeta;
   }
 }
 
@@ -452,7 +458,7 @@ TEST(ObjectContact, RodDroppedOnATautNetReboundsWithTheRestitutionOfItsDampingRa
     const double rod_mass = model.node_mass[rod.first_node] + model.node_mass[rod.first_node + 1];
     const double rebound =
         0.5 * (state.v_half[rod.first_node].z() + state.v_half[rod.first_node + 1].z()) / 0.3;
-    const double expected = restitution_of(zeta * std::sqrt(moved_mass / rod_mass));
+    const double expected = test::restitution_of(zeta * std::sqrt(moved_mass / rod_mass));
     std::printf(
         "taut net, damping ratio %.1f: restitution %.4f, closed form %.4f (ratio for the "
         "rod %.3f); the net dips %.3g m, the rod %.3g m\n",

@@ -273,8 +273,8 @@ objects:
 }
 
 TEST(Threads, SelfContactIsTheSameForAnyThreadCount) {
-  const State one = run_two_sheets(1, 25);
-  const State two = run_two_sheets(2, 25);
+  const State one = run_two_sheets(1, 15);
+  const State two = run_two_sheets(2, 15);
   // The sheets did touch, hard: the contacts' dampers took energy.
   EXPECT_LT(one.energy.contact_damping_work, -1e-3 * one.energy_workspace.last.kinetic);
   EXPECT_FALSE(one.object_contact.candidates.empty());  // compared below with the rest
