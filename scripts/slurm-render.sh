@@ -11,8 +11,11 @@
 #                           [--size WxH] [--movie mp4|gif] [--dinam PATH] [--time T]
 #                           [--sbatch-arg ARG]... [--wait]
 #
-# It prints the three job ids and where the movie will be. --wait blocks until the movie job ends
-# and exits with its status (for scripts and tests).
+# The options are checked before anything is queued. It prints the three job ids and where the
+# movie will be. Each job's log (slurm-logs/ beside the frames) says what it did, with which
+# frames, and how it ended, even though dinam runs there with --quiet. --wait blocks until every
+# job has ended, prints each job's (each render task's) final state, and exits 0 only if all of
+# them completed, 1 otherwise (a failed chunk cancels the movie: both are named).
 set -euo pipefail
 
 usage() {
@@ -57,6 +60,19 @@ done
 [ -n "$scene" ] || usage
 [ -f "$scene" ] || fail "no scene file '$scene'"
 [[ "$chunk" =~ ^[1-9][0-9]*$ ]] || fail "--chunk takes a positive number of frames, got '$chunk'"
+# The size as dinam takes it (src/app/frame_range.cpp), checked here so that a bad one fails now
+# rather than in every render task once the simulation has run.
+if [ -n "$size" ]; then
+  [[ "$size" =~ ^([0-9]+)x([0-9]+)$ ]] && (( 10#${BASH_REMATCH[1]} >= 16 && 10#${BASH_REMATCH[1]} <= 8192 &&
+    10#${BASH_REMATCH[2]} >= 16 && 10#${BASH_REMATCH[2]} <= 8192 )) ||
+    fail "--size takes WIDTHxHEIGHT in pixels, each from 16 to 8192 (e.g. 1280x720), got '$size'"
+fi
+case "$movie" in
+  ""|mp4|gif|none) ;;
+  *) fail "--movie takes mp4, gif or none, got '$movie'" ;;
+esac
+[ -z "$time_limit" ] || [[ "$time_limit" =~ ^([0-9:-]+|UNLIMITED|unlimited|INFINITE|infinite)$ ]] ||
+  fail "--time takes a Slurm time limit (minutes, MM:SS, HH:MM:SS or D-HH:MM:SS), got '$time_limit'"
 command -v sbatch >/dev/null || fail "sbatch was not found: run this on a Slurm login node"
 
 if [ -z "$dinam" ]; then
@@ -99,21 +115,60 @@ render_command=$(printf '%q ' "$dinam" render "$scene" --cache "$cache" -o "$out
   "${render_options[@]}")
 movie_command=$(printf '%q ' "$dinam" movie "$output" "${movie_options[@]}")
 
+# A job's script: a line saying what it does and where, the command, and a line saying how it
+# ended and how long it took, so that its log says something though dinam is quiet. LABEL may
+# hold shell expansions for the job's shell (the chunk's frames).
+logged() {  # LABEL COMMAND
+  printf 'echo "%s: started on $(hostname) at $(date -u +%%FT%%TZ)"; start=$SECONDS; %s; ' "$1" "$2"
+  printf 'status=$?; echo "%s: ended with status $status after $(( SECONDS - start )) s"; ' "$1"
+  printf 'exit $status'
+}
+
 simulate_job=$(sbatch "${common[@]}" --job-name "dinam-simulate-$name" \
-  --output "$logs/simulate-%j.log" --wrap "exec $simulate_command")
+  --output "$logs/simulate-%j.log" \
+  --wrap "$(logged "simulate $name into $cache" "$simulate_command")")
 render_job=$(sbatch "${common[@]}" --job-name "dinam-render-$name" \
   --dependency "afterok:$simulate_job" --kill-on-invalid-dep=yes --array "0-$((chunks - 1))" \
   --output "$logs/render-%A_%a.log" \
   --wrap "first=\$(( SLURM_ARRAY_TASK_ID * $chunk + 1 )); last=\$(( first + $chunk - 1 )); \
-if [ \$last -gt $frames ]; then last=$frames; fi; exec $render_command --frames \$first-\$last")
-wait_option=()
-! $wait_for_movie || wait_option=(--wait)
+if [ \$last -gt $frames ]; then last=$frames; fi; \
+$(logged "render chunk \$SLURM_ARRAY_TASK_ID of $chunks, frames \$first-\$last of $frames" \
+  "$render_command --frames \$first-\$last")")
 echo "slurm-render: simulate job $simulate_job; render array $render_job ($chunks tasks of up to \
 $chunk frames, $frames in all); movie job follows"
-movie_job=$(sbatch "${common[@]}" "${wait_option[@]}" --job-name "dinam-movie-$name" \
+movie_job=$(sbatch "${common[@]}" --job-name "dinam-movie-$name" \
   --dependency "afterok:${render_job%%;*}" --kill-on-invalid-dep=yes \
-  --output "$logs/movie-%j.log" --wrap "exec $movie_command")
+  --output "$logs/movie-%j.log" --wrap "$(logged "movie of $name" "$movie_command")")
 extension=${movie:-$(json_value movie)}
 [ "$extension" != none ] || extension=mp4
 echo "slurm-render: movie job $movie_job; the movie will be $output/$name.$extension, beside the \
 frames; logs in $logs, the cache in $cache"
+$wait_for_movie || exit 0
+
+# --wait: until none of the jobs is queued or running, then each one's final state from the
+# controller (which keeps ended jobs for MinJobAge, 300 s by default; no accounting needed).
+jobs="${simulate_job%%;*},${render_job%%;*},${movie_job%%;*}"
+while [ -n "$(squeue -h -j "$jobs" -o %i 2>/dev/null)" ]; do
+  sleep 1
+done
+failed=0
+while read -r line; do
+  id=$(sed -n 's/^JobId=\([0-9]*\).*/\1/p' <<<"$line")
+  task=$(sed -n 's/.* ArrayTaskId=\([0-9]*\).*/\1/p' <<<"$line")
+  job_name=$(sed -n 's/.* JobName=\([^ ]*\).*/\1/p' <<<"$line")
+  state=$(sed -n 's/.* JobState=\([^ ]*\).*/\1/p' <<<"$line")
+  reason=$(sed -n 's/.* Reason=\([^ ]*\).*/\1/p' <<<"$line")
+  exit_code=$(sed -n 's/.* ExitCode=\([^ ]*\).*/\1/p' <<<"$line")
+  what="${job_name%-"$name"}${task:+ task $task} (job $id)"
+  if [ "$state" = COMPLETED ]; then
+    echo "slurm-render: $what: COMPLETED"
+  else
+    failed=1
+    echo "slurm-render: $what: $state, exit code $exit_code, reason $reason" >&2
+  fi
+done < <(for job in ${jobs//,/ }; do scontrol -o show job "$job"; done)
+if [ $failed -ne 0 ]; then
+  echo "slurm-render: the render did not complete; see the logs in $logs" >&2
+  exit 1
+fi
+echo "slurm-render: every job completed; the movie is $output/$name.$extension"

@@ -2,9 +2,11 @@
 # The Slurm render farm for real: brings up a one-node cluster on this machine (munged, slurmctld
 # and slurmd from Debian's munge and slurm-wlm, with a generated slurm.conf in a temporary folder),
 # runs scripts/slurm-render.sh on a small flag (tests/data/end_to_end_flag.yaml) in three chunks,
-# and checks that every frame is byte for byte the frame of one whole 'dinam render', and that the
-# movie has all 120 frames. The daemons are stopped and the folder removed at the end, whatever
-# happens.
+# and checks that every frame is byte for byte the frame of one whole 'dinam render', that the
+# movie has all 120 frames, and that each job's log says what it did and how it ended. Then the
+# failures: a bad --size is refused before anything is queued, and a farm whose render tasks fail
+# exits 1 naming the failed tasks and the cancelled movie. The daemons are stopped and the folder
+# removed at the end, whatever happens.
 #
 #   tests/farm/slurm_farm_test.sh DINAM SOURCE_DIR
 #
@@ -139,4 +141,38 @@ done
 count=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames \
   -of csv=p=0 "$work/farm/end_to_end_flag.mp4")
 [ "$count" = 120 ] || { echo "FAIL: the movie has $count frames, not 120"; exit 1; }
-echo "PASS: 120 frames from 3 Slurm tasks are byte-identical to one whole render; the movie has 120 frames"
+for log in "$work"/farm/slurm-logs/*.log; do
+  grep -q "ended with status 0 after" "$log" || { echo "FAIL: $log does not say how its job ended"; exit 1; }
+done
+grep -q "render chunk 2 of 3, frames 81-120 of 120: started on" "$work"/farm/slurm-logs/render-*_2.log ||
+  { echo "FAIL: the last chunk's log does not name its frames"; exit 1; }
+
+# A bad option is refused before anything is queued.
+if "$source_dir/scripts/slurm-render.sh" "$source_dir/tests/data/end_to_end_flag.yaml" \
+    --dinam "$dinam" --size 12x9000 --partition dinam --output "$work/bad" --wait 2>"$work/bad.err"; then
+  echo "FAIL: --size 12x9000 was accepted"; exit 1
+fi
+grep -q "size takes WIDTHxHEIGHT" "$work/bad.err" || { echo "FAIL: no message for the bad size"; cat "$work/bad.err"; exit 1; }
+[ -z "$(squeue -h -o %i)" ] && [ ! -d "$work/bad" ] || { echo "FAIL: a job was queued for a bad size"; exit 1; }
+
+# Render tasks that fail: the script exits 1 and names them, and the movie cancelled after them.
+cat >"$work/failing-dinam" <<WRAPPER
+#!/bin/sh
+if [ "\$1" = render ]; then echo "render refused for the test" >&2; exit 3; fi
+exec "$dinam" "\$@"
+WRAPPER
+chmod 755 "$work/failing-dinam"
+if "$source_dir/scripts/slurm-render.sh" "$source_dir/tests/data/end_to_end_flag.yaml" \
+    --dinam "$work/failing-dinam" --chunk 60 --size "$size" --partition dinam --output "$work/failed" \
+    --wait >"$work/failed.out" 2>&1; then
+  echo "FAIL: the farm whose render tasks failed exited 0"; cat "$work/failed.out"; exit 1
+fi
+cat "$work/failed.out"
+grep -q "dinam-render task 1 (job [0-9]*): FAILED, exit code 3:0" "$work/failed.out" &&
+  grep -q "dinam-movie (job [0-9]*): CANCELLED" "$work/failed.out" &&
+  grep -q "dinam-simulate (job [0-9]*): COMPLETED" "$work/failed.out" ||
+  { echo "FAIL: the failed farm's states are not named"; exit 1; }
+grep -q "render refused for the test" "$work"/failed/slurm-logs/render-*_1.log &&
+  grep -q "ended with status 3 after" "$work"/failed/slurm-logs/render-*_1.log ||
+  { echo "FAIL: the failed task's log does not say why and how it ended"; exit 1; }
+echo "PASS: 120 frames from 3 Slurm tasks are byte-identical to one whole render; the movie has 120 frames; every log says how its job ended; a bad size is refused before queueing; failed render tasks make the script exit 1 and are named"
