@@ -72,6 +72,13 @@ inline void expect_user_error(const std::function<void()>& action, int line,
   ADD_FAILURE() << "expected a UserError";
 }
 
+// Expects `text` (a warning, a printed line) to contain every one of `fragments`.
+inline void expect_contains(const std::string& text, std::initializer_list<std::string> fragments) {
+  for (const std::string& fragment : fragments) {
+    EXPECT_NE(text.find(fragment), std::string::npos) << "lacks '" << fragment << "': " << text;
+  }
+}
+
 // The names of everything directly in `folder`, sorted.
 inline std::vector<std::string> folder_entries(const std::filesystem::path& folder) {
   std::vector<std::string> names;

@@ -44,6 +44,9 @@ void refuse_contact_overlap_at_rest(const SceneDescription& scene, const Model& 
 
 Model build_model_telling_warnings(const SceneDescription& scene) {
   Model model = build_model(scene);
+  for (const std::string& warning : scene.warnings) {
+    fmt::print(stderr, "{}\n", warning);
+  }
   for (const std::string& warning : model.warnings) {
     fmt::print(stderr, "{}\n", warning);
   }

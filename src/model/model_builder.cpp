@@ -9,6 +9,7 @@
 #include "model/edge_collapse.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/mass_scaling.hpp"
+#include "model/plausibility.hpp"
 #include "model/mesh_cleaning.hpp"
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
@@ -419,6 +420,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   add_ground_contact(scene, model);
   add_object_contact(scene, model);
   note_yielding_kinds(model);
+  note_implausible_values(scene, model);
   release_spare_capacity(model);
   check_derived_quantities(model, scene);
   return model;

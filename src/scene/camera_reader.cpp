@@ -8,16 +8,27 @@
 namespace dinam {
 namespace {
 
-void require_fov(double fov, const FileLoc& loc, const std::string& what) {
+// A field of view under this many degrees is a telescope's, and most likely radians read as
+// degrees (0.785 for 45°): the frames would show a patch of ground. Allowed, with a warning.
+constexpr double kNarrowestPlausibleFov = 5.0;
+
+void require_fov(double fov, const FileLoc& loc, const std::string& what,
+                 std::vector<std::string>& warnings) {
   if (!(fov > 0.0 && fov < 180.0)) {
     throw_user_error(
         loc, "'{}' is the vertical field of view in degrees, between 0 and 180; got {}", what, fov);
+  }
+  if (fov < kNarrowestPlausibleFov) {
+    warnings.push_back(fmt::format(
+        "{}: warning: '{}' is {:g}°, a telescope's view; the field of view is in degrees (45, "
+        "not 0.785)",
+        loc.to_string(), what, fov));
   }
 }
 
 // `keys`: a list of {time, position, look_at, fov} at increasing times.
 std::vector<CameraKeyDesc> read_keys(const YAML::Node& node, const std::string& file,
-                                     double default_fov) {
+                                     double default_fov, std::vector<std::string>& warnings) {
   if (!node.IsSequence() || node.size() < 1) {
     throw_user_error(loc_of(node, file),
                      "'camera.keys' must be a list of keys, each {{time, position, look_at, fov}}");
@@ -32,7 +43,7 @@ std::vector<CameraKeyDesc> read_keys(const YAML::Node& node, const std::string& 
     key.look_at = map.required_vec3("look_at");
     key.fov_degrees = map.number("fov", keys.empty() ? default_fov : keys.back().fov_degrees);
     map.finish();
-    require_fov(key.fov_degrees, map.loc("fov"), map.path("fov"));
+    require_fov(key.fov_degrees, map.loc("fov"), map.path("fov"), warnings);
     if (!keys.empty() && !(key.time > keys.back().time)) {
       throw_user_error(map.loc("time"),
                        "'{}' is {} s, not after the previous key's {} s; list the keys in "
@@ -71,7 +82,8 @@ OrbitDesc read_orbit(YamlMap map) {
 
 }  // namespace
 
-CameraDesc read_camera(const YAML::Node& node, const std::string& file) {
+CameraDesc read_camera(const YAML::Node& node, const std::string& file,
+                       std::vector<std::string>& warnings) {
   CameraDesc camera;
   camera.loc = loc_of(node, file);
   if (node.IsScalar() && node.Scalar() == "auto") {
@@ -84,7 +96,7 @@ CameraDesc read_camera(const YAML::Node& node, const std::string& file) {
   camera.look_at = map.vec3("look_at", camera.look_at);
   camera.up = map.vec3("up", camera.up);
   camera.fov_degrees = map.number("fov", camera.fov_degrees);
-  require_fov(camera.fov_degrees, map.loc("fov"), "camera.fov");
+  require_fov(camera.fov_degrees, map.loc("fov"), "camera.fov", warnings);
   camera.follow = map.string("follow", "");
   const bool automatic = map.boolean("auto", false);
   const int movers = (camera.follow.empty() ? 0 : 1) + (map.has("keys") ? 1 : 0) +
@@ -99,7 +111,7 @@ CameraDesc read_camera(const YAML::Node& node, const std::string& file) {
       throw_user_error(map.loc(map.has("position") ? "position" : "look_at"),
                        "'camera': a path gives position and look_at in each of its keys");
     }
-    camera.keys = read_keys(map.get("keys"), file, camera.fov_degrees);
+    camera.keys = read_keys(map.get("keys"), file, camera.fov_degrees, warnings);
   } else if (map.has("orbit")) {
     camera.mode = CameraDesc::Mode::kOrbit;
     if (has_view) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "scene/scene_description.hpp"
 #include "scene/yaml_map.hpp"
@@ -49,8 +50,9 @@ void read_friction(YamlMap map, double& static_friction, double& kinetic_frictio
 ContactDesc read_contact(YamlMap map);
 ObjectContactDesc read_object_contact(YamlMap map);
 
-// The scene's `camera` (a map, or `auto`).
-CameraDesc read_camera(const YAML::Node& node, const std::string& file);
+// The scene's `camera` (a map, or `auto`); what is allowed but implausible goes to `warnings`.
+CameraDesc read_camera(const YAML::Node& node, const std::string& file,
+                       std::vector<std::string>& warnings);
 
 // The scene's `image` map: size, quality preset and the features it sets; into `scene`.
 void read_image(YamlMap map, SceneDescription& scene);

@@ -258,7 +258,8 @@ struct GroundDesc {
   bool visible = true;
   bool checker = true;  // a checkerboard, or plain
   bool contact = true;
-  // Penalty stiffness per node: empty for auto (a contact frequency an eighth of the model's highest).
+  // Penalty stiffness per node: empty for auto (a contact frequency an eighth of the model's
+  // highest).
   std::optional<double> stiffness;  // N/m
   FileLoc stiffness_loc;            // where `stiffness` was given as a number
   double damping_ratio = 0.3;       // of the contact oscillation; normal direction only
@@ -332,6 +333,9 @@ struct SceneDescription {
   std::vector<MotionSetting> motion_settings;  // what decides the motion, in file order
   int version = 1;
   std::string name;  // movie file name; default: the scene file's stem
+  // Values allowed but far outside what is plausible (unit slips), "file:line:col: warning: …",
+  // told before a run with the model's (app/command_support.cpp).
+  std::vector<std::string> warnings;
 
   double duration = 0.0;  // s
   FileLoc duration_loc;

@@ -329,7 +329,7 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     scene.contact = read_contact(YamlMap(map.get("contact"), file, "contact"));
   }
   if (map.has("camera")) {
-    scene.camera = read_camera(map.get("camera"), file);
+    scene.camera = read_camera(map.get("camera"), file, scene.warnings);
   }
   if (map.has("image")) {
     read_image(YamlMap(map.get("image"), file, "image"), scene);

@@ -278,8 +278,35 @@ TEST(ModelBuilder, DerivedQuantitiesBeyondDoublePrecisionAreRefused) {
   scene.objects[0].material.area = 3e-4;
   scene.objects[0].material.youngs_modulus = 1e308;
   scene.objects[0].material.area_moment = 1e300;
-  test::expect_user_error([&] { build_model(scene); }, 6,
-                          {"a stiffness of the model's bending springs is inf", "beyond double precision"});
+  test::expect_user_error(
+      [&] { build_model(scene); }, 6,
+      {"a stiffness of the model's bending springs is inf", "beyond double precision"});
+}
+
+// `radius: 1` where millimetres were meant: the cloth's wires are thicker than its bars are
+// long, and weigh tonnes. A warning names the material's line, the mass and the unit; the same
+// cloth at 1 mm gets none.
+TEST(ModelBuilder, AWireRadiusLargerThanItsBarsIsWarnedOf) {
+  const std::string scene = R"(version: 1
+duration: 1
+objects:
+  - name: cloth
+    mesh: {grid: {width: 1, height: 1, columns: 20, rows: 20}, translation: [0, 0, 1]}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: RADIUS}
+)";
+  auto with_radius = [&](const std::string& radius) {
+    std::string text = scene;
+    text.replace(text.find("RADIUS"), 6, radius);
+    return build_model(test::scene_from_yaml(text));
+  };
+  const Model slip = with_radius("1");
+  ASSERT_EQ(slip.warnings.size(), 1U);
+  test::expect_contains(slip.warnings[0],
+                        {":6:15: warning: object 'cloth'",
+                         "wire radius, 1 m, is larger than its bars", "'radius' is in metres"});
+  // 840 bars of 0.05 m and 400 diagonals of 0.07 m, each π·1²·L·1000 kg: 221 t.
+  EXPECT_GT(slip.total_mass(), 1e5);
+  EXPECT_TRUE(with_radius("0.001").warnings.empty());
 }
 
 }  // namespace

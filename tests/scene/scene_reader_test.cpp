@@ -543,5 +543,32 @@ TEST(SceneReader, LookMistakesAreErrorsAtTheirLine) {
       {"an orbit places the eye itself"});
 }
 
+// `fov: 0.785` (45° in radians) draws a patch of ground: allowed, with a warning at the key, for
+// the camera and for each key of a path; 30° gets none.
+TEST(SceneReader, AFieldOfViewUnderFiveDegreesIsWarnedOf) {
+  const SceneDescription fixed = test::scene_from_yaml(R"(version: 1
+duration: 1
+camera: {position: [3, 0, 1], look_at: [0, 0, 0], fov: 0.785}
+objects:
+  - mesh: {grid: {width: 1, height: 1, columns: 2, rows: 2}, translation: [0, 0, 1]}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.001}
+)");
+  ASSERT_EQ(fixed.warnings.size(), 1U);
+  test::expect_contains(fixed.warnings[0],
+                        {":3:56: warning: 'camera.fov' is 0.785°", "in degrees (45, not 0.785)"});
+  const SceneDescription path = test::scene_from_yaml(R"(version: 1
+duration: 1
+camera:
+  keys:
+    - {time: 0, position: [3, 0, 1], look_at: [0, 0, 0], fov: 30}
+    - {time: 1, position: [3, 1, 1], look_at: [0, 0, 0], fov: 0.5}
+objects:
+  - mesh: {grid: {width: 1, height: 1, columns: 2, rows: 2}, translation: [0, 0, 1]}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.001}
+)");
+  ASSERT_EQ(path.warnings.size(), 1U);
+  test::expect_contains(path.warnings[0], {"'camera.keys[1].fov' is 0.5°"});
+}
+
 }  // namespace
 }  // namespace dinam

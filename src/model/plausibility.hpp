@@ -1,0 +1,14 @@
+#pragma once
+// Values a scene may give but that are far outside what the object makes plausible, most likely
+// unit slips (millimetres given as metres): told as warnings at the key, the run goes on.
+#include "scene/scene_description.hpp"
+
+namespace dinam {
+
+struct Model;
+
+// Adds to model.warnings: an object whose wire radius is larger than its bars (the median bar),
+// with the mass that makes it.
+void note_implausible_values(const SceneDescription& scene, Model& model);
+
+}  // namespace dinam
