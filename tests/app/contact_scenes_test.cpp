@@ -19,6 +19,7 @@
 #include "scene/scene_description.hpp"
 #include "solver/initial_state.hpp"
 #include "test_support.hpp"
+#include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
 namespace {
@@ -385,6 +386,74 @@ TEST(ShippedScenes, RopeDroppedOnTheFloorCoilsIntoAHeapWithoutPassingThroughItse
               flat.crossed, flat.height, flat.spread, flat.on_top);
   EXPECT_GT(flat.crossed, 0);
   EXPECT_LT(flat.on_top, 0.02);
+}
+
+// No shipped scene shows one object's wire through another's at any frame: two drawn bars of
+// different objects whose axes come nearer than half the sum of their drawn radii, having
+// started farther apart (a wire tied to a post is modelled touching it, and stays so). Scenes
+// with fewer than two objects drawn with wires have nothing to check and are not simulated.
+TEST(ShippedScenes, NoSceneShowsAWireThroughAnotherObjectsWire) {
+  for (const std::filesystem::directory_entry& entry :
+       std::filesystem::directory_iterator(std::filesystem::path(DINAM_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".yaml") {
+      continue;
+    }
+    const SceneDescription scene = shipped(entry.path().stem().string());
+    const Model model = build_model(scene);
+    std::vector<Vec3f> at_rest(model.node_initial_x.size());
+    for (std::size_t i = 0; i < at_rest.size(); ++i) {
+      at_rest[i] = model.node_initial_x[i].cast<float>();
+    }
+    const DrawList start = make_draw_list(scene, model, motion_bounds({at_rest}));
+    std::vector<Index> wired_objects;
+    for (std::size_t s = 0; s < start.segment_radius.size(); ++s) {
+      wired_objects.push_back(model.node_object[start.segment_points[2 * s]]);
+    }
+    std::sort(wired_objects.begin(), wired_objects.end());
+    if (std::unique(wired_objects.begin(), wired_objects.end()) - wired_objects.begin() < 2) {
+      continue;
+    }
+    const SimulatedFrames frames = simulate_scene(scene, model);
+    // Pairs of segments of different objects, and whether each started apart.
+    const std::vector<Index>& points = start.segment_points;
+    const auto segments = static_cast<Index>(start.segment_radius.size());
+    auto gap = [&](const std::vector<Vec3f>& x, Index a, Index b) {
+      const Vec3 p0 = x[points[2 * a]].cast<double>();
+      const Vec3 p1 = x[points[2 * a + 1]].cast<double>();
+      const Vec3 q0 = x[points[2 * b]].cast<double>();
+      const Vec3 q1 = x[points[2 * b + 1]].cast<double>();
+      const SegmentPair c = closest_points_of_segments(p0, p1, q0, q1);
+      const double axes = (p0 + c.s * (p1 - p0) - q0 - c.t * (q1 - q0)).norm();
+      return axes - 0.5 * (std::abs(start.segment_radius[a]) + std::abs(start.segment_radius[b]));
+    };
+    std::vector<std::pair<Index, Index>> pairs;
+    for (Index a = 0; a < segments; ++a) {
+      for (Index b = a + 1; b < segments; ++b) {
+        if (model.node_object[points[2 * a]] != model.node_object[points[2 * b]] &&
+            gap(frames.positions.front(), a, b) > 0.0) {
+          pairs.emplace_back(a, b);
+        }
+      }
+    }
+    int through = 0;
+    for (const std::vector<Vec3f>& x : frames.positions) {
+      for (const auto& [a, b] : pairs) {
+        through += gap(x, a, b) < 0.0 ? 1 : 0;
+      }
+    }
+    std::printf("%s: %zu pairs of wires of different objects, %d pair-frames through\n",
+                scene.name.c_str(), pairs.size(), through);
+    if (scene.name == "flag") {
+      // The paper's flag has no contact, as in the paper: its ties and halyard, swinging about
+      // their knots on the pole, cut into it by up to 16 mm in 30 of its 55 781 pair-frames.
+      // Contact between the two keeps its settling from converging (relaxation, the cloth
+      // sliding on the pole: 0.44 of a node's weight out of balance after 60 s). Bounded here,
+      // at 0.1 %, until it has a way to settle with contact.
+      EXPECT_LE(through, static_cast<int>(1e-3 * pairs.size() * frames.positions.size()));
+    } else {
+      EXPECT_EQ(through, 0) << scene.name;
+    }
+  }
 }
 
 }  // namespace
