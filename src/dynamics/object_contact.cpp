@@ -21,6 +21,18 @@ Vec3 fallback_normal(const ContactPoint& point, const std::vector<Vec3>& x) {
   return normal.squaredNorm() > 0.0 ? normal.normalized() : kWorldUp;
 }
 
+// The side of its triangle's plane that a node–triangle pair's node was on a step before,
+// x − Δt v_{n−½} for each of the four nodes (the positions the step came from); +1 where it is
+// in the plane, or where no step has been taken.
+std::int8_t side_came_from(const ContactPoint& point, const State& state, double dt) {
+  std::array<Vec3, 4> before;
+  for (int j = 0; j < 4; ++j) {
+    before[j] = state.x[point.nodes[j]] - dt * state.v_half[point.nodes[j]];
+  }
+  const Vec3 face = (before[2] - before[1]).cross(before[3] - before[1]);
+  return (before[0] - before[1]).dot(face) < 0.0 ? std::int8_t{-1} : std::int8_t{1};
+}
+
 // The lightest free node on each side sets the pair's stiffness (see the header), or the scene
 // gives it.
 double pair_stiffness(const Model& model, const ContactPoint& point) {
@@ -81,9 +93,21 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
 
     const double distance = point.separation.norm();
     const double reach = contact_reach(contact, point.key);
-    const Vec3 normal = distance > 1e-12 * reach ? Vec3(point.separation / distance)
-                                                 : fallback_normal(point, state.x);
-    const double penetration = reach - distance;
+    Vec3 normal = distance > 1e-12 * reach ? Vec3(point.separation / distance)
+                                           : fallback_normal(point, state.x);
+    double penetration = reach - distance;
+    if ((point.key >> 63) != kBarBarContact) {
+      // A node against a triangle is pushed back to the side it came from, even where it has
+      // crossed the triangle's middle within a step (beyond the speed envelope), instead of on
+      // through: the side where it first touched, or, if it crossed in that very step, the side
+      // it was on a step before.
+      point.side = touched_before ? previous->side : side_came_from(point, state, dt);
+      const Vec3 face = fallback_normal(point, state.x);  // the triangle's unit normal
+      if (point.separation.dot(face) * point.side < 0.0) {
+        normal = point.side * face;
+        penetration = reach + distance;
+      }
+    }
     const double approach = -relative_velocity.dot(normal);
     if (!touched_before && dt > 0.0 && penetration < approach * dt) {
       c *= (penetration / approach + 0.5 * dt) / dt;

@@ -24,7 +24,8 @@
 // (contact_pairs.hpp finds them); contacts are summed in the order of their features, so the
 // motion does not depend on the thread count. Within the envelope
 // (relative speed × Δt below the smaller radius) no primitive passes through another; beyond it
-// a node can cross a shell's middle in one step, and is then pushed out on the far side.
+// a node can cross a shell's middle in one step, and is then pushed back to the side it came
+// from (ContactPoint::side), which holds as long as the penalty stops it within the shell.
 #include <vector>
 
 #include "dynamics/force_context.hpp"

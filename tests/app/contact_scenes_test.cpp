@@ -449,7 +449,8 @@ TEST(ShippedScenes, NoSceneShowsAWireThroughAnotherObjectsWire) {
       // Contact between the two keeps its settling from converging (relaxation, the cloth
       // sliding on the pole: 0.44 of a node's weight out of balance after 60 s). Bounded here,
       // at 0.1 %, until it has a way to settle with contact.
-      EXPECT_LE(through, static_cast<int>(1e-3 * pairs.size() * frames.positions.size()));
+      EXPECT_LE(through, static_cast<int>(
+                             1e-3 * static_cast<double>(pairs.size() * frames.positions.size())));
     } else {
       EXPECT_EQ(through, 0) << scene.name;
     }

@@ -231,6 +231,39 @@ TEST(ObjectContact, NodeThrownOntoAPinnedClothRestsAtTheThickness) {
   }
 }
 
+constexpr const char* kNoGravityNoGround = "gravity: [0, 0, 0]\nground: {contact: false}\n";
+
+// Beyond the speed envelope: a node that crosses a triangle's middle within one step (at
+// 1.1 × its reach a step, starting 1.05 reaches above it) is pushed back to the side it came
+// from, and bounces, instead of on through the cloth as the nearer side would have it.
+TEST(ObjectContact, ANodeThatCrossesATrianglesMiddleInOneStepIsPushedBackToItsSide) {
+  const Model model = contact_scene(R"(  - name: cloth
+    mesh: {grid: {width: 0.2, height: 0.2, columns: 1, rows: 1, diagonals: one}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.003}
+    pinned: {all: true}
+  - name: pebble
+    mesh: {polyline: {points: [[0.12, 0.05, 0.05], [0.13, 0.05, 0.05]]}}
+    material: {density: 8000, youngs_modulus: 1.0e8, radius: 0.002}
+)",
+                                    "{objects: true}", kNoGravityNoGround);
+  const double reach = 0.003 + 0.002;
+  const double dt = kAutoTimestepSafety * critical_timestep(model);
+  State state = initial_state(model, dt);
+  const ModelObject& pebble = model.objects[1];
+  for (Index i = pebble.first_node; i < pebble.first_node + pebble.node_count; ++i) {
+    state.x[i].z() = 1.05 * reach;
+    state.v_half[i] = Vec3(0, 0, -1.1 * reach / dt);
+  }
+  double lowest = 1.0;
+  while (state.time < 0.01) {
+    step(model, dt, {}, state);
+    lowest = std::min(lowest, state.x[pebble.first_node].z());
+  }
+  EXPECT_LT(lowest, 0.0);                            // it did cross the middle
+  EXPECT_GT(state.x[pebble.first_node].z(), reach);  // and went back the way it came
+  EXPECT_GT(state.v_half[pebble.first_node].z(), 0.0);
+}
+
 // The least distance between the axes of the two wires' bars, and the side of the fixed wire
 // the thrown one's middle node is on.
 struct WireWatch {
@@ -410,8 +443,6 @@ std::string rod_over_net(const Vec3& rod_centre, double speed, double net_modulu
                      rod_centre.x() - 0.03, rod_centre.y(), rod_centre.z(), rod_centre.x() + 0.03,
                      net_modulus, rod_modulus, -speed);
 }
-
-constexpr const char* kNoGravityNoGround = "gravity: [0, 0, 0]\nground: {contact: false}\n";
 
 // A rod dropped at 0.3 m/s on the taut net (E = 20 GPa, pretensioned to a strain of 10⁻² by
 // stretching it, pins and all), across one cord at its middle and between the two cords it
