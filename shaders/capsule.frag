@@ -124,6 +124,9 @@ void main() {
   vec3 ba = capsule_p1 - capsule_p0;
   float along = clamp(dot(hit - capsule_p0, ba) / max(dot(ba, ba), 1e-20), 0.0, 1.0);
   vec3 normal = normalize(hit - capsule_p0 - along * ba);
-  out_color = vec4(stored_color(shade(base_color, normal, hit, surface_finish)).rgb, coverage);
+  // Under multisampling the coverage picks the samples (which then take alpha 1: the renderer
+  // turns on alpha to one); with one sample the pixel is the bar's, opaque.
+  out_color = vec4(stored_color(shade(base_color, normal, hit, surface_finish)).rgb,
+                   multisampled ? coverage : 1.0);
 #endif
 }

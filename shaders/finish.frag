@@ -11,7 +11,15 @@ uniform bool use_occlusion;
 out vec4 out_color;
 
 void main() {
-  vec3 color = texelFetch(frame_color, ivec2(gl_FragCoord.xy), 0).rgb;
+  vec4 frame = texelFetch(frame_color, ivec2(gl_FragCoord.xy), 0);
+  vec3 color = frame.rgb;
+#ifdef TRANSPARENT_BACKGROUND
+  // What is drawn covers a fraction `frame.a` of the pixel, and its colour was averaged with the
+  // empty background's zero: its own colour is the quotient. Stored multiplied by the coverage
+  // again, as the frames drawn straight to the display are (read_display divides them).
+  float coverage = frame.a;
+  color = coverage > 0.0 ? color / coverage : vec3(0.0);
+#endif
   // The sky is never occluded (its neighbours' occlusion would bleed into it at the horizon).
   if (use_occlusion && texelFetch(scene_depth, ivec2(gl_FragCoord.xy), 0).r < 1.0) {
     vec2 texel = 1.0 / vec2(textureSize(occlusion, 0));
@@ -24,5 +32,9 @@ void main() {
     }
     color *= sum / 4.0;
   }
+#ifdef TRANSPARENT_BACKGROUND
+  out_color = vec4(display_color(color, true) * coverage, coverage);
+#else
   out_color = vec4(display_color(color, true), 1.0);
+#endif
 }

@@ -30,6 +30,10 @@ struct LookSettings {
   // Off: linear colour clipped at white.
   bool tone_mapping = true;
   float exposure = 0.0f;  // stops; +1 doubles the light
+  // No sky: where nothing is drawn the frame is transparent, and its alpha is how much of each
+  // pixel what is drawn covers, with colours not darkened by it (straight alpha), for compositing
+  // over another picture. Off: opaque everywhere.
+  bool transparent_background = false;
 };
 
 }  // namespace dinam

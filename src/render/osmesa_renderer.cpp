@@ -74,7 +74,8 @@ std::string look_defines(const LookSettings& look, bool jittered) {
   for (const auto& [on, name] :
        {std::pair{look.soft_shadows && !jittered, "SOFT_SHADOWS"},
         std::pair{jittered || !look.filtered_shadow_edges, "ONE_SHADOW_TAP"},
-        std::pair{look.sky_light, "SKY_LIGHT"}, std::pair{look.tone_mapping, "TONE_MAPPING"}}) {
+        std::pair{look.sky_light, "SKY_LIGHT"}, std::pair{look.tone_mapping, "TONE_MAPPING"},
+        std::pair{look.transparent_background, "TRANSPARENT_BACKGROUND"}}) {
     defines += on ? fmt::format("#define {}\n", name) : "";
   }
   return defines;
@@ -184,7 +185,10 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
             : 2.0f * std::tan(0.5f * camera.fov_degrees * std::numbers::pi_v<float> / 180.0f) /
                   static_cast<float>(context_.height());
     const Mat4f world_from_clip = clip.inverse();
+    // The fragment's alpha becomes its samples; those it covers take alpha 1 (it is opaque), so
+    // that a pixel's alpha is what covers it, not the fragment's coverage again.
     glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glEnable(GL_SAMPLE_ALPHA_TO_ONE);
     glBindVertexArray(capsule_vao_);
     // The bars as quads, then those narrower than a pixel as lines (capsule.vert).
     for (const bool lines : {false, true}) {
@@ -210,6 +214,7 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
         glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(n_segments));
       }
     }
+    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
     glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   }
   if (!node_instances_.empty()) {
@@ -462,10 +467,22 @@ void OsmesaRenderer::read_display(Image& image) {
     std::memcpy(image.rgba.data() + static_cast<std::size_t>(height - 1 - y) * row_bytes,
                 source + static_cast<std::size_t>(y) * row_bytes, row_bytes);
   }
+  if (settings_.look.transparent_background) {
+    // The buffer holds colours multiplied by their coverage (multisampling averaged them with the
+    // empty background); a PNG's alpha is straight, so they are divided by it again.
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+      const unsigned alpha = image.rgba[i + 3];
+      for (std::size_t c = i; c < i + 3; ++c) {
+        image.rgba[c] = alpha == 0 ? 0
+                                   : static_cast<std::uint8_t>(std::min(
+                                         255U, (image.rgba[c] * 255U + alpha / 2) / alpha));
+      }
+    }
+    return;
+  }
   // The frame is a picture of the whole scene, sky included, so it is opaque everywhere. The
-  // buffer's alpha is what alpha to coverage and blending left at the edges of wires (the
-  // covered fraction, not a transparency): written to a PNG it gave the wires dark fringes over
-  // any background.
+  // buffer's alpha at the edges of wires is their coverage, not a transparency: written to a PNG
+  // it gave them dark fringes over any background.
   for (std::size_t i = 3; i < image.rgba.size(); i += 4) {
     image.rgba[i] = 255;
   }

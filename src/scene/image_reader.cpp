@@ -170,6 +170,12 @@ void read_image(YamlMap image, SceneDescription& scene) {
                      exposure);
   }
   look.exposure = static_cast<float>(exposure);
+  const std::string background = image.string("background", "sky");
+  if (background != "sky" && background != "transparent") {
+    throw_user_error(image.loc("background"),
+                     "'image.background' must be sky or transparent; got '{}'", background);
+  }
+  look.transparent_background = background == "transparent";
   if (image.has("motion_blur")) {
     quality.motion_blur =
         read_motion_blur(image.get("motion_blur"), image.file(), quality.motion_blur);

@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "render/camera.hpp"
@@ -149,6 +152,59 @@ TEST(OsmesaRenderer, FramesAreOpaqueAlongTheEdgesOfWires) {
       }
     }
     EXPECT_EQ(translucent, 0) << samples << " samples";
+  }
+}
+
+// On a transparent background (`image: {background: transparent}`) a wire alone in the picture
+// is all there is: alpha 0 and black where nothing is drawn, 255 inside the wire, in between
+// along its edges under multisampling, and there its colour is the wire's own (straight alpha),
+// not darkened by the coverage: composited over any picture it has no fringe. Both ways a frame
+// reaches the display: drawn straight to it, and through the finishing pass (ambient occlusion).
+TEST(OsmesaRenderer, ATransparentBackgroundLeavesOnlyWhatIsDrawnWithItsCoverage) {
+  const int width = 160;
+  const int height = 120;
+  DrawList wire = one_bar();
+  wire.segment_radius = {0.02f};
+  wire.segment_color = {Vec3f(0.1f, 0.1f, 0.8f)};
+  const std::vector<Vec3f> positions = {Vec3f(-0.7f, 0, 0.6f), Vec3f(0.9f, -0.3f, 1.4f)};
+  for (const bool occlusion : {false, true}) {
+    for (const int samples : {1, 4}) {
+      LookSettings look;
+      look.transparent_background = true;
+      look.ambient_occlusion = occlusion;
+      OsmesaRenderer renderer({width, height, samples, 0, look});
+      Image image;
+      renderer.render(wire, positions, front_camera(), image);
+      const std::string what = fmt::format("{} samples, occlusion {}", samples, occlusion);
+      EXPECT_EQ(image.pixel(0, 0)[3], 0) << what;
+      EXPECT_EQ(image.pixel(0, 0)[2], 0) << what;
+      int inside = 0;
+      int edge = 0;
+      double inside_blue = 0.0;
+      for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+          const std::uint8_t* p = image.pixel(x, y);
+          inside += p[3] == 255 ? 1 : 0;
+          inside_blue += p[3] == 255 ? p[2] : 0;
+        }
+      }
+      ASSERT_GT(inside, 50) << what;
+      inside_blue /= inside;
+      for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+          const std::uint8_t* p = image.pixel(x, y);
+          if (p[3] > 0 && p[3] < 255) {
+            ++edge;
+            // Straight colour: as blue as the wire (its shading spans about ±30 %), whatever
+            // the coverage; multiplied by it, a pixel half covered would be half as bright.
+            if (p[3] >= 64) {
+              EXPECT_GT(p[2], 0.6 * inside_blue) << what << " at " << x << ", " << y;
+            }
+          }
+        }
+      }
+      EXPECT_EQ(edge > 0, samples > 1) << what;
+    }
   }
 }
 
