@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 #include "dynamics/contact_geometry.hpp"
@@ -50,7 +51,43 @@ double pair_stiffness(const Model& model, const ContactPoint& point) {
   return contact.omega_squared / (inverse_a + inverse_b);
 }
 
+// The automatic penalty is soft near the surface and stiff deeper in. A contact that stays within
+// the soft layer (half the reach) oscillates four times slower than the stiff one: an impact
+// lasts some 20 automatic steps, so its rebound keeps the spring–dashpot's restitution; a fast
+// one that goes deeper meets the full stiffness, which keeps the speed envelope (the header).
+// The damper and the friction's stick spring take the soft stiffness. A given `stiffness` is
+// linear.
+constexpr double kSoftLayerShare = 0.5;             // of the reach
+constexpr double kSoftStiffnessShare = 1.0 / 16.0;  // of the stiff penalty's
+
+template <class T>
+T penalty_force(T penetration, double soft, double stiff, double knee) {
+  return penetration <= knee ? T(soft * penetration)
+                             : T(soft * knee + stiff * (penetration - knee));
+}
+
 }  // namespace
+
+ContactPenalty contact_penalty(const Model& model, const ContactPoint& point) {
+  const double stiff = pair_stiffness(model, point);
+  if (model.contact.omega_squared <= 0.0) {
+    return {stiff, stiff, std::numeric_limits<double>::infinity()};
+  }
+  return {kSoftStiffnessShare * stiff, stiff,
+          kSoftLayerShare * contact_reach(model.contact, point.key)};
+}
+
+double ContactPenalty::force(double penetration) const {
+  return penalty_force(penetration, soft, stiff, knee);
+}
+
+double ContactPenalty::energy(double penetration) const {
+  if (penetration <= knee) {
+    return 0.5 * soft * penetration * penetration;
+  }
+  const double beyond = penetration - knee;
+  return soft * knee * (0.5 * knee + beyond) + 0.5 * stiff * beyond * beyond;
+}
 
 void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger,
                                std::vector<Vec3>* friction_ledger) {
@@ -87,7 +124,8 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
       predicted_velocity += point.weights[j] * (0.5 * dt * inverse_mass) * context.force[node];
     }
     predicted_velocity += relative_velocity;
-    const double k = pair_stiffness(model, point);
+    const ContactPenalty penalty = contact_penalty(model, point);
+    const double k = penalty.soft;
     double c =
         inverse_moved > 0.0 ? 2.0 * contact.damping_ratio * std::sqrt(k / inverse_moved) : 0.0;
 
@@ -112,10 +150,10 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
     if (!touched_before && dt > 0.0 && penetration < approach * dt) {
       c *= (penetration / approach + 0.5 * dt) / dt;
     }
-    const double elastic = k * penetration;
+    const double elastic = penalty.force(penetration);
     const double normal_force = std::max(
         0.0, (elastic - c * predicted_velocity.dot(normal)) / (1.0 + 0.5 * dt * c * inverse_moved));
-    point.energy = 0.5 * elastic * penetration;
+    point.energy = penalty.energy(penetration);
     work.energy += point.energy;
 
     // Friction: the stick spring stretches with the relative tangential motion since the pair
@@ -165,7 +203,7 @@ void add_object_contact_stiffness(const Model& model, const State& state, Stiffn
     return;
   }
   for (const ContactPoint& point : state.object_contact.touching) {
-    const double k = pair_stiffness(model, point);
+    const ContactPenalty penalty = contact_penalty(model, point);
     const double reach = contact_reach(model.contact, point.key);
     const bool bar_pair = (point.key >> 63) == kBarBarContact;
     std::array<Vec3, 4> at;
@@ -192,7 +230,11 @@ void add_object_contact_stiffness(const Model& model, const State& state, Stiffn
       }
       using std::sqrt;
       const T distance = sqrt(separation.squaredNorm());
-      const T scale = distance > 1e-12 * reach ? T(k * (reach - distance) / distance) : T(0.0);
+      const T scale =
+          distance > 1e-12 * reach
+              ? T(penalty_force<T>(reach - distance, penalty.soft, penalty.stiff, penalty.knee) /
+                  distance)
+              : T(0.0);
       const V on_a = scale * separation;
       return std::array<V, 4>{w[0] * on_a, w[1] * on_a, w[2] * on_a, w[3] * on_a};
     });

@@ -19,7 +19,8 @@ namespace {
 constexpr double kStiffestPenaltyFrequencyRatio = 100.0;
 
 // The automatic contact frequencies, as shares of the structure's highest: of the ground, and of
-// contact between objects (stiffer, for its speed envelope: object_contact.hpp).
+// contact between objects (stiffer, for its speed envelope; its penalty is softer near the
+// surface, where a bounce needs it resolved: object_contact.cpp).
 constexpr double kGroundContactFrequency = 0.125;
 constexpr double kObjectContactFrequency = 0.5;
 

@@ -335,8 +335,8 @@ TEST(ShippedScenes, BallThrownIntoTheNetIsCaughtAndThrownBackWithNoWirePassingAC
 // rope rests on turns below (its axis above two radii; the ground holds nodes at their radius,
 // z = r, a turn on another lies at 3 r), the top at least as high as a turn lying on another
 // (3 r), the rope's 3 m within 0.75 m. (How the heap ends is chaotic: 17.6 to 38 mm high, 2.9 to
-// 6.3 r, as the global damping went from 0.28 to 0.32 when the ground held nodes at z = 0; 3.2 r
-// and 29 % on top now.) The
+// 6.3 r, as the global damping went from 0.28 to 0.32 when the ground held nodes at z = 0; 3.3 r
+// and 25 % on top now.) The
 // control: without self-contact the turns pass through each other and lie flat on the floor.
 TEST(ShippedScenes, RopeDroppedOnTheFloorCoilsIntoAHeapWithoutPassingThroughItself) {
   struct Heap {
