@@ -140,9 +140,10 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
       // through: the side where it first touched, or, if it crossed in that very step, the side
       // it was on a step before.
       point.side = touched_before ? previous->side : side_came_from(point, state, dt);
-      const Vec3 face = fallback_normal(point, state.x);  // the triangle's unit normal
+      const std::array<Index, 4>& n = point.nodes;
+      const Vec3 face = (state.x[n[2]] - state.x[n[1]]).cross(state.x[n[3]] - state.x[n[1]]);
       if (point.separation.dot(face) * point.side < 0.0) {
-        normal = point.side * face;
+        normal = point.side * fallback_normal(point, state.x);  // the triangle's unit normal
         penetration = reach + distance;
       }
     }
