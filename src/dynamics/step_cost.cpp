@@ -19,7 +19,7 @@ struct ItemCosts {
   double node = 5.4;            // gravity, clearing and the integrator, per node
   double global_damping = 1.3;  // per node
   double field_node = 0.8;      // per node a field acts on
-  double ground = 8.5;          // per node, half of them touching
+  double ground = 9.2;          // per node, half of them touching
   double wind_face = 15.1;      // a face in steady or gusty wind
   double wind_face_turbulent = 25.3;
   double wind_bar = 10.1;  // a bare bar in the wind
