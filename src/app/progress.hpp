@@ -1,5 +1,8 @@
 #pragma once
-// A one-line progress report, redrawn in place, only when stderr is a terminal.
+// Progress of a run's frames on stderr. On a terminal, one line redrawn in place; in a log (a farm
+// job, CI, a file), a line each time another tenth of the frames is done, or after 30 s without
+// one, with the time taken and an estimate of the time left, so that a long run says how it goes
+// before it ends.
 #include <chrono>
 #include <string>
 
@@ -15,10 +18,16 @@ class Progress {
   void finish();
 
  private:
+  void update_terminal(int done, const std::string& detail);
+  void update_log(int done, const std::string& detail);
+
   int total_;
   bool enabled_;
+  bool terminal_;
   std::string stage_;
   bool drawn_ = false;
+  int tenths_logged_ = 0;
+  std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_;
 };
 
