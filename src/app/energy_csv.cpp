@@ -1,5 +1,7 @@
 #include "app/energy_csv.hpp"
 
+#include "app/energy_plot.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -23,12 +25,14 @@ std::array<double, kEnergyColumns.size()> energy_row(const EnergyReport& r) {
           r.total};
 }
 
-EnergyCsv::EnergyCsv(const std::filesystem::path& path) : file_(path) {
+EnergyCsv::EnergyCsv(const std::filesystem::path& path)
+    : file_(path), plot_(std::filesystem::path(path).replace_extension(".svg")) {
   fmt::print(file_.stream(), "{}\n", fmt::join(kEnergyColumns, ","));
 }
 
 void EnergyCsv::write(const EnergyReport& report) {
   const auto row = energy_row(report);
+  rows_.push_back(row);
   fmt::print(file_.stream(), "{:.6f}", row[0]);  // the time; the energies to 9 significant digits
   for (std::size_t c = 1; c < row.size(); ++c) {
     fmt::print(file_.stream(), ",{:.9g}", row[c]);
@@ -38,6 +42,7 @@ void EnergyCsv::write(const EnergyReport& report) {
 
 void EnergyCsv::close() {
   file_.commit();
+  write_energy_plot(plot_, rows_);
 }
 
 }  // namespace dinam

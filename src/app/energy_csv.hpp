@@ -1,8 +1,10 @@
 #pragma once
 // The energy accounts as CSV, one row per frame, written beside the frames under a new temporary
-// name and renamed when the run completes (core/output_file.hpp).
+// name and renamed when the run completes (core/output_file.hpp); with energy.svg beside it, their
+// plot (energy_plot.hpp).
 #include <array>
 #include <filesystem>
+#include <vector>
 
 #include "core/output_file.hpp"
 #include "dynamics/state.hpp"
@@ -28,15 +30,18 @@ std::array<double, kEnergyColumns.size()> energy_row(const EnergyReport& report)
 
 class EnergyCsv {
  public:
-  // Writes the header; throws RuntimeError, or UserError for a final name that is a link. An
-  // unclosed file is removed when the EnergyCsv goes.
+  // Writes the header, and opens the plot's file (`path` with .svg) beside it; throws
+  // RuntimeError, or UserError for a final name that is a link, before the run. An unclosed file
+  // is removed when the EnergyCsv goes.
   explicit EnergyCsv(const std::filesystem::path& path);
 
   void write(const EnergyReport& report);
-  void close();  // flushes and renames to the final name
+  void close();  // flushes and renames to the final name, and writes the plot beside it
 
  private:
   OutputFile file_;
+  OutputFile plot_;
+  std::vector<std::array<double, kEnergyColumns.size()>> rows_;  // for the plot
 };
 
 }  // namespace dinam

@@ -1,7 +1,10 @@
 // The program as a user runs it: a scene file in, frames and a movie out, exit codes and
 // messages for bad input.
 #include <gtest/gtest.h>
+
 #include <sys/wait.h>
+#include <algorithm>
+#include <iterator>
 
 #include <array>
 #include <cmath>
@@ -117,6 +120,26 @@ TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
   for (const double total : totals) {
     EXPECT_NEAR(total, totals.front(), 1e-3 * std::abs(totals.front()));
   }
+  // energy.svg beside it: a line a frame for every account that is not zero throughout (the
+  // kinetic, axial, gravitational and total here), labelled, and the worst deviation in the title.
+  std::ifstream svg_file(out() / "energy.svg");
+  const std::string svg(std::istreambuf_iterator<char>(svg_file), {});
+  EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0U);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_NE(svg.find("Energy against time: balance within "), std::string::npos);
+  EXPECT_NE(svg.find(" % of the peak kinetic energy"), std::string::npos);
+  int lines = 0;
+  for (std::size_t at = svg.find("points=\""); at != std::string::npos;
+       at = svg.find("points=\"", at + 1)) {
+    const std::string points = svg.substr(at + 8, svg.find('"', at + 8) - at - 8);
+    EXPECT_EQ(std::count(points.begin(), points.end(), ','), 3) << points;  // one point a frame
+    ++lines;
+  }
+  EXPECT_GE(lines, 4);
+  for (const char* label : {">kinetic<", ">axial<", ">gravitational<", ">total<"}) {
+    EXPECT_NE(svg.find(label), std::string::npos) << label;
+  }
+  EXPECT_EQ(svg.find(">wind_work<"), std::string::npos);  // no wind: left out
   EXPECT_TRUE(test::temporary_files_in(out()).empty());
 }
 
