@@ -66,28 +66,35 @@ T penalty_force(T penetration, double soft, double stiff, double knee) {
                              : T(soft * knee + stiff * (penetration - knee));
 }
 
-}  // namespace
+// A pair's normal penalty: `soft` N/m up to a penetration `knee`, `stiff` beyond (the automatic
+// stiffness; a given one is linear, its knee infinite).
+struct ContactPenalty {
+  double soft = 0.0;   // N/m
+  double stiff = 0.0;  // N/m
+  double knee = 0.0;   // m
 
-ContactPenalty contact_penalty(const Model& model, const ContactPoint& point) {
+  double force(double penetration) const {  // N, pushing the pair apart
+    return penalty_force(penetration, soft, stiff, knee);
+  }
+  double energy(double penetration) const {  // J
+    if (penetration <= knee) {
+      return 0.5 * soft * penetration * penetration;
+    }
+    const double beyond = penetration - knee;
+    return soft * knee * (0.5 * knee + beyond) + 0.5 * stiff * beyond * beyond;
+  }
+};
+
+// `reach`: the pair's, contact_reach's.
+ContactPenalty contact_penalty(const Model& model, const ContactPoint& point, double reach) {
   const double stiff = pair_stiffness(model, point);
   if (model.contact.omega_squared <= 0.0) {
     return {stiff, stiff, std::numeric_limits<double>::infinity()};
   }
-  return {kSoftStiffnessShare * stiff, stiff,
-          kSoftLayerShare * contact_reach(model.contact, point.key)};
+  return {kSoftStiffnessShare * stiff, stiff, kSoftLayerShare * reach};
 }
 
-double ContactPenalty::force(double penetration) const {
-  return penalty_force(penetration, soft, stiff, knee);
-}
-
-double ContactPenalty::energy(double penetration) const {
-  if (penetration <= knee) {
-    return 0.5 * soft * penetration * penetration;
-  }
-  const double beyond = penetration - knee;
-  return soft * knee * (0.5 * knee + beyond) + 0.5 * stiff * beyond * beyond;
-}
+}  // namespace
 
 void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger,
                                std::vector<Vec3>* friction_ledger) {
@@ -124,13 +131,13 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
       predicted_velocity += point.weights[j] * (0.5 * dt * inverse_mass) * context.force[node];
     }
     predicted_velocity += relative_velocity;
-    const ContactPenalty penalty = contact_penalty(model, point);
+    const double reach = contact_reach(contact, point.key);
+    const ContactPenalty penalty = contact_penalty(model, point, reach);
     const double k = penalty.soft;
     double c =
         inverse_moved > 0.0 ? 2.0 * contact.damping_ratio * std::sqrt(k / inverse_moved) : 0.0;
 
     const double distance = point.separation.norm();
-    const double reach = contact_reach(contact, point.key);
     Vec3 normal = distance > 1e-12 * reach ? Vec3(point.separation / distance)
                                            : fallback_normal(point, state.x);
     double penetration = reach - distance;
@@ -204,8 +211,8 @@ void add_object_contact_stiffness(const Model& model, const State& state, Stiffn
     return;
   }
   for (const ContactPoint& point : state.object_contact.touching) {
-    const ContactPenalty penalty = contact_penalty(model, point);
     const double reach = contact_reach(model.contact, point.key);
+    const ContactPenalty penalty = contact_penalty(model, point, reach);
     const bool bar_pair = (point.key >> 63) == kBarBarContact;
     std::array<Vec3, 4> at;
     for (int j = 0; j < 4; ++j) {

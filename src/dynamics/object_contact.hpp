@@ -33,17 +33,6 @@
 
 namespace dinam {
 
-// A pair's normal penalty: `soft` N/m up to a penetration `knee`, `stiff` beyond (the automatic
-// stiffness; a given one is linear, knee infinite).
-struct ContactPenalty {
-  double soft = 0.0;                        // N/m
-  double stiff = 0.0;                       // N/m
-  double knee = 0.0;                        // m
-  double force(double penetration) const;   // N, pushing the pair apart
-  double energy(double penetration) const;  // J
-};
-ContactPenalty contact_penalty(const Model& model, const ContactPoint& point);
-
 // Adds the contact forces between objects and within them to context.force; while the energy
 // is tracked, the normal damping and the friction also go to their ledgers (both or neither).
 // The friction's stick springs stretch by the relative velocity times state.dt.
