@@ -123,8 +123,8 @@ int main(int argc, char** argv) {
   //    from it by `dinam render --cache`, against the drawing and PNG encoding of those frames.
   const std::filesystem::path cache = std::filesystem::temp_directory_path() / "dinam_bench_cache";
   const auto write_cache = [&](const Model& model, const std::vector<std::vector<Vec3f>>& shown) {
-    MotionCacheWriter writer({cache, true, false, 20.0, static_cast<int>(shown.size()), {}, 0.0, 1},
-                             model);
+    MotionCacheWriter writer(
+        {cache, true, false, 20.0, static_cast<int>(shown.size()), {}, 0.0, 1, false, {}}, model);
     for (const auto& positions : shown) {
       writer.add_frame(positions);
     }

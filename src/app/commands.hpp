@@ -37,7 +37,7 @@ int run_render(const RenderOptions& options);
 struct SimulateOptions {
   std::filesystem::path scene;
   std::optional<std::filesystem::path> output;  // default: the scene's `output`/cache
-  std::string formats = "pc2";                  // "pc2", "mdd" or "pc2,mdd"
+  std::string formats = "pc2,usd";              // a list of pc2, mdd and usd
   bool quiet = false;
   bool energy = false;  // the energy report in the manifest and as energy.csv
   bool force = false;   // run even past the memory or run-time estimate's limits

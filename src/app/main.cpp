@@ -94,7 +94,10 @@ int run(int argc, char** argv) {
                                "Cache folder (default: the scene's 'output'/cache); an older "
                                "cache there is replaced when the new one is complete");
   simulate_command
-      ->add_option("--format", simulate.formats, "Point cache formats: pc2, mdd or pc2,mdd")
+      ->add_option(
+          "--format", simulate.formats,
+          "What the cache holds beside the rest meshes: a list of pc2, mdd (point caches) and "
+          "usd (a USD stage of every object)")
       ->default_val(simulate.formats);
   simulate_command->add_flag("-q,--quiet", simulate.quiet, "Print nothing but errors");
   simulate_command->add_flag("--energy", simulate.energy,

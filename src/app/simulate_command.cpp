@@ -1,6 +1,7 @@
 // `dinam simulate`: the motion once, into a cache that `render --cache` draws from and that
 // Blender, Houdini, Maya and 3ds Max open.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <optional>
 
@@ -23,10 +24,11 @@
 namespace dinam {
 namespace {
 
-// "pc2", "mdd", "pc2,mdd" (any order) → the request's formats.
+// A comma-separated list of "pc2", "mdd" and "usd" → the request's formats.
 void parse_formats(const std::string& text, CacheRequest& request) {
   request.pc2 = false;
   request.mdd = false;
+  request.usd = false;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = text.find(',', start);
@@ -36,14 +38,42 @@ void parse_formats(const std::string& text, CacheRequest& request) {
       request.pc2 = true;
     } else if (item == "mdd") {
       request.mdd = true;
+    } else if (item == "usd") {
+      request.usd = true;
     } else {
-      throw_user_error({}, "--format takes pc2, mdd or pc2,mdd; got '{}'", text);
+      throw_user_error({}, "--format takes a list of pc2, mdd and usd, such as pc2,usd; got '{}'",
+                       text);
     }
     if (comma == std::string::npos) {
       break;
     }
     start = comma + 1;
   }
+  if (!request.pc2 && !request.mdd) {
+    throw_user_error({},
+                     "--format {} names no point cache: a cache holds pc2 or mdd (which 'dinam "
+                     "render --from-cache' reads) beside a USD stage; add pc2, as in pc2,usd",
+                     text);
+  }
+}
+
+// How the scene draws each object, for the USD stage's prims.
+std::vector<UsdObjectLook> usd_looks(const SceneDescription& scene) {
+  std::vector<UsdObjectLook> looks;
+  for (const ObjectDesc& object : scene.objects) {
+    looks.push_back({object.style != DrawStyle::kWire, object.style != DrawStyle::kSurface, 0.0f});
+  }
+  return looks;
+}
+
+// The radius each object's wires are drawn with, for the whole run's motion.
+std::vector<float> drawn_wire_radii(const Model& model, const std::vector<FrameBounds>& frames) {
+  Bounds motion;
+  for (const FrameBounds& frame : frames) {
+    motion.add(frame.min);
+    motion.add(frame.max);
+  }
+  return drawn_wire_radii(model, motion);
 }
 
 }  // namespace
@@ -55,6 +85,9 @@ int run_simulate(const SimulateOptions& options) {
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   CacheRequest request;
   parse_formats(options.formats, request);
+  if (request.usd) {
+    request.usd_looks = usd_looks(scene);
+  }
   request.folder = options.output.value_or(scene.output / "cache");
   request.fps = scene.fps;
   request.frame_count = scene.frame_count();
@@ -129,7 +162,8 @@ int run_simulate(const SimulateOptions& options) {
     manifest.timestep = timestep.dt;
     manifest.steps_per_frame = timestep.steps_per_frame;
     manifest.simulate_seconds = seconds_since(start);
-    writer.commit(std::move(manifest));
+    writer.commit(std::move(manifest), request.usd ? drawn_wire_radii(model, writer.frame_bounds())
+                                                   : std::vector<float>{});
   } catch (const Interrupted&) {
     throw;
   } catch (const RuntimeError& e) {
@@ -144,12 +178,16 @@ int run_simulate(const SimulateOptions& options) {
     if (const std::string line = settle_summary(settled, timestep.dt); !line.empty()) {
       fmt::print("dinam: {}\n", line);
     }
+    std::vector<std::string> formats;
+    for (const auto& [wanted, name] : {std::pair{request.pc2, "PC2"}, std::pair{request.mdd, "MDD"},
+                                       std::pair{request.usd, "USD"}}) {
+      if (wanted) {
+        formats.emplace_back(name);
+      }
+    }
     fmt::print("dinam: motion cache of {} frames in {} ({} objects, {}; {:.2f} s)\n",
                request.frame_count, request.folder.string(), model.objects.size(),
-               request.pc2 && request.mdd ? "PC2 and MDD"
-               : request.pc2              ? "PC2"
-                                          : "MDD",
-               seconds_since(start));
+               fmt::join(formats, ", "), seconds_since(start));
   }
   return kExitOk;
 }

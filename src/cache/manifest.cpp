@@ -91,6 +91,9 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
       {"objects", objects},
       {"frame_bounds", bounds},
   };
+  if (!m.usd.empty()) {
+    json["usd"] = m.usd;
+  }
   if (!m.tears.empty()) {
     Json tears = Json::array();
     for (const CacheTear& tear : m.tears) {
@@ -174,6 +177,7 @@ CacheManifest read_manifest(const std::filesystem::path& path) {
     for (const Json& b : json.at("frame_bounds")) {
       m.frame_bounds.push_back(bounds_from(b));
     }
+    m.usd = json.value("usd", "");
     if (json.contains("tears")) {
       for (const Json& tear : json.at("tears")) {
         m.tears.push_back(

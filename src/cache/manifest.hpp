@@ -78,6 +78,7 @@ struct CacheManifest {
   EnergyTable energy;                     // empty unless asked for
   std::vector<CacheTear> tears;           // in the order they broke; none unless it tears
   CacheInstants instants;                 // for motion blur; none unless the scene blurs
+  std::string usd;  // the USD stage of every object (usd_stage.hpp), in the folder; "" for none
 };
 
 // The path a manifest records for a scene file: absolute, with links and dots resolved.

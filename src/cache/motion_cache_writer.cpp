@@ -26,6 +26,7 @@ namespace {
 
 constexpr const char* kManifestName = "manifest.json";
 constexpr const char* kInstantsName = "motion_blur_instants.pc2";
+constexpr const char* kUsdName = "scene.usda";
 
 std::string host_name() {
   std::array<char, 256> name{};
@@ -185,6 +186,11 @@ void MotionCacheWriter::open_files(const Model& model) {
     entries_.push_back(std::move(entry));
     files_.push_back(std::move(files));
   }
+  if (request_.usd) {
+    DINAM_CHECK(request_.usd_looks.size() == model.objects.size());
+    usd_ = std::make_unique<UsdStageWriter>(temporary_, kUsdName, model, request_.usd_looks,
+                                            request_.fps, request_.frame_count);
+  }
   frame_bounds_.reserve(static_cast<std::size_t>(request_.frame_count));
   if (!request_.instant_offsets.empty()) {
     // One sample per instant; PC2's start frame and rate place them evenly, as near as a header
@@ -204,6 +210,7 @@ void MotionCacheWriter::open_files(const Model& model) {
 void MotionCacheWriter::discard() {
   files_.clear();  // closes the files before their folder goes
   instants_.reset();
+  usd_.reset();
   std::error_code ec;
   std::filesystem::remove_all(temporary_, ec);
 }
@@ -228,6 +235,9 @@ void MotionCacheWriter::add_frame(const std::vector<Vec3f>& positions) {
       cache.add_sample(positions.data() + files.first_node);
     }
   }
+  if (usd_) {
+    usd_->add_frame(positions);
+  }
 }
 
 void MotionCacheWriter::add_instant(const std::vector<Vec3f>& positions) {
@@ -235,7 +245,7 @@ void MotionCacheWriter::add_instant(const std::vector<Vec3f>& positions) {
   instants_->add_sample(positions.data());
 }
 
-void MotionCacheWriter::commit(CacheManifest manifest) {
+void MotionCacheWriter::commit(CacheManifest manifest, const std::vector<float>& usd_wire_radii) {
   DINAM_CHECK(frame_bounds_.size() == static_cast<std::size_t>(request_.frame_count));
   for (ObjectFiles& files : files_) {
     for (PointCacheWriter& cache : files.caches) {
@@ -246,6 +256,15 @@ void MotionCacheWriter::commit(CacheManifest manifest) {
     instants_->close();
     manifest.instants = {static_cast<int>(request_.instant_offsets.size()), request_.shutter,
                          request_.instant_offsets, kInstantsName};
+  }
+  if (usd_) {
+    std::vector<UsdObjectLook> looks = request_.usd_looks;
+    DINAM_CHECK(usd_wire_radii.size() == looks.size());
+    for (std::size_t o = 0; o < looks.size(); ++o) {
+      looks[o].wire_radius = usd_wire_radii[o];
+    }
+    usd_->write(looks);
+    manifest.usd = usd_->file_name();
   }
   manifest.dinam_version = kVersion;
   manifest.created = utc_now();

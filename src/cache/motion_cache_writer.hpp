@@ -1,6 +1,7 @@
 #pragma once
 // Writes a motion cache: a folder with each object's rest mesh (OBJ), its point caches (PC2 and
-// optionally MDD) and manifest.json. Everything goes into a temporary folder beside the final one
+// optionally MDD), optionally a USD stage of them all, and manifest.json. Everything goes into a
+// temporary folder beside the final one
 // ("DIR.part-HOST-PID"), and only a complete cache is moved to the final name, replacing an older
 // cache there in one step; so a cache is complete or absent, and an interrupted run leaves no
 // folder that looks like a cache.
@@ -11,6 +12,7 @@
 
 #include "cache/manifest.hpp"
 #include "cache/point_cache.hpp"
+#include "cache/usd_stage.hpp"
 
 namespace dinam {
 
@@ -27,6 +29,8 @@ struct CacheRequest {
   std::vector<int> instant_offsets;
   double shutter = 0.0;
   int steps_per_frame = 1;
+  bool usd = false;                      // a USD stage of every object too (usd_stage.hpp)
+  std::vector<UsdObjectLook> usd_looks;  // (n_objects) when usd; the radii are given at commit
 };
 
 class MotionCacheWriter {
@@ -48,9 +52,13 @@ class MotionCacheWriter {
   // Where a further file of the cache goes (energy.csv) until commit moves it with the rest.
   std::filesystem::path file_path(const std::string& name) const { return temporary_ / name; }
 
+  // The boxes of the frames added so far.
+  const std::vector<FrameBounds>& frame_bounds() const { return frame_bounds_; }
+
   // After the last frame: completes `manifest` with what the writer knows (version, objects and
-  // their files, fps, frame count, bounds), writes it, and moves the cache into place.
-  void commit(CacheManifest manifest);
+  // their files, fps, frame count, bounds), writes it and the USD stage (its wires drawn with
+  // `usd_wire_radii`, one per object, m), and moves the cache into place.
+  void commit(CacheManifest manifest, const std::vector<float>& usd_wire_radii = {});
 
  private:
   // Writes each object's rest mesh and opens its point caches in the temporary folder.
@@ -70,6 +78,7 @@ class MotionCacheWriter {
   std::vector<ObjectFiles> files_;
   std::vector<FrameBounds> frame_bounds_;
   std::unique_ptr<PointCacheWriter> instants_;  // null without motion blur
+  std::unique_ptr<UsdStageWriter> usd_;         // null without USD
   Index node_count_ = 0;
   bool committed_ = false;
 };

@@ -32,6 +32,7 @@ struct ModelObject {
   double section_area = 0.0;  // m²
   Vec3f color{0.8f, 0.8f, 0.8f};
   double render_radius = 0.0;  // m; 0 means "choose from the wire radius and the scene size"
+  bool has_uvs = false;        // its mesh gave texture coordinates (Model::node_uv)
 };
 
 // A field force resolved to node ids.

@@ -9,11 +9,11 @@
 #include "model/edge_collapse.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/mass_scaling.hpp"
-#include "model/plausibility.hpp"
 #include "model/mesh_cleaning.hpp"
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "model/model_spring_kinds.hpp"
+#include "model/plausibility.hpp"
 #include "model/spring_builders.hpp"
 #include "model/step_aiming.hpp"
 #include "model/vertex_welding.hpp"
@@ -202,6 +202,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
   info.section_area = object.material.area;
   info.color = object.color;
   info.render_radius = object.render_radius.value_or(0.0);
+  info.has_uvs = !object.mesh.uvs.empty();
   // Each node takes the texture coordinates of the first vertex welded into it.
   std::vector<Eigen::Vector2f> welded_uv(weld.nodes.size(), Eigen::Vector2f::Zero());
   std::vector<bool> uv_set(weld.nodes.size(), false);

@@ -114,6 +114,14 @@ RawMesh mesh_from_scene(const aiScene& scene, const std::filesystem::path& folde
   if (scene.mRootNode != nullptr) {
     add_node(scene, *scene.mRootNode, aiMatrix4x4(), {}, mesh);
   }
+  // A file without texture coordinates has none, rather than (0, 0) at every vertex.
+  bool any_uvs = false;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    any_uvs = any_uvs || scene.mMeshes[m]->HasTextureCoords(0);
+  }
+  if (!any_uvs) {
+    mesh.uvs.clear();
+  }
   mesh.metres_per_unit = metres_per_file_unit(scene);
   return mesh;
 }

@@ -25,6 +25,11 @@ double round_down_nice(double value) {
   return decade;
 }
 
+// m, the size of the scene the draw list frames: the diameter of every frame's positions.
+double drawn_extent(const Bounds& motion) {
+  return std::max(static_cast<double>(2.0f * motion.radius()), 1e-3);
+}
+
 }  // namespace
 
 RenderSettings render_settings(const SceneDescription& scene) {
@@ -60,6 +65,25 @@ std::vector<Image> read_textures(const SceneDescription& scene) {
   return textures;
 }
 
+std::vector<float> drawn_wire_radii(const Model& model, const Bounds& motion) {
+  const double min_radius = 0.002 * drawn_extent(motion);
+  // The wire's radius, but at least 0.2 % of the scene's size so that a fine wire shows; yet not
+  // so much that the bars of a dense mesh (a million-bar lattice) merge into a solid sheet, so at
+  // most a quarter of its median bar.
+  std::vector<float> radii;
+  std::vector<double> lengths;
+  for (const ModelObject& object : model.objects) {
+    const auto first = model.bar_rest_length.begin() + object.first_bar;
+    lengths.assign(first, first + object.bar_count);
+    std::nth_element(lengths.begin(), lengths.begin() + object.bar_count / 2, lengths.end());
+    const double visible = std::min(min_radius, 0.25 * lengths[object.bar_count / 2]);
+    const double r =
+        object.render_radius > 0.0 ? object.render_radius : std::max(object.wire_radius, visible);
+    radii.push_back(static_cast<float>(r));
+  }
+  return radii;
+}
+
 DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion) {
   return make_draw_list(scene, model, motion, read_textures(scene));
 }
@@ -67,25 +91,11 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
 DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion,
                         std::vector<Image> textures) {
   DrawList list;
-  const double extent = std::max(static_cast<double>(2.0f * motion.radius()), 1e-3);
-  const double min_radius = 0.002 * extent;
-
-  // Which objects show their bars, and their radius: the wire's, but at least 0.2 % of the
-  // scene's size so that a fine wire shows; yet not so much that the bars of a dense mesh (a
-  // million-bar lattice) merge into a solid sheet, so at most a quarter of its median bar.
-  std::vector<float> object_radius;
+  const double extent = drawn_extent(motion);
+  const std::vector<float> object_radius = drawn_wire_radii(model, motion);
   std::vector<bool> object_wire;
-  std::vector<double> lengths;
-  for (std::size_t o = 0; o < model.objects.size(); ++o) {
-    const ModelObject& object = model.objects[o];
-    const auto first = model.bar_rest_length.begin() + object.first_bar;
-    lengths.assign(first, first + object.bar_count);
-    std::nth_element(lengths.begin(), lengths.begin() + object.bar_count / 2, lengths.end());
-    const double visible = std::min(min_radius, 0.25 * lengths[object.bar_count / 2]);
-    const double r =
-        object.render_radius > 0.0 ? object.render_radius : std::max(object.wire_radius, visible);
-    object_radius.push_back(static_cast<float>(r));
-    object_wire.push_back(scene.objects[o].style != DrawStyle::kSurface);
+  for (const ObjectDesc& desc : scene.objects) {
+    object_wire.push_back(desc.style != DrawStyle::kSurface);
   }
   list.point_radius.resize(model.node_count());
   list.point_color.resize(model.node_count());

@@ -20,6 +20,9 @@ struct SceneDescription;
 // positions: the ground and the shadow map are framed on it.
 DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion);
 
+// The radius each object's bars are drawn with (m), as make_draw_list draws them.
+std::vector<float> drawn_wire_radii(const Model& model, const Bounds& motion);
+
 // The same, with the textures already read by read_textures.
 DrawList make_draw_list(const SceneDescription& scene, const Model& model, const Bounds& motion,
                         std::vector<Image> textures);

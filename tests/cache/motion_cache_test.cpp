@@ -48,7 +48,7 @@ Simulated simulate(const std::string& yaml) {
 }
 
 CacheRequest request_for(const Simulated& s, const std::filesystem::path& folder) {
-  return {folder, true, true, s.scene.fps, s.scene.frame_count(), {}, 0.0, 1};
+  return {folder, true, true, s.scene.fps, s.scene.frame_count(), {}, 0.0, 1, false, {}};
 }
 
 // Writes the whole cache of `s` into `folder`.

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The USD stage of a motion cache (src/cache/usd_stage.hpp) holds what its OBJ and PC2 files hold:
+# simulates tests/data/usd_stage.yaml (every kind of prim) and the end-to-end flag (120 frames)
+# with the default --format, and reads each stage with tests/cache/usd_stage_check.py, a parser of
+# USD's text grammar written for the test. Then: --format pc2 writes no stage, and a --format
+# without a point cache is refused before anything is written.
+#
+#   tests/cache/usd_stage_test.sh DINAM SOURCE_DIR PYTHON
+set -euo pipefail
+dinam=$(realpath "$1")
+source_dir=$(realpath "$2")
+python=$3
+check="$source_dir/tests/cache/usd_stage_check.py"
+work=$(mktemp -d /tmp/dinam-usd-XXXXXX)
+trap 'rm -rf "$work"' EXIT
+
+"$dinam" simulate "$source_dir/tests/data/usd_stage.yaml" -o "$work/kinds" --quiet
+# The pole is drawn at its wire radius (2 cm), the sail's wires at their render_radius (4 mm).
+"$python" "$check" "$work/kinds" --expect pole_1=BasisCurves --expect flag=Mesh \
+  --expect flag_wires=BasisCurves --expect net=BasisCurves --expect sail=Mesh \
+  --expect sail_wires=BasisCurves --expect frame=BasisCurves --width pole_1=0.04 \
+  --width sail_wires=0.008
+# The sail is a grid, with texture coordinates; the banner's OBJ has none.
+grep -q 'texCoord2f\[\] primvars:st' <(sed -n '/def Mesh "sail"/,/def /p' "$work/kinds/scene.usda")
+! grep -q 'primvars:st' <(sed -n '/def Mesh "flag"/,/def BasisCurves/p' "$work/kinds/scene.usda")
+# The frame's closed square is one curve that ends where it began.
+grep -q 'int\[\] primvars:dinam:node = \[4, 5, 5, 6, 5, 7, 8, 0, 1, 2, 3, 0\]' "$work/kinds/scene.usda"
+
+"$dinam" simulate "$source_dir/tests/data/end_to_end_flag.yaml" -o "$work/flag" --quiet
+"$python" "$check" "$work/flag" --expect pole=BasisCurves --expect cloth=Mesh
+
+"$dinam" simulate "$source_dir/tests/data/usd_stage.yaml" -o "$work/pc2" --format pc2 --quiet
+test ! -e "$work/pc2/scene.usda"
+! grep -q '"usd"' "$work/pc2/manifest.json"
+
+status=0
+"$dinam" simulate "$source_dir/tests/data/usd_stage.yaml" -o "$work/none" --format usd --quiet \
+  2>"$work/none.err" || status=$?
+test "$status" -eq 2
+grep -q 'names no point cache' "$work/none.err"
+test ! -e "$work/none"
+echo "usd stage: PASS"
