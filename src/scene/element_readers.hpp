@@ -31,7 +31,8 @@ MaterialPartDesc read_material_part(YamlMap part, const RawMesh& mesh);
 
 // An object's `mesh`: exactly one of `file`, `grid` or `polyline`, then the units and placement.
 // Fills the object's mesh, in world space, and its `weld`.
-void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDesc& object);
+void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDesc& object,
+               std::vector<std::string>& warnings);
 
 // A time profile: constant, step, ramp or sine.
 TimeProfile read_profile(YamlMap map);
@@ -61,6 +62,7 @@ void read_image(YamlMap map, SceneDescription& scene);
 Finish read_finish(const YAML::Node& node, const std::string& file, const std::string& what);
 
 // One entry of `objects`, its mesh loaded.
-ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder);
+ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder,
+                       std::vector<std::string>& warnings);
 
 }  // namespace dinam

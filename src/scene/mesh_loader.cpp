@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <string>
 #include <system_error>
 
@@ -19,6 +21,13 @@ void require_edges(const RawMesh& mesh, const std::string& what, const FileLoc& 
   }
 }
 
+bool is_blend_file(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".blend";
+}
+
 }  // namespace
 
 RawMesh load_mesh_file(const std::filesystem::path& path, const FileLoc& where) {
@@ -32,7 +41,25 @@ RawMesh load_mesh_file(const std::filesystem::path& path, const FileLoc& where) 
                      "file",
                      path.string());
   }
-  RawMesh mesh = import_in_child(path, where);
+  RawMesh mesh;
+  try {
+    mesh = import_in_child(path, where);
+  } catch (const UserError& e) {
+    // assimp reads .blend files of Blender 2.7 and older only, and says so in terms of Blender's
+    // internal structures ("BlendDNA: Did not find a field named `no` in structure `MVert`").
+    if (!is_blend_file(path)) {
+      throw;
+    }
+    const std::string& said = e.message();
+    const std::size_t quote = said.find("': ");
+    const std::string assimp_said = quote == std::string::npos ? said : said.substr(quote + 3);
+    throw_user_error(where,
+                     "cannot read '{}': dinam reads mesh files with assimp, which knows .blend "
+                     "files of Blender 2.7 and older only (it says: {}). In Blender, select the object and "
+                     "use File > Export > Wavefront (.obj) with Forward Axis Y and Up Axis Z (then "
+                     "name the .obj here), or export glTF 2.0 and add 'up_axis: y' to the mesh",
+                     path.string(), assimp_said);
+  }
   const std::string what = fmt::format("mesh file '{}'", path.string());
   check_mesh_values(mesh, where, what);  // assimp passes a file's bad vertex ids on
   require_edges(mesh, what, where);

@@ -2,9 +2,12 @@
 // `weld`. docs/scene-format.md documents every key read here; keep the two together.
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "scene/element_readers.hpp"
@@ -112,9 +115,64 @@ void read_weld(YamlMap& map, ObjectDesc& object) {
                    "(a fraction of the median bar length)");
 }
 
+// Why a mesh file's geometry is probably y-up as dinam receives it, or "" when nothing says so:
+// glTF is y-up by its specification, assimp turns a Collada file y-up whatever its <up_axis>, and
+// Blender writes OBJ files y-up unless told otherwise (Up Axis: Y is its exporter's default).
+std::string y_up_hint(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".gltf" || extension == ".glb") {
+    return "glTF files are y-up by their specification (Blender's glTF export turns z-up into y-up)";
+  }
+  if (extension == ".dae") {
+    return "assimp turns Collada files y-up whatever their <up_axis>";
+  }
+  if (extension == ".obj") {
+    std::ifstream in(file);
+    std::string line;
+    for (int k = 0; k < 5 && std::getline(in, line); ++k) {
+      if (line.rfind("# Blender", 0) == 0) {
+        return "Blender wrote this OBJ file, and its OBJ export is y-up unless its Up Axis is set "
+               "to Z";
+      }
+    }
+  }
+  return "";
+}
+
+// `up_axis`: the file's up direction. A y-up mesh is turned so that its +y points up (+z) and its
+// +z towards the viewer of a front view (−y), the inverse of what a z-up program's y-up export
+// (Blender's: Forward −Z, Up Y) did, before any other placement.
+void read_up_axis(YamlMap& map, const std::filesystem::path& file, const std::string& object_name,
+                  RawMesh& mesh, std::vector<std::string>& warnings) {
+  if (!map.has("up_axis")) {
+    map.get("up_axis");  // known, absent
+    if (const std::string why = file.empty() ? "" : y_up_hint(file); !why.empty()) {
+      warnings.push_back(fmt::format(
+          "{}: warning: object '{}': {}; if it lies on its side, add 'up_axis: y' to its mesh, "
+          "or 'up_axis: z' if it is z-up already",
+          map.loc("file").to_string(), object_name, why));
+    }
+    return;
+  }
+  const std::string axis = map.string("up_axis", "z");
+  if (axis == "y") {
+    for (Vec3& v : mesh.vertices) {
+      v = Vec3(v.x(), -v.z(), v.y());
+    }
+  } else if (axis != "z") {
+    throw_user_error(map.loc("up_axis"),
+                     "'{}' must be z (the file's +z is up, as in dinam and Blender) or y (its +y "
+                     "is up: glTF, and Blender's default OBJ export); got '{}'",
+                     map.path("up_axis"), axis);
+  }
+}
+
 }  // namespace
 
-void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDesc& object) {
+void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDesc& object,
+               std::vector<std::string>& warnings) {
   const int sources = int{map.has("file")} + int{map.has("grid")} + int{map.has("polyline")};
   if (sources != 1) {
     throw_user_error(map.loc(),
@@ -123,9 +181,11 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
                      map.name());
   }
   RawMesh& mesh = object.mesh;
+  std::filesystem::path file;
   if (map.has("file")) {
-    const std::filesystem::path file = map.string("file", "");
-    mesh = load_mesh_file(file.is_absolute() ? file : scene_folder / file, map.loc("file"));
+    file = map.string("file", "");
+    file = file.is_absolute() ? file : scene_folder / file;
+    mesh = load_mesh_file(file, map.loc("file"));
   } else if (map.has("grid")) {
     mesh = make_grid(read_grid(YamlMap(map.get("grid"), map.file(), map.path("grid"))));
   } else {
@@ -137,6 +197,12 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
                      "'{}' sets the size itself: give it, or 'scale' and 'units', not both",
                      map.path("fit"));
   }
+  if (file.empty() && map.has("up_axis")) {
+    throw_user_error(map.loc("up_axis"),
+                     "'{}' is for mesh files; a grid or a polyline is made in dinam's z-up world",
+                     map.path("up_axis"));
+  }
+  read_up_axis(map, file, object.name, mesh, warnings);
   Transform transform = read_transform(map);
   transform.scale *= read_units(map, mesh);
   if (map.has("fit")) {

@@ -73,12 +73,14 @@ NodeSelection read_nodes(YamlMap map, std::size_t vertex_count, bool* clamped) {
   return pins;
 }
 
-ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder) {
+ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder,
+                       std::vector<std::string>& warnings) {
   ObjectDesc object;
   object.loc = map.loc();
   object.name = map.string("name", fmt::format("object{}", index));
   object.mesh_loc = map.loc("mesh");
-  read_mesh(YamlMap(map.required("mesh"), map.file(), map.path("mesh")), scene_folder, object);
+  read_mesh(YamlMap(map.required("mesh"), map.file(), map.path("mesh")), scene_folder, object,
+            warnings);
   object.material =
       read_material(YamlMap(map.required("material"), map.file(), map.path("material")));
   if (map.has("pinned")) {

@@ -68,6 +68,53 @@ TEST(MeshLoader, GltfPyramidKeepsItsNodeTransform) {
   EXPECT_DOUBLE_EQ(lowest, 2.0);  // the glTF node's translation (0, 0, 2) was applied
 }
 
+// `up_axis: y` turns a y-up file z-up as a z-up program's y-up export was made (Blender's: Up Y,
+// Forward −Z): the file's (x, y, z) is the world's (x, −z, y).
+TEST(MeshLoader, UpAxisYTurnsTheFilesUpToTheWorldsUp) {
+  const auto scene_of = [](const std::string& mesh) {
+    return test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - mesh: {}
+    material: {{density: 1000, youngs_modulus: 1e6, radius: 0.01}}
+)",
+                                             mesh));
+  };
+  const SceneDescription as_is = scene_of("{file: pyramid.gltf, up_axis: z}");
+  const SceneDescription turned = scene_of("{file: pyramid.gltf, up_axis: y}");
+  const std::vector<Vec3>& before = as_is.objects[0].mesh.vertices;
+  const std::vector<Vec3>& after = turned.objects[0].mesh.vertices;
+  ASSERT_EQ(before.size(), after.size());
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    EXPECT_EQ(after[i], Vec3(before[i].x(), -before[i].z(), before[i].y())) << i;
+  }
+  // Said either way, nothing to warn of.
+  EXPECT_TRUE(as_is.warnings.empty());
+  EXPECT_TRUE(turned.warnings.empty());
+}
+
+// A file that is probably y-up as dinam receives it gets a warning naming the key that turns it,
+// and a z-up file none.
+TEST(MeshLoader, AFileThatIsProbablyYUpIsWarnedOf) {
+  const auto warnings_of = [](const std::string& file) {
+    return test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - mesh: {{file: {}, translation: [0, 0, 3]}}
+    material: {{density: 1000, youngs_modulus: 1e6, radius: 0.01}}
+)",
+                                             file))
+        .warnings;
+  };
+  const std::vector<std::string> gltf = warnings_of("pyramid.gltf");
+  ASSERT_EQ(gltf.size(), 1u);
+  test::expect_contains(gltf[0], {"inline.yaml:4:", "glTF", "up_axis: y"});
+  const std::vector<std::string> blender = warnings_of("blender_y_up.obj");
+  ASSERT_EQ(blender.size(), 1u);
+  test::expect_contains(blender[0], {"Blender wrote this OBJ", "up_axis: y"});
+  EXPECT_TRUE(warnings_of("cube.obj").empty());
+}
+
 // banner.obj: two triangles in group "cloth" of material "fabric", two lines in group "ropes" of
 // material "rope" (see the file). Every element keeps where it came from.
 TEST(MeshLoader, FacesAndLinesKeepTheFilesMaterialsAndGroups) {
