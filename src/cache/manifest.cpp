@@ -64,11 +64,18 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
     if (!o.mdd.empty()) {
       files["mdd"] = o.mdd;
     }
-    objects.push_back({{"name", o.name},
-                       {"first_node", o.first_node},
-                       {"node_count", o.node_count},
-                       {"bar_count", o.bar_count},
-                       {"files", files}});
+    Json object = {{"name", o.name},
+                   {"first_node", o.first_node},
+                   {"node_count", o.node_count},
+                   {"bar_count", o.bar_count},
+                   {"files", files}};
+    if (o.source_vertex_count > 0) {
+      object["source_vertex_count"] = o.source_vertex_count;
+      if (!o.source_vertices.empty()) {
+        object["source_vertices"] = o.source_vertices;
+      }
+    }
+    objects.push_back(std::move(object));
   }
   Json bounds = Json::array();
   for (const FrameBounds& b : m.frame_bounds) {
@@ -172,6 +179,8 @@ CacheManifest read_manifest(const std::filesystem::path& path) {
       entry.obj = files.at("obj").get<std::string>();
       entry.pc2 = files.value("pc2", "");
       entry.mdd = files.value("mdd", "");
+      entry.source_vertex_count = o.value("source_vertex_count", Index{0});
+      entry.source_vertices = o.value("source_vertices", std::vector<Index>{});
       m.objects.push_back(std::move(entry));
     }
     for (const Json& b : json.at("frame_bounds")) {

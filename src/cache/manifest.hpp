@@ -31,6 +31,11 @@ struct CacheObjectEntry {
   std::string obj;
   std::string pc2;
   std::string mdd;
+  // Where its mesh file numbers its vertices (an OBJ's `v` lines): how many the file has, and,
+  // unless its points are exactly the file's vertices in order, each point's 0-based vertex
+  // number there (−1 for none): the map from the caches to the artist's own mesh.
+  Index source_vertex_count = 0;  // 0: no such file
+  std::vector<Index> source_vertices;
 };
 
 // Columns of numbers, one row per frame: the energy report of `dinam simulate --energy`.

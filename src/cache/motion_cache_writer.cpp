@@ -113,6 +113,23 @@ void move_into_place(const std::filesystem::path& from, const std::filesystem::p
   }
 }
 
+// The object's map to its mesh file's vertices, where it has one that is not the identity.
+void set_source_vertices(const Model& model, const ModelObject& object, CacheObjectEntry& entry) {
+  if (object.source_vertex_count == 0 || model.node_source_vertex.empty()) {
+    return;
+  }
+  entry.source_vertex_count = object.source_vertex_count;
+  const auto first = model.node_source_vertex.begin() + object.first_node;
+  const std::vector<Index> sources(first, first + object.node_count);
+  bool identity = object.node_count == object.source_vertex_count;
+  for (Index k = 0; identity && k < object.node_count; ++k) {
+    identity = sources[k] == k;
+  }
+  if (!identity) {
+    entry.source_vertices = sources;
+  }
+}
+
 }  // namespace
 
 std::string cache_file_stem(const std::string& object_name) {
@@ -165,8 +182,16 @@ void MotionCacheWriter::open_files(const Model& model) {
       stem = fmt::format("{}_{}", stem, o);
       stems.insert(stem);
     }
-    CacheObjectEntry entry{
-        object.name, object.first_node, object.node_count, object.bar_count, stem + ".obj", "", ""};
+    CacheObjectEntry entry{object.name,
+                           object.first_node,
+                           object.node_count,
+                           object.bar_count,
+                           stem + ".obj",
+                           "",
+                           "",
+                           0,
+                           {}};
+    set_source_vertices(model, object, entry);
     write_obj(temporary_ / entry.obj, rest_mesh(model, o));
     ObjectFiles files{object.first_node, object.node_count, {}};
     PointCacheHeader header;

@@ -31,8 +31,10 @@ struct ModelObject {
   double wire_radius = 0.0;   // m; 0 when the section was given by its area
   double section_area = 0.0;  // m²
   Vec3f color{0.8f, 0.8f, 0.8f};
-  double render_radius = 0.0;  // m; 0 means "choose from the wire radius and the scene size"
-  bool has_uvs = false;        // its mesh gave texture coordinates (Model::node_uv)
+  double render_radius = 0.0;     // m; 0 means "choose from the wire radius and the scene size"
+  bool has_uvs = false;           // its mesh gave texture coordinates (Model::node_uv)
+  Index source_vertex_count = 0;  // vertices of its mesh file's own list (node_source_vertex)
+  std::vector<MeshElementOrigin> origins;  // its mesh file's materials and groups (face_origin)
 };
 
 // A field force resolved to node ids.
@@ -156,6 +158,9 @@ struct Model {
   std::vector<double> node_inv_mass;     // (n_nodes) 1/kg; 0 for pinned nodes, which never move
   std::vector<Index> node_object;        // (n_nodes) object id
   std::vector<Eigen::Vector2f> node_uv;  // (n_nodes) texture coordinates, for drawing only
+  // (n_nodes) the node's 0-based vertex number in its object's mesh file (an OBJ's `v` lines), −1
+  // where the file has no such list. Nodes of such a file are numbered in that order.
+  std::vector<Index> node_source_vertex;
 
   // Bars: one per unique mesh edge, an axial spring k = EA/L0 and a damper between n0 and n1.
   std::vector<Index> bar_nodes;             // (n_bars × 2) n0, n1
@@ -207,6 +212,10 @@ struct Model {
   // face k has nodes face_nodes[face_offsets[k] .. face_offsets[k + 1]).
   std::vector<Index> face_offsets;  // (n_faces + 1)
   std::vector<Index> face_nodes;    // (sum of face sizes)
+  // (sum of face sizes, or 0 when no object has texture coordinates) each corner's, v from the
+  // top; zeros in objects without. A node on a texture seam has a different one in each face.
+  std::vector<Eigen::Vector2f> face_uv;
+  std::vector<Index> face_origin;  // (n_faces) into its object's `origins`, or −1
 
   // Whether some spring of each kind can flow plastically (else its yield array is empty).
   bool bars_yield = false;

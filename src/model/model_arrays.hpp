@@ -24,6 +24,7 @@ void for_each_model_array(ModelType& model, Visit&& visit) {
   visit(std::string_view("node_inv_mass"), model.node_inv_mass);
   visit(std::string_view("node_object"), model.node_object);
   visit(std::string_view("node_uv"), model.node_uv);
+  visit(std::string_view("node_source_vertex"), model.node_source_vertex);
 
   visit(std::string_view("bar_nodes"), model.bar_nodes);
   visit(std::string_view("bar_rest_length"), model.bar_rest_length);
@@ -57,6 +58,8 @@ void for_each_model_array(ModelType& model, Visit&& visit) {
 
   visit(std::string_view("face_offsets"), model.face_offsets);
   visit(std::string_view("face_nodes"), model.face_nodes);
+  visit(std::string_view("face_uv"), model.face_uv);
+  visit(std::string_view("face_origin"), model.face_origin);
 
   for (auto& field : model.fields) {
     visit(std::string_view("fields.nodes"), field.nodes);

@@ -158,6 +158,36 @@ std::vector<int> edge_parts(const ObjectDesc& object, const CleanedMesh& clean,
   return part_of_edge;
 }
 
+// Each welded vertex's number in the mesh file (RawMesh::source_vertex): the least of the vertices
+// welded into it, −1 where none has one.
+std::vector<Index> welded_sources(const RawMesh& mesh, const WeldResult& weld) {
+  std::vector<Index> source(weld.nodes.size(), -1);
+  for (std::size_t v = 0; v < mesh.source_vertex.size(); ++v) {
+    Index& s = source[weld.node_of_vertex[v]];
+    const Index candidate = mesh.source_vertex[v];
+    if (candidate >= 0 && (s < 0 || candidate < s)) {
+      s = candidate;
+    }
+  }
+  return source;
+}
+
+// The order in which welded vertices become nodes: the file's own vertex order where the file has
+// one (an OBJ's `v` lines), so that the caches' points are the file's vertices in order; then the
+// rest in the order they first occur.
+std::vector<Index> node_order(const std::vector<Index>& source_of_welded) {
+  std::vector<Index> order(source_of_welded.size());
+  for (std::size_t w = 0; w < order.size(); ++w) {
+    order[w] = static_cast<Index>(w);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
+    const Index sa = source_of_welded[a];
+    const Index sb = source_of_welded[b];
+    return sb < 0 ? sa >= 0 : (sa >= 0 && sa < sb);
+  });
+  return order;
+}
+
 std::string where_in_file(const ObjectDesc& object) {
   return object.mesh_loc.known() ? object.mesh_loc.to_string() : "dinam";
 }
@@ -189,11 +219,12 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
                                          object.name, clean.summary()));
   }
 
-  // Only welded vertices that end a bar become nodes; ids stay in first-occurrence order.
+  // Only welded vertices that end a bar become nodes.
   std::vector<Index> node_of_welded(weld.nodes.size(), -1);
   for (const auto& [a, b] : edges) {
     node_of_welded[a] = node_of_welded[b] = 0;
   }
+  const std::vector<Index> source_of_welded = welded_sources(object.mesh, weld);
   ModelObject info;
   info.name = object.name;
   info.first_node = model.node_count();
@@ -214,11 +245,12 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
     }
   }
   Index next = info.first_node;
-  for (std::size_t w = 0; w < weld.nodes.size(); ++w) {
+  for (const Index w : node_order(source_of_welded)) {
     if (node_of_welded[w] < 0) {
       continue;
     }
     node_of_welded[w] = next++;
+    model.node_source_vertex.push_back(source_of_welded[w]);
     model.node_initial_x.push_back(weld.nodes[w]);
     model.node_initial_v.push_back(object.initial_velocity);
     model.node_mass.push_back(0.0);
@@ -227,6 +259,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
     model.node_uv.push_back(welded_uv[w]);
   }
   info.node_count = next - info.first_node;
+  info.source_vertex_count = object.mesh.source_vertex_count;
   info.bar_count = static_cast<Index>(edges.size());
   model.objects.push_back(std::move(info));
   ObjectNodes nodes{&object, object_id, {}, {}};
@@ -239,9 +272,21 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
   // half to each end.
   const std::vector<int> part_of_edge =
       edge_parts(object, clean, weld, edges, node_of_welded, nodes, model);
+  // Bars in the order of their nodes' ids, so that a thread's share is a few long runs (`edges`
+  // stay in the order of welded ids, which the lookups above search).
+  std::vector<std::size_t> bar_order(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
-    const Index n0 = node_of_welded[edges[e].first];
-    const Index n1 = node_of_welded[edges[e].second];
+    bar_order[e] = e;
+  }
+  const auto node_ids = [&](std::size_t e) {
+    const Index a = node_of_welded[edges[e].first];
+    const Index b = node_of_welded[edges[e].second];
+    return std::pair{std::min(a, b), std::max(a, b)};
+  };
+  std::sort(bar_order.begin(), bar_order.end(),
+            [&](std::size_t x, std::size_t y) { return node_ids(x) < node_ids(y); });
+  for (const std::size_t e : bar_order) {
+    const auto [n0, n1] = node_ids(e);
     const MaterialDesc& material =
         part_of_edge[e] >= 0 ? object.parts[part_of_edge[e]].material : object.material;
     nodes.bar_materials.push_back(&material);
@@ -258,11 +303,32 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
     model.node_mass[n1] += half_mass;
   }
 
-  for (const auto& face : clean.faces) {
-    for (const Index vertex : face) {
+  // Faces, with each corner's texture coordinates (a node on a seam has one per side) and the
+  // material and groups the file gave each face, for the rest mesh the caches move.
+  std::vector<Index> mesh_face_of_kept(clean.faces.size(), -1);
+  for (std::size_t f = 0; f < clean.kept_face.size(); ++f) {
+    if (clean.kept_face[f] >= 0) {
+      mesh_face_of_kept[clean.kept_face[f]] = static_cast<Index>(f);
+    }
+  }
+  const bool has_uvs = !object.mesh.uvs.empty();
+  if (has_uvs && model.face_uv.size() < model.face_nodes.size()) {
+    model.face_uv.resize(model.face_nodes.size(), Eigen::Vector2f::Zero());
+  }
+  model.objects.back().origins = object.mesh.origins;
+  for (std::size_t k = 0; k < clean.faces.size(); ++k) {
+    for (const Index vertex : clean.faces[k]) {
       model.face_nodes.push_back(node_of_welded[weld.node_of_vertex[vertex]]);
+      if (has_uvs) {
+        model.face_uv.push_back(object.mesh.uvs[vertex].cast<float>());
+      } else if (!model.face_uv.empty()) {
+        model.face_uv.emplace_back(Eigen::Vector2f::Zero());
+      }
     }
     model.face_offsets.push_back(static_cast<Index>(model.face_nodes.size()));
+    const Index mesh_face = mesh_face_of_kept[k];
+    model.face_origin.push_back(
+        object.mesh.face_origin.empty() || mesh_face < 0 ? -1 : object.mesh.face_origin[mesh_face]);
   }
   return nodes;
 }

@@ -37,9 +37,11 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
 // A time profile: constant, step, ramp or sine.
 TimeProfile read_profile(YamlMap map);
 
-// A set of an object's vertices: `all`, `indices`, `box` (one or a list). Where `clamped` is
-// given, the map may also hold `clamped: true/false` (pinned sets), which it receives.
-NodeSelection read_nodes(YamlMap map, std::size_t vertex_count, bool* clamped = nullptr);
+// A set of an object's vertices: `all`, `indices`, `box` (one or a list). Indices are `mesh`'s
+// vertex ids, but for an OBJ file the numbers of its `v` lines (from 0), turned into `mesh`'s ids
+// here. Where `clamped` is given, the map may also hold `clamped: true/false` (pinned sets), which
+// it receives.
+NodeSelection read_nodes(YamlMap map, const RawMesh& mesh, bool* clamped = nullptr);
 
 // `friction: {static, kinetic}` (and, where `stick` is given, `stick: true/false`): the
 // coefficients must be ≥ 0 and kinetic ≤ static; kinetic defaults to the lesser of its default and

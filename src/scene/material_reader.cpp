@@ -144,8 +144,7 @@ MaterialPartDesc read_material_part(YamlMap part, const RawMesh& mesh) {
                      part.name());
   }
   if (part.has("nodes")) {
-    desc.nodes = read_nodes(YamlMap(part.get("nodes"), part.file(), part.path("nodes")),
-                            mesh.vertices.size());
+    desc.nodes = read_nodes(YamlMap(part.get("nodes"), part.file(), part.path("nodes")), mesh);
   } else {
     const bool by_material = part.has("mesh_material");
     const char* key = by_material ? "mesh_material" : "mesh_group";

@@ -2,9 +2,7 @@
 // `weld`. docs/scene-format.md documents every key read here; keep the two together.
 #include <yaml-cpp/yaml.h>
 
-#include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -119,11 +117,10 @@ void read_weld(YamlMap& map, ObjectDesc& object) {
 // glTF is y-up by its specification, assimp turns a Collada file y-up whatever its <up_axis>, and
 // Blender writes OBJ files y-up unless told otherwise (Up Axis: Y is its exporter's default).
 std::string y_up_hint(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = lower_extension(file);
   if (extension == ".gltf" || extension == ".glb") {
-    return "glTF files are y-up by their specification (Blender's glTF export turns z-up into y-up)";
+    return "glTF files are y-up by their specification (Blender's glTF export turns z-up into "
+           "y-up)";
   }
   if (extension == ".dae") {
     return "assimp turns Collada files y-up whatever their <up_axis>";

@@ -36,7 +36,21 @@ BoxDesc read_box(YamlMap map) {
 
 }  // namespace
 
-NodeSelection read_nodes(YamlMap map, std::size_t vertex_count, bool* clamped) {
+NodeSelection read_nodes(YamlMap map, const RawMesh& mesh, bool* clamped) {
+  // An OBJ file's vertices are numbered as its `v` lines (as the program that wrote it numbers
+  // them); assimp's own vertices, one per face corner, are not what a user can see.
+  const bool file_numbers = !mesh.source_vertex.empty();
+  const std::size_t vertex_count =
+      file_numbers ? static_cast<std::size_t>(mesh.source_vertex_count) : mesh.vertices.size();
+  std::vector<Index> vertex_of_number;
+  if (file_numbers) {
+    vertex_of_number.assign(vertex_count, -1);
+    for (std::size_t v = mesh.source_vertex.size(); v-- > 0;) {
+      if (mesh.source_vertex[v] >= 0) {
+        vertex_of_number[mesh.source_vertex[v]] = static_cast<Index>(v);
+      }
+    }
+  }
   NodeSelection pins;
   pins.loc = map.loc();
   if (clamped != nullptr) {
@@ -57,7 +71,13 @@ NodeSelection read_nodes(YamlMap map, std::size_t vertex_count, bool* clamped) {
                          "(0 to {})",
                          id, vertex_count, vertex_count - 1);
       }
-      pins.vertex_ids.push_back(id);
+      if (file_numbers && vertex_of_number[id] < 0) {
+        throw_user_error(loc_of(indices[i], map.file()),
+                         "vertex {} of the mesh file is on no face or line, so it is not a node "
+                         "of the structure",
+                         id);
+      }
+      pins.vertex_ids.push_back(file_numbers ? vertex_of_number[id] : id);
     }
   }
   const YAML::Node box = map.get("box");
@@ -85,7 +105,7 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
       read_material(YamlMap(map.required("material"), map.file(), map.path("material")));
   if (map.has("pinned")) {
     object.pins = read_nodes(YamlMap(map.get("pinned"), map.file(), map.path("pinned")),
-                             object.mesh.vertices.size(), &object.pins_clamped);
+                             object.mesh, &object.pins_clamped);
   }
   if (map.has("pin_motion")) {
     YamlMap motion(map.get("pin_motion"), map.file(), map.path("pin_motion"));
@@ -113,7 +133,7 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
       YamlMap group(groups[i], map.file(), fmt::format("{}[{}]", map.path("velocity_groups"), i));
       VelocityGroupDesc desc;
       desc.nodes = read_nodes(YamlMap(group.required("nodes"), map.file(), group.path("nodes")),
-                              object.mesh.vertices.size());
+                              object.mesh);
       desc.velocity = group.required_vec3("velocity");
       group.finish();
       object.velocity_groups.push_back(std::move(desc));

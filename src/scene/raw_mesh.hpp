@@ -26,6 +26,10 @@ struct RawMesh {
   std::vector<std::vector<Index>> lines;  // open chains of vertex ids: every segment is an edge
   std::filesystem::path texture;     // the diffuse texture a mesh file's material names, if any
   std::vector<Eigen::Vector2d> uvs;  // (n_vertices) texture coordinates, v from the top; or empty
+  // (n_vertices) each vertex's 0-based number in the file's own list of vertices (an OBJ's `v`
+  // lines), −1 where not found; empty when the file has no such list dinam reads.
+  std::vector<Index> source_vertex;
+  Index source_vertex_count = 0;  // vertices in that list
   // A file's materials and groups: each face and line names its origin. Empty for generated meshes.
   std::vector<MeshElementOrigin> origins;
   std::vector<Index> face_origin;  // (n_faces) into origins, or empty

@@ -174,8 +174,8 @@ FieldForceDesc read_field(YamlMap map, const std::vector<ObjectDesc>& objects) {
       throw_user_error(map.loc("nodes"), "'{}' needs 'object': node ids belong to one object",
                        map.path("nodes"));
     }
-    field.nodes = read_nodes(YamlMap(map.get("nodes"), map.file(), map.path("nodes")),
-                             object->mesh.vertices.size());
+    field.nodes =
+        read_nodes(YamlMap(map.get("nodes"), map.file(), map.path("nodes")), object->mesh);
   }
   if (map.has("profile")) {
     field.profile = read_profile(YamlMap(map.get("profile"), map.file(), map.path("profile")));

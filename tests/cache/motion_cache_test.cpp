@@ -87,6 +87,39 @@ TEST(MotionCache, FramesReadBackBitForBitWithTheBoundsOfTheWholeMotion) {
   EXPECT_EQ(chunk.motion.max, s.frames.motion.max);
 }
 
+// An object from an OBJ file maps its points to the file's vertices in the manifest where they
+// are not the file's vertices one for one (out_of_order.obj drops vertex 4 and welds vertex 5),
+// and says nothing where they are (rope.obj) or where there is no file (a polyline).
+TEST(MotionCache, TheManifestMapsPointsToTheMeshFilesVertices) {
+  const Simulated s = simulate(R"(version: 1
+duration: 0.2
+fps: 10
+objects:
+  - name: square
+    mesh: {file: out_of_order.obj}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
+    pinned: {all: true}
+  - name: rope
+    mesh: {file: rope.obj, translation: [0, 0, 1]}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
+    pinned: {all: true}
+  - name: line
+    mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
+    pinned: {all: true}
+)");
+  const test::TemporaryFolder folder("cache");
+  write_cache(s, folder.path() / "cache");
+  const CacheManifest manifest = MotionCache(folder.path() / "cache").manifest();
+  ASSERT_EQ(manifest.objects.size(), 3u);
+  EXPECT_EQ(manifest.objects[0].source_vertex_count, 6);
+  EXPECT_EQ(manifest.objects[0].source_vertices, (std::vector<Index>{0, 1, 2, 3}));
+  EXPECT_EQ(manifest.objects[1].source_vertex_count, 5);
+  EXPECT_TRUE(manifest.objects[1].source_vertices.empty());
+  EXPECT_EQ(manifest.objects[2].source_vertex_count, 0);
+  EXPECT_TRUE(manifest.objects[2].source_vertices.empty());
+}
+
 // A rope that tears: its tears travel in the manifest, so frames drawn from the cache (in any
 // chunk) lose the same bars from the same frames as the simulation's.
 TEST(MotionCache, TearsReadBackWithTheFrames) {

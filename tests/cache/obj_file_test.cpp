@@ -77,5 +77,34 @@ TEST(ObjFile, EachObjectIsWrittenInNodeOrderWithItsFacesAndLooseBars) {
   EXPECT_TRUE(sheet.lines.empty());  // every bar of the grid is on a face
 }
 
+// The rest mesh keeps what the artist's file had beyond positions: each corner's texture
+// coordinates (as the file wrote them, v up) and the groups and materials of its faces.
+TEST(ObjFile, TextureCoordinatesGroupsAndMaterialsOfTheMeshFileAreKept) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 0.1
+objects:
+  - name: quad
+    mesh: {file: textured_quad.obj, translation: [0, 0, 1]}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
+  - name: banner
+    mesh: {file: banner.obj, translation: [0, 0, 1]}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.004}
+)"));
+  const test::TemporaryFolder folder("obj");
+  std::vector<std::string> texts;
+  for (std::size_t o = 0; o < 2; ++o) {
+    const auto path = folder.path() / (model.objects[o].name + ".obj");
+    write_obj(path, rest_mesh(model, o));
+    std::ifstream in(path);
+    texts.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  // textured_quad.obj: vt (0 0) (1 0) (1 1) (0 1) at its corners 1 2 3 4, material "painted".
+  test::expect_contains(
+      texts[0], {"vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n", "usemtl painted\n", "f 1/1 2/2 3/3 4/4\n"});
+  // banner.obj: its triangles in group "cloth" of material "fabric", no texture coordinates.
+  test::expect_contains(texts[1], {"g cloth\nusemtl fabric\nf 1 2 3\nf 1 3 4\n"});
+  EXPECT_EQ(texts[1].find("vt "), std::string::npos);
+}
+
 }  // namespace
 }  // namespace dinam

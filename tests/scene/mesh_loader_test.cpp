@@ -115,6 +115,70 @@ objects:
   EXPECT_TRUE(warnings_of("cube.obj").empty());
 }
 
+// The nodes of an OBJ file are numbered as its `v` lines, whatever order its faces meet them in,
+// so that a point cache written in node order moves the artist's own object.
+TEST(MeshLoader, NodesFollowAnObjFilesVertexOrder) {
+  const Model model = model_of_file("out_of_order.obj");
+  ASSERT_EQ(model.node_count(), 4);
+  EXPECT_EQ(model.objects[0].source_vertex_count, 6);
+  const std::vector<Vec3> file_order{{0, 0, 1}, {1, 0, 1}, {1, 0, 2}, {0, 0, 2}};
+  for (Index k = 0; k < 4; ++k) {
+    EXPECT_EQ(model.node_source_vertex[k], k);
+    EXPECT_EQ(model.node_initial_x[k], file_order[k]) << k;
+  }
+  // Bars follow their nodes' ids.
+  for (Index b = 1; b < model.bar_count(); ++b) {
+    const auto ids = [&](Index bar) {
+      return std::pair{std::min(model.bar_nodes[2 * bar], model.bar_nodes[2 * bar + 1]),
+                       std::max(model.bar_nodes[2 * bar], model.bar_nodes[2 * bar + 1])};
+    };
+    EXPECT_LT(ids(b - 1), ids(b));
+  }
+  // A generated mesh has no file numbering.
+  const Model grid = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - mesh: {grid: {width: 1, height: 1, columns: 2, rows: 2}}
+    material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}
+)"));
+  EXPECT_EQ(grid.objects[0].source_vertex_count, 0);
+  for (const Index source : grid.node_source_vertex) {
+    EXPECT_EQ(source, -1);
+  }
+}
+
+// `indices` of an OBJ file are the numbers of its `v` lines, as the program that wrote it (and the
+// user) sees them, not assimp's vertex per face corner.
+TEST(MeshLoader, IndicesOfAnObjFileAreItsVertexNumbers) {
+  const auto scene_pinning = [](int index) {
+    return test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - mesh: {{file: out_of_order.obj}}
+    material: {{density: 1000, youngs_modulus: 1e6, radius: 0.01}}
+    pinned: {{indices: [{}]}}
+)",
+                                             index));
+  };
+  const Model model = build_model(scene_pinning(2));
+  for (Index k = 0; k < model.node_count(); ++k) {
+    EXPECT_EQ(model.pinned(k), k == 2) << k;
+  }
+  EXPECT_EQ(model.node_initial_x[2], Vec3(1, 0, 2));  // the file's v line 2 (from 0)
+  try {
+    scene_pinning(4);
+    ADD_FAILURE() << "vertex 4 is on no face";
+  } catch (const UserError& e) {
+    test::expect_contains(e.message(), {"vertex 4 of the mesh file is on no face or line"});
+  }
+  try {
+    scene_pinning(6);
+    ADD_FAILURE() << "the file has 6 vertices";
+  } catch (const UserError& e) {
+    test::expect_contains(e.message(), {"the mesh has 6 vertices"});
+  }
+}
+
 // banner.obj: two triangles in group "cloth" of material "fabric", two lines in group "ropes" of
 // material "rope" (see the file). Every element keeps where it came from.
 TEST(MeshLoader, FacesAndLinesKeepTheFilesMaterialsAndGroups) {
