@@ -1,0 +1,230 @@
+"""dinam in Blender: simulate the selected meshes as flexible structures and play the motion.
+
+The panel (3D View > Sidebar > dinam) takes the selected mesh objects, a material (a preset or its
+values), pins from a vertex group, gravity and wind; Simulate writes each object as OBJ and a scene
+file, runs `dinam simulate` on them as a separate program (a progress bar and a Cancel button while
+it runs; Esc cancels too), and gives each object a Mesh Cache modifier on its point cache. The
+frames are the scene's: its frame range at its frame rate.
+"""
+import os
+
+import bpy
+
+from . import cache_attach, dinam_run, scene_export
+
+bl_info = {
+    "name": "dinam",
+    "author": "dinam",
+    "version": (0, 1, 0),
+    "blender": (3, 4, 0),
+    "location": "3D View > Sidebar > dinam",
+    "description": "Simulate meshes as flexible structures (rigid bar spring model) with dinam",
+    "category": "Physics",
+}
+
+
+def apply_preset(settings, _context):
+    if settings.preset in scene_export.PRESETS:
+        _, _, density, modulus, radius, ratio = scene_export.PRESETS[settings.preset]
+        settings.density, settings.youngs_modulus = density, modulus
+        settings.radius, settings.damping_ratio = radius, ratio
+
+
+class DinamSettings(bpy.types.PropertyGroup):
+    program: bpy.props.StringProperty(
+        name="dinam", description="The dinam program (a path, or a name on PATH)",
+        default="dinam", subtype="FILE_PATH")
+    folder: bpy.props.StringProperty(
+        name="Folder", description="Where the OBJ files, the scene and the cache go",
+        default="//dinam", subtype="DIR_PATH")
+    preset: bpy.props.EnumProperty(
+        name="Material",
+        items=[(key, v[0], v[1]) for key, v in scene_export.PRESETS.items()] +
+              [("CUSTOM", "Custom", "The values below")],
+        default="CLOTH", update=apply_preset)
+    density: bpy.props.FloatProperty(name="Density (kg/m³)", default=1200.0, min=1e-3)
+    youngs_modulus: bpy.props.FloatProperty(name="Young's modulus (Pa)", default=2.0e7, min=1e-3)
+    radius: bpy.props.FloatProperty(name="Wire radius (m)", default=0.001, min=1e-6,
+                                    precision=4)
+    damping_ratio: bpy.props.FloatProperty(name="Damping ratio", default=0.05, min=0.0, max=1.0)
+    pin_group: bpy.props.StringProperty(
+        name="Pins", description="Vertex group whose vertices (weight above 0.5) never move")
+    gravity: bpy.props.FloatVectorProperty(name="Gravity (m/s²)", default=(0.0, 0.0, -9.81))
+    wind: bpy.props.FloatVectorProperty(name="Wind (m/s)", default=(0.0, 0.0, 0.0))
+    progress: bpy.props.FloatProperty(name="Progress", subtype="PERCENTAGE", min=0, max=100)
+    running: bpy.props.BoolProperty(default=False)
+    cancel_requested: bpy.props.BoolProperty(default=False)
+
+
+class Simulation:
+    """One run: the files written, dinam running, and the objects to attach it to."""
+
+    def __init__(self, context):
+        settings = context.scene.dinam
+        self.objects = [o for o in context.selected_objects if o.type == "MESH"]
+        if not self.objects:
+            raise scene_export.ExportError("select the mesh objects to simulate")
+        program = dinam_run.find_dinam(bpy.path.abspath(settings.program))
+        if program is None:
+            raise scene_export.ExportError(
+                f"cannot find the dinam program '{settings.program}': set its path in the panel")
+        folder = bpy.path.abspath(settings.folder)
+        inputs = os.path.join(folder, "input")
+        os.makedirs(inputs, exist_ok=True)
+        described = []
+        for obj in self.objects:
+            scene_export.check_mesh(obj)
+            path = os.path.join(inputs, scene_export.object_file_stem(obj.name) + ".obj")
+            scene_export.write_obj(obj, path)
+            described.append((obj.name, path, scene_export.pinned_indices(obj, settings.pin_group)))
+        scene = context.scene
+        fps = scene.render.fps / scene.render.fps_base
+        frames = scene.frame_end - scene.frame_start + 1
+        scene_file = os.path.join(inputs, "scene.yaml")
+        with open(scene_file, "w") as f:
+            f.write(scene_export.scene_text(settings, described, frames, fps))
+        self.cache = os.path.join(folder, "cache")
+        self.local = os.path.join(folder, "local")
+        self.run = dinam_run.DinamRun(program, scene_file, self.cache)
+
+    def finish(self, context, code):
+        """Attaches the cache after a successful run; returns an error message or None."""
+        if code != 0:
+            said = self.run.message().strip()
+            return said or f"dinam stopped with exit code {code}"
+        try:
+            cache_attach.attach(context, self.objects, self.cache, self.local)
+        except cache_attach.AttachError as e:
+            return str(e)
+        return None
+
+
+class DINAM_OT_simulate(bpy.types.Operator):
+    """Simulate the selected meshes with dinam and play the motion with Mesh Cache modifiers"""
+
+    bl_idname = "dinam.simulate"
+    bl_label = "Simulate"
+    bl_options = {"REGISTER"}
+
+    _timer = None
+    _simulation = None
+
+    @classmethod
+    def poll(cls, context):
+        return not context.scene.dinam.running
+
+    def start(self, context):
+        try:
+            self._simulation = Simulation(context)
+        except scene_export.ExportError as e:
+            self.report({"ERROR"}, str(e))
+            return False
+        return True
+
+    def end(self, context, code):
+        error = self._simulation.finish(context, code)
+        if error:
+            self.report({"ERROR"}, error)
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"dinam: {len(self._simulation.objects)} objects simulated")
+        return {"FINISHED"}
+
+    # From a script or in the background: waits for dinam.
+    def execute(self, context):
+        if not self.start(context):
+            return {"CANCELLED"}
+        return self.end(context, self._simulation.run.wait())
+
+    # From the panel: dinam runs while Blender stays responsive.
+    def invoke(self, context, _event):
+        if not self.start(context):
+            return {"CANCELLED"}
+        settings = context.scene.dinam
+        settings.running, settings.cancel_requested, settings.progress = True, False, 0.0
+        wm = context.window_manager
+        self._timer = wm.event_timer_add(0.2, window=context.window)
+        wm.modal_handler_add(self)
+        wm.progress_begin(0, 100)
+        return {"RUNNING_MODAL"}
+
+    def modal(self, context, event):
+        settings = context.scene.dinam
+        if event.type == "ESC" or settings.cancel_requested:
+            self._simulation.run.cancel()
+            self.stop(context)
+            self.report({"WARNING"}, "dinam: cancelled; the objects are as they were")
+            return {"CANCELLED"}
+        if event.type != "TIMER":
+            return {"PASS_THROUGH"}
+        code = self._simulation.run.poll()
+        settings.progress = 100.0 * self._simulation.run.fraction
+        context.window_manager.progress_update(settings.progress)
+        for area in context.screen.areas:
+            if area.type == "VIEW_3D":
+                area.tag_redraw()
+        if code is None:
+            return {"PASS_THROUGH"}
+        self.stop(context)
+        return self.end(context, code)
+
+    def stop(self, context):
+        settings = context.scene.dinam
+        settings.running = False
+        context.window_manager.event_timer_remove(self._timer)
+        context.window_manager.progress_end()
+
+
+class DINAM_OT_cancel(bpy.types.Operator):
+    """Stop the running simulation; the objects keep what they had"""
+
+    bl_idname = "dinam.cancel"
+    bl_label = "Cancel"
+
+    def execute(self, context):
+        context.scene.dinam.cancel_requested = True
+        return {"FINISHED"}
+
+
+class DINAM_PT_panel(bpy.types.Panel):
+    bl_label = "dinam"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "dinam"
+
+    def draw(self, context):
+        settings = context.scene.dinam
+        layout = self.layout
+        layout.prop(settings, "program")
+        layout.prop(settings, "folder")
+        layout.prop(settings, "preset")
+        column = layout.column()
+        column.enabled = settings.preset == "CUSTOM"
+        for key in ("density", "youngs_modulus", "radius", "damping_ratio"):
+            column.prop(settings, key)
+        obj = context.active_object
+        if obj is not None and obj.type == "MESH":
+            layout.prop_search(settings, "pin_group", obj, "vertex_groups")
+        layout.prop(settings, "gravity")
+        layout.prop(settings, "wind")
+        if settings.running:
+            row = layout.row()
+            row.enabled = False
+            row.prop(settings, "progress", slider=True)
+            layout.operator("dinam.cancel", icon="CANCEL")
+        else:
+            layout.operator("dinam.simulate", icon="PHYSICS")
+
+
+CLASSES = (DinamSettings, DINAM_OT_simulate, DINAM_OT_cancel, DINAM_PT_panel)
+
+
+def register():
+    for cls in CLASSES:
+        bpy.utils.register_class(cls)
+    bpy.types.Scene.dinam = bpy.props.PointerProperty(type=DinamSettings)
+
+
+def unregister():
+    del bpy.types.Scene.dinam
+    for cls in reversed(CLASSES):
+        bpy.utils.unregister_class(cls)

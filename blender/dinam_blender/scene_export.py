@@ -1,0 +1,107 @@
+"""What the add-on hands dinam: each selected object's mesh as an OBJ file and one scene file.
+
+The OBJ holds the object's own vertices in its own order (one `v` line per vertex, in world
+coordinates, so that gravity points down whatever the object's transform), its faces and its loose
+edges as line elements. dinam numbers the nodes of an OBJ file in the order of its `v` lines, so
+point k of the cache dinam writes is the object's vertex k.
+"""
+import json
+import os
+
+# Materials as dinam's scene file gives them (docs/scene-format.md, `material`): density kg/m³,
+# Young's modulus Pa, wire radius m, and the bars' damping ratio.
+PRESETS = {
+    "CLOTH": ("Cloth", "A woven flag or sheet: the paper's flag", 1200.0, 2.0e7, 0.001, 0.05),
+    "RUBBER": ("Rubber", "A soft rubber wire or membrane", 1100.0, 5.0e7, 0.004, 0.05),
+    "ROPE": ("Rope", "A nylon rope", 1140.0, 2.0e9, 0.005, 0.05),
+    "STEEL": ("Steel wire", "A thin steel wire: stiff, so small steps", 7850.0, 2.0e11, 0.001, 0.02),
+}
+
+
+class ExportError(Exception):
+    """A reason the selection cannot be simulated, worded for the artist."""
+
+
+def object_file_stem(name):
+    """A file name for an object: letters, digits, '-', '_' and '.' kept, anything else '_'."""
+    stem = "".join(c if c.isalnum() or c in "-_." else "_" for c in name)
+    return stem if stem and not stem.startswith(".") else "object" + stem
+
+
+def check_mesh(obj):
+    """Raises ExportError where the object's vertices cannot all become nodes of the cache."""
+    mesh = obj.data
+    if len(mesh.edges) == 0:
+        raise ExportError(f"'{obj.name}' has no edges: dinam makes a bar of every edge")
+    on_edge = [False] * len(mesh.vertices)
+    for edge in mesh.edges:
+        on_edge[edge.vertices[0]] = on_edge[edge.vertices[1]] = True
+    loose = on_edge.count(False)
+    if loose:
+        raise ExportError(
+            f"'{obj.name}' has {loose} vertices on no edge, which dinam drops, so its cache would "
+            "not match the object vertex for vertex: delete them (Mesh > Clean Up > Delete Loose)")
+
+
+def write_obj(obj, path):
+    """Writes the object's mesh (without its modifiers) in world coordinates."""
+    mesh = obj.data
+    world = obj.matrix_world
+    lines = [f"# {obj.name}: written by the dinam Blender add-on, one v per vertex in order",
+             f"o {object_file_stem(obj.name)}"]
+    for vertex in mesh.vertices:
+        p = world @ vertex.co
+        lines.append(f"v {p.x!r} {p.y!r} {p.z!r}")
+    for polygon in mesh.polygons:
+        lines.append("f " + " ".join(str(v + 1) for v in polygon.vertices))
+    for edge in mesh.edges:
+        if edge.is_loose:
+            lines.append(f"l {edge.vertices[0] + 1} {edge.vertices[1] + 1}")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def pinned_indices(obj, group_name):
+    """The vertices of `group_name` with a weight above one half, or [] without the group."""
+    group = obj.vertex_groups.get(group_name) if group_name else None
+    if group is None:
+        return []
+    pinned = []
+    for vertex in obj.data.vertices:
+        for g in vertex.groups:
+            if g.group == group.index and g.weight > 0.5:
+                pinned.append(vertex.index)
+    return pinned
+
+
+def vector(v):
+    return "[" + ", ".join(repr(float(c)) for c in v) + "]"
+
+
+def scene_text(settings, objects, frame_count, fps):
+    """The scene file for `objects` (each (name, obj file, pinned indices)); JSON's quoted
+    strings are YAML's too."""
+    lines = [
+        "# Written by the dinam Blender add-on.",
+        "version: 1",
+        "name: blender",
+        f"duration: {frame_count / fps!r}",
+        f"fps: {fps!r}",
+        "timestep: auto",
+        f"gravity: {vector(settings.gravity)}",
+    ]
+    if any(settings.wind):
+        lines.append(f"wind: {{velocity: {vector(settings.wind)}}}")
+    lines.append("objects:")
+    for name, obj_file, pins in objects:
+        lines += [
+            f"  - name: {json.dumps(name)}",
+            f"    mesh: {{file: {json.dumps(os.path.basename(obj_file))}, up_axis: z}}",
+            f"    material: {{density: {settings.density!r}, youngs_modulus: "
+            f"{settings.youngs_modulus!r}, radius: {settings.radius!r}}}",
+        ]
+        if settings.damping_ratio > 0:
+            lines.append(f"    damping: {{axial_ratio: {settings.damping_ratio!r}}}")
+        if pins:
+            lines.append(f"    pinned: {{indices: [{', '.join(str(i) for i in pins)}]}}")
+    return "\n".join(lines) + "\n"

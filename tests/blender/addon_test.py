@@ -1,0 +1,132 @@
+# The Blender add-on (blender/dinam_blender), as an artist uses it, in Blender itself (headless):
+#
+#   blender -b --factory-startup --python-exit-code 1 --python THIS -- ADDON.zip DINAM WORK
+#
+#  1. installs the zip as Preferences > Add-ons > Install does, and enables it;
+#  2. makes a plane subdivided in Blender, stood upright and moved by its object transform (not
+#     applied), pinned along its top edge by a vertex group "pins";
+#  3. runs Simulate (the operator, waiting for dinam as a script's call does) with the cloth preset
+#     and a wind, and checks the Mesh Cache modifier it added (first, PC2, from the scene's start);
+#  4. compares the object's vertices, as Blender evaluates them at the first, the middle and the
+#     last frame and places them by the object's transform, with the cache's PC2 read here with
+#     Python's struct module: to 1e-5 m (single precision through one more transform); the pins
+#     stay where they were, and the rest moved;
+#  5. refuses an object with a loose vertex, saying how to mend it, and leaves it as it was;
+#  6. runs dinam as the panel does, its progress read from dinam's stderr up to 100 %, and cancels
+#     a long run: dinam stops (exit 143, SIGTERM) and the cache of step 3 is as it was.
+# The panel's own loop (a modal operator on a timer) needs Blender's interface, which a headless
+# Blender does not run; it calls what steps 3 and 6 check.
+# Prints "addon: PASS"; raises otherwise.
+import json
+import os
+import struct
+import sys
+import time
+
+import addon_utils
+import bpy
+
+zip_path, dinam, work = sys.argv[sys.argv.index("--") + 1:]
+
+
+def read_pc2(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    signature, version, points, _, _, samples = struct.unpack_from("<12siiffi", data)
+    assert signature == b"POINTCACHE2\0" and version == 1, path
+    frame = struct.Struct(f"<{3 * points}f")
+    return [[frame.unpack_from(data, 32 + k * frame.size)[3 * i:3 * i + 3] for i in range(points)]
+            for k in range(samples)]
+
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
+bpy.ops.preferences.addon_enable(module="dinam_blender")
+assert addon_utils.check("dinam_blender")[1], "the add-on is not enabled"
+from dinam_blender import dinam_run  # noqa: E402  (installed just above)
+
+scene = bpy.context.scene
+scene.frame_start, scene.frame_end = 1, 24
+scene.render.fps, scene.render.fps_base = 24, 1.0
+
+bpy.ops.mesh.primitive_plane_add(size=1.0, location=(0.3, 0.2, 1.5), rotation=(1.5707963, 0, 0))
+banner = bpy.context.active_object
+banner.name = "Banner"
+bpy.ops.object.mode_set(mode="EDIT")
+bpy.ops.mesh.subdivide(number_cuts=5)
+bpy.ops.object.mode_set(mode="OBJECT")
+top = max((banner.matrix_world @ v.co).z for v in banner.data.vertices)
+pins = [v.index for v in banner.data.vertices if (banner.matrix_world @ v.co).z > top - 1e-6]
+banner.vertex_groups.new(name="pins").add(pins, 1.0, "REPLACE")
+rest_world = [banner.matrix_world @ v.co for v in banner.data.vertices]
+
+settings = scene.dinam
+settings.program = dinam
+settings.folder = work
+settings.preset = "CLOTH"
+settings.pin_group = "pins"
+settings.wind = (0.0, 4.0, 0.0)
+bpy.ops.object.select_all(action="DESELECT")
+banner.select_set(True)
+bpy.context.view_layer.objects.active = banner
+assert bpy.ops.dinam.simulate() == {"FINISHED"}
+
+modifier = banner.modifiers[0]
+assert modifier.type == "MESH_CACHE" and modifier.cache_format == "PC2", modifier
+assert modifier.frame_start == scene.frame_start
+cache = os.path.join(work, "cache")
+with open(os.path.join(cache, "manifest.json")) as f:
+    manifest = json.load(f)
+assert manifest["frame_count"] == 24 and manifest["fps"] == 24, manifest["frame_count"]
+cached = read_pc2(os.path.join(cache, manifest["objects"][0]["files"]["pc2"]))
+for frame in (1, 12, 24):
+    scene.frame_set(frame)
+    evaluated = banner.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    mesh = evaluated.to_mesh()
+    world = [banner.matrix_world @ v.co for v in mesh.vertices]
+    evaluated.to_mesh_clear()
+    worst = max(abs(a - b) for p, q in zip(world, cached[frame - 1]) for a, b in zip(p, q))
+    print(f"addon: frame {frame}: the object's vertices are the cache's to {worst:.2g} m")
+    assert worst <= 1e-5, worst
+    if frame == 24:
+        still = max((world[i] - rest_world[i]).length for i in pins)
+        moved = max((world[i] - rest_world[i]).length for i in range(len(world)))
+        print(f"addon: pins moved {still:.2g} m, the banner up to {moved:.3f} m")
+        assert still <= 1e-5 and moved > 0.01, (still, moved)
+
+bpy.ops.mesh.primitive_plane_add(size=1.0, location=(3, 0, 1))
+loose = bpy.context.active_object
+loose.data.vertices.add(1)  # a vertex on no edge
+bpy.ops.object.select_all(action="DESELECT")
+loose.select_set(True)
+try:
+    bpy.ops.dinam.simulate()
+    raise AssertionError("an object with a loose vertex was simulated")
+except RuntimeError as e:
+    assert "Delete Loose" in str(e), e
+    print("addon: a loose vertex is refused: " + str(e).strip().splitlines()[-1])
+assert len(loose.modifiers) == 0
+
+# The progress the panel shows comes from dinam's lines on stderr.
+short = dinam_run.DinamRun(dinam_run.find_dinam(dinam), os.path.join(work, "input", "scene.yaml"),
+                           os.path.join(work, "again"))
+assert short.wait() == 0 and short.fraction == 1.0, (short.fraction, short.message())
+print("addon: the progress reached 100 %")
+
+with open(os.path.join(cache, "manifest.json")) as f:
+    before = f.read()
+long_scene = os.path.join(work, "input", "scene.yaml")
+with open(long_scene) as f:
+    text = f.read().replace("duration: 1.0", "duration: 600.0")
+with open(long_scene, "w") as f:
+    f.write(text)
+run = dinam_run.DinamRun(dinam_run.find_dinam(dinam), long_scene, cache)
+time.sleep(1.0)
+assert run.poll() is None, "the long run ended by itself: " + run.message()
+code = run.cancel()
+assert code == 143, (code, run.message())
+with open(os.path.join(cache, "manifest.json")) as f:
+    assert f.read() == before, "a cancelled run changed the cache"
+assert not [n for n in os.listdir(work) if ".part-" in n], os.listdir(work)
+print("addon: a cancelled run leaves the cache as it was")
+print("addon: PASS")

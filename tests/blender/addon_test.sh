@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The Blender add-on installed from its zip and used headless (tests/blender/addon_test.py).
+#
+#   tests/blender/addon_test.sh DINAM SOURCE_DIR ADDON_ZIP
+#
+# Exits 77 (CTest: skipped) when Blender is not installed; scripts/install-deps.sh installs it.
+set -euo pipefail
+dinam=$(realpath "$1")
+source_dir=$(realpath "$2")
+addon=$(realpath "$3")
+if ! command -v blender >/dev/null; then
+  echo "SKIPPED: blender is not installed (scripts/install-deps.sh installs it)"
+  exit 77
+fi
+work=$(mktemp -d /tmp/dinam-addon-XXXXXX)
+# Blender installs add-ons into the user's configuration: keep this test's apart.
+export BLENDER_USER_CONFIG="$work/config" BLENDER_USER_SCRIPTS="$work/scripts"
+trap 'rm -rf "$work"' EXIT
+blender -b --factory-startup --python-exit-code 1 --python "$source_dir/tests/blender/addon_test.py" \
+  -- "$addon" "$dinam" "$work/run" >"$work/blender.log" 2>&1 || { cat "$work/blender.log"; exit 1; }
+grep '^addon:' "$work/blender.log"
+grep -q '^addon: PASS' "$work/blender.log"
