@@ -16,6 +16,8 @@ packages=(
   # (tests/cache/blender_open_test.sh), and a one-node Slurm cluster runs the render farm
   # (tests/farm/slurm_farm_test.sh; the test starts and stops its own daemons).
   blender slurm-wlm munge
+  # A real browser loads the page `dinam view` writes (tests/app/view_test.cpp), headless.
+  chromium
   # Real meshes as users download them: the sweep (tests/real_meshes/) reads assimp's own test
   # models with `dinam info`, through a Python script.
   assimp-testmodels python3

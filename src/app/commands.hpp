@@ -60,6 +60,21 @@ struct ModesOptions {
 // one cycle, with modes.csv. Throws UserError for bad input.
 int run_modes(const ModesOptions& options);
 
+struct ViewOptions {
+  std::filesystem::path cache;                  // a motion cache folder
+  std::optional<std::filesystem::path> output;  // default: CACHE.html beside the folder
+  int every = 1;                                // keep frames 1, 1 + every, …
+  bool quiet = false;
+};
+
+// The page `view` writes without -o: the cache folder's name with .html, beside it.
+std::filesystem::path default_view_path(const std::filesystem::path& cache);
+
+// Writes one self-contained web page that plays the cache: an orbit camera, a timeline, play and
+// pause, the frame number; surfaces shaded, wires at their drawn width. Throws UserError for a
+// folder that is not a complete cache, or a page that would be too large (naming --every).
+int run_view(const ViewOptions& options);
+
 struct MovieOptions {
   std::filesystem::path folder;      // frames and frames.json, written by render
   std::optional<std::string> movie;  // mp4 or gif: overrides frames.json's choice

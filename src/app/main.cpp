@@ -172,6 +172,20 @@ int run(int argc, char** argv) {
   modes_command->add_flag("-q,--quiet", modes.quiet, "Print nothing but errors");
   add_threads_option(modes_command);
 
+  ViewOptions view;
+  std::string view_output;
+  CLI::App* view_command = app.add_subcommand(
+      "view",
+      "Write a motion cache as one web page that plays it (orbit, timeline, play/pause): open it "
+      "in any browser, offline");
+  view_command->add_option("cache", view.cache, "Motion cache folder (dinam simulate)")->required();
+  view_command->add_option("-o,--output", view_output,
+                           "The page to write (default: the cache folder's name with .html)");
+  view_command->add_option("--every", view.every, "Keep every Nth frame (a smaller page)")
+      ->default_val(view.every)
+      ->check(CLI::Range(1, 100000));
+  view_command->add_flag("-q,--quiet", view.quiet, "Print nothing but errors");
+
   std::filesystem::path info_scene;
   CLI::App* info_command =
       app.add_subcommand("info",
@@ -235,6 +249,12 @@ int run(int argc, char** argv) {
         modes.output = modes_output;
       }
       return run_modes(modes);
+    }
+    if (*view_command) {
+      if (!view_output.empty()) {
+        view.output = view_output;
+      }
+      return run_view(view);
     }
     if (*snapshot_command) {
       if (!snapshot_output.empty()) {

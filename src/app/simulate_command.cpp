@@ -57,11 +57,14 @@ void parse_formats(const std::string& text, CacheRequest& request) {
   }
 }
 
-// How the scene draws each object, for the USD stage's prims.
-std::vector<UsdObjectLook> usd_looks(const SceneDescription& scene) {
-  std::vector<UsdObjectLook> looks;
+// How the scene draws each object, for the manifest and the USD stage (the radii come at the end,
+// from the whole run's motion; the colours from the model).
+std::vector<ObjectLook> object_looks(const SceneDescription& scene) {
+  std::vector<ObjectLook> looks;
   for (const ObjectDesc& object : scene.objects) {
-    looks.push_back({object.style != DrawStyle::kWire, object.style != DrawStyle::kSurface, 0.0f});
+    ObjectLook& look = looks.emplace_back();
+    look.surface = object.style != DrawStyle::kWire;
+    look.wires = object.style != DrawStyle::kSurface;
   }
   return looks;
 }
@@ -85,9 +88,7 @@ int run_simulate(const SimulateOptions& options) {
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   CacheRequest request;
   parse_formats(options.formats, request);
-  if (request.usd) {
-    request.usd_looks = usd_looks(scene);
-  }
+  request.looks = object_looks(scene);
   request.folder = options.output.value_or(scene.output / "cache");
   request.fps = scene.fps;
   request.frame_count = scene.frame_count();
@@ -162,8 +163,7 @@ int run_simulate(const SimulateOptions& options) {
     manifest.timestep = timestep.dt;
     manifest.steps_per_frame = timestep.steps_per_frame;
     manifest.simulate_seconds = seconds_since(start);
-    writer.commit(std::move(manifest), request.usd ? drawn_wire_radii(model, writer.frame_bounds())
-                                                   : std::vector<float>{});
+    writer.commit(std::move(manifest), drawn_wire_radii(model, writer.frame_bounds()));
   } catch (const Interrupted&) {
     throw;
   } catch (const RuntimeError& e) {

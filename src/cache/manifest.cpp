@@ -69,6 +69,10 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
                    {"node_count", o.node_count},
                    {"bar_count", o.bar_count},
                    {"files", files}};
+    object["look"] = {{"surface", o.look.surface},
+                      {"wires", o.look.wires},
+                      {"wire_radius", o.look.wire_radius},
+                      {"color", {o.look.color.x(), o.look.color.y(), o.look.color.z()}}};
     if (o.source_vertex_count > 0) {
       object["source_vertex_count"] = o.source_vertex_count;
       if (!o.source_vertices.empty()) {
@@ -181,6 +185,14 @@ CacheManifest read_manifest(const std::filesystem::path& path) {
       entry.mdd = files.value("mdd", "");
       entry.source_vertex_count = o.value("source_vertex_count", Index{0});
       entry.source_vertices = o.value("source_vertices", std::vector<Index>{});
+      if (o.contains("look")) {
+        const Json& look = o.at("look");
+        entry.look.surface = look.at("surface").get<bool>();
+        entry.look.wires = look.at("wires").get<bool>();
+        entry.look.wire_radius = look.at("wire_radius").get<float>();
+        const auto color = look.at("color").get<std::array<float, 3>>();
+        entry.look.color = Vec3f(color[0], color[1], color[2]);
+      }
       m.objects.push_back(std::move(entry));
     }
     for (const Json& b : json.at("frame_bounds")) {

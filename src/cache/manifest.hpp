@@ -21,6 +21,15 @@ struct FrameBounds {
   Vec3f subject_max = Vec3f::Zero();  // m
 };
 
+// How the scene draws an object, for what shows a cache without the scene: the USD stage's prims
+// and `dinam view`.
+struct ObjectLook {
+  bool surface = true;            // its faces drawn
+  bool wires = false;             // all its bars drawn as wires, not only those on no face
+  float wire_radius = 0.0f;       // m, the radius its bars are drawn with
+  Vec3f color{0.8f, 0.8f, 0.8f};  // linear RGB
+};
+
 // One object's files, each a name inside the cache folder; pc2 or mdd is empty when that format
 // was not written.
 struct CacheObjectEntry {
@@ -36,6 +45,7 @@ struct CacheObjectEntry {
   // number there (−1 for none): the map from the caches to the artist's own mesh.
   Index source_vertex_count = 0;  // 0: no such file
   std::vector<Index> source_vertices;
+  ObjectLook look;
 };
 
 // Columns of numbers, one row per frame: the energy report of `dinam simulate --energy`.

@@ -113,6 +113,21 @@ void move_into_place(const std::filesystem::path& from, const std::filesystem::p
   }
 }
 
+// How an object is drawn when the scene does not say: its faces as a surface, its bars as wires
+// where it has no faces, at its wire radius.
+ObjectLook model_look(const Model& model, std::size_t o) {
+  const ModelObject& object = model.objects[o];
+  bool has_faces = false;
+  for (Index f = 0; f < model.face_count() && !has_faces; ++f) {
+    has_faces = model.node_object[model.face_nodes[model.face_offsets[f]]] == static_cast<Index>(o);
+  }
+  ObjectLook look;
+  look.surface = has_faces;
+  look.wires = !has_faces;
+  look.wire_radius = static_cast<float>(object.wire_radius);
+  return look;
+}
+
 // The object's map to its mesh file's vertices, where it has one that is not the identity.
 void set_source_vertices(const Model& model, const ModelObject& object, CacheObjectEntry& entry) {
   if (object.source_vertex_count == 0 || model.node_source_vertex.empty()) {
@@ -190,7 +205,9 @@ void MotionCacheWriter::open_files(const Model& model) {
                            "",
                            "",
                            0,
-                           {}};
+                           {},
+                           o < request_.looks.size() ? request_.looks[o] : model_look(model, o)};
+    entry.look.color = object.color;
     set_source_vertices(model, object, entry);
     write_obj(temporary_ / entry.obj, rest_mesh(model, o));
     ObjectFiles files{object.first_node, object.node_count, {}};
@@ -212,9 +229,12 @@ void MotionCacheWriter::open_files(const Model& model) {
     files_.push_back(std::move(files));
   }
   if (request_.usd) {
-    DINAM_CHECK(request_.usd_looks.size() == model.objects.size());
-    usd_ = std::make_unique<UsdStageWriter>(temporary_, kUsdName, model, request_.usd_looks,
-                                            request_.fps, request_.frame_count);
+    std::vector<ObjectLook> looks;
+    for (const CacheObjectEntry& entry : entries_) {
+      looks.push_back(entry.look);
+    }
+    usd_ = std::make_unique<UsdStageWriter>(temporary_, kUsdName, model, looks, request_.fps,
+                                            request_.frame_count);
   }
   frame_bounds_.reserve(static_cast<std::size_t>(request_.frame_count));
   if (!request_.instant_offsets.empty()) {
@@ -270,7 +290,7 @@ void MotionCacheWriter::add_instant(const std::vector<Vec3f>& positions) {
   instants_->add_sample(positions.data());
 }
 
-void MotionCacheWriter::commit(CacheManifest manifest, const std::vector<float>& usd_wire_radii) {
+void MotionCacheWriter::commit(CacheManifest manifest, const std::vector<float>& wire_radii) {
   DINAM_CHECK(frame_bounds_.size() == static_cast<std::size_t>(request_.frame_count));
   for (ObjectFiles& files : files_) {
     for (PointCacheWriter& cache : files.caches) {
@@ -282,12 +302,15 @@ void MotionCacheWriter::commit(CacheManifest manifest, const std::vector<float>&
     manifest.instants = {static_cast<int>(request_.instant_offsets.size()), request_.shutter,
                          request_.instant_offsets, kInstantsName};
   }
-  if (usd_) {
-    std::vector<UsdObjectLook> looks = request_.usd_looks;
-    DINAM_CHECK(usd_wire_radii.size() == looks.size());
-    for (std::size_t o = 0; o < looks.size(); ++o) {
-      looks[o].wire_radius = usd_wire_radii[o];
+  DINAM_CHECK(wire_radii.empty() || wire_radii.size() == entries_.size());
+  std::vector<ObjectLook> looks;
+  for (std::size_t o = 0; o < entries_.size(); ++o) {
+    if (!wire_radii.empty()) {
+      entries_[o].look.wire_radius = wire_radii[o];
     }
+    looks.push_back(entries_[o].look);
+  }
+  if (usd_) {
     usd_->write(looks);
     manifest.usd = usd_->file_name();
   }

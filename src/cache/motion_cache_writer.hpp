@@ -29,8 +29,10 @@ struct CacheRequest {
   std::vector<int> instant_offsets;
   double shutter = 0.0;
   int steps_per_frame = 1;
-  bool usd = false;                      // a USD stage of every object too (usd_stage.hpp)
-  std::vector<UsdObjectLook> usd_looks;  // (n_objects) when usd; the radii are given at commit
+  bool usd = false;  // a USD stage of every object too (usd_stage.hpp)
+  // (n_objects) how the scene draws each object, for the manifest and the USD stage; the radii
+  // are given at commit. Empty: from the model (faces as surfaces, an object without as wires).
+  std::vector<ObjectLook> looks;
 };
 
 class MotionCacheWriter {
@@ -57,8 +59,9 @@ class MotionCacheWriter {
 
   // After the last frame: completes `manifest` with what the writer knows (version, objects and
   // their files, fps, frame count, bounds), writes it and the USD stage (its wires drawn with
-  // `usd_wire_radii`, one per object, m), and moves the cache into place.
-  void commit(CacheManifest manifest, const std::vector<float>& usd_wire_radii = {});
+  // `wire_radii`, one per object, m; empty: each object's wire radius), and moves the cache into
+  // place.
+  void commit(CacheManifest manifest, const std::vector<float>& wire_radii = {});
 
  private:
   // Writes each object's rest mesh and opens its point caches in the temporary folder.

@@ -123,7 +123,7 @@ std::string unique_name(std::string name, std::set<std::string>& taken) {
 }
 
 std::vector<std::unique_ptr<Prim>> make_prims(const Model& model,
-                                              const std::vector<UsdObjectLook>& looks) {
+                                              const std::vector<ObjectLook>& looks) {
   std::vector<std::unique_ptr<Prim>> prims;
   std::set<std::string> taken;
   for (std::size_t o = 0; o < model.objects.size(); ++o) {
@@ -226,8 +226,8 @@ std::string usd_prim_name(const std::string& object_name) {
 }
 
 UsdStageWriter::UsdStageWriter(std::filesystem::path folder, std::string file_name,
-                               const Model& model, const std::vector<UsdObjectLook>& looks,
-                               double fps, int frame_count)
+                               const Model& model, const std::vector<ObjectLook>& looks, double fps,
+                               int frame_count)
     : folder_(std::move(folder)),
       file_name_(std::move(file_name)),
       fps_(fps),
@@ -269,7 +269,7 @@ void UsdStageWriter::add_frame(const std::vector<Vec3f>& positions) {
   }
 }
 
-void UsdStageWriter::write(const std::vector<UsdObjectLook>& looks) {
+void UsdStageWriter::write(const std::vector<ObjectLook>& looks) {
   DINAM_CHECK(frames_written_ == frame_count_);
   OutputFile file(folder_ / file_name_);
   std::FILE* out = file.stream();
@@ -284,7 +284,7 @@ void UsdStageWriter::write(const std::vector<UsdObjectLook>& looks) {
       kVersion, frame_count_, fps_, fps_);
   for (const std::unique_ptr<Prim>& prim : prims_) {
     const bool mesh = prim->kind == Prim::Kind::kMesh;
-    const UsdObjectLook& look = looks[static_cast<std::size_t>(prim->object)];
+    const ObjectLook& look = looks[static_cast<std::size_t>(prim->object)];
     put("    def {} \"{}\"\n    {{\n", mesh ? "Mesh" : "BasisCurves", prim->name);
     const auto put_int = [&](Index v) { put("{}", v); };
     if (mesh) {

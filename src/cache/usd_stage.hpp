@@ -22,25 +22,20 @@
 #include <string>
 #include <vector>
 
+#include "cache/manifest.hpp"
 #include "core/types.hpp"
 
 namespace dinam {
 
 struct Model;
 
-// How the scene draws an object, which decides its prim.
-struct UsdObjectLook {
-  bool surface = true;       // its faces drawn (a Mesh)
-  bool wires = false;        // all its bars drawn (BasisCurves), not only those on no face
-  float wire_radius = 0.0f;  // m, the drawn radius of its bars (BasisCurves widths are 2 r)
-};
-
 class UsdStageWriter {
  public:
-  // Opens the sample files in `folder` (the cache's temporary folder). `looks` holds one entry
-  // per object; their radii may still be 0 here (they are given to write()).
+  // Opens the sample files in `folder` (the cache's temporary folder). `looks` holds how the
+  // scene draws each object, which decides its prims; their radii may still be 0 here (they are
+  // given to write()).
   UsdStageWriter(std::filesystem::path folder, std::string file_name, const Model& model,
-                 const std::vector<UsdObjectLook>& looks, double fps, int frame_count);
+                 const std::vector<ObjectLook>& looks, double fps, int frame_count);
   ~UsdStageWriter();
   UsdStageWriter(const UsdStageWriter&) = delete;
   UsdStageWriter& operator=(const UsdStageWriter&) = delete;
@@ -50,7 +45,7 @@ class UsdStageWriter {
 
   // After the last frame: writes the stage (with the drawn radii of `looks`) and removes the
   // sample files. Throws WriteError when a file cannot be written.
-  void write(const std::vector<UsdObjectLook>& looks);
+  void write(const std::vector<ObjectLook>& looks);
 
   const std::string& file_name() const { return file_name_; }
 
