@@ -117,6 +117,14 @@ std::string movie_file_name(const std::string& name, MovieFormat format) {
   return name + (format == MovieFormat::kGif ? ".gif" : ".mp4");
 }
 
+std::string movie_file_name(const std::string& name, MovieFormat format, int first, int last,
+                            int frame_count) {
+  if (first == 1 && last == frame_count) {
+    return movie_file_name(name, format);
+  }
+  return movie_file_name(fmt::format("{}_frames_{}-{}", name, first, last), format);
+}
+
 Interrupted::Interrupted(int signal, const std::string& outcome)
     : std::runtime_error(fmt::format(
           "stopped by {}: {}",

@@ -28,6 +28,10 @@ MovieFormat parse_movie_format(const std::string& text);
 const char* movie_format_name(MovieFormat format);
 // The movie's file name: NAME.mp4 or NAME.gif (not for kNone).
 std::string movie_file_name(const std::string& name, MovieFormat format);
+// The movie of frames first … last of frame_count: the whole movie's name when they are all of
+// them, else NAME_frames_A-B, so that a part never stands under the whole movie's name.
+std::string movie_file_name(const std::string& name, MovieFormat format, int first, int last,
+                            int frame_count);
 
 // Thrown between frames after SIGINT or SIGTERM, so that the command unwinds and its destructors
 // remove what it had not finished (a temporary cache folder, a partial movie, ffmpeg itself).

@@ -90,7 +90,8 @@ int run_render(const RenderOptions& options) {
     check_output_name(folder / "energy.csv");
   }
   if (scene.movie != MovieFormat::kNone) {
-    check_output_name(folder / movie_file_name(scene.name, scene.movie));
+    check_output_name(folder / movie_file_name(scene.name, scene.movie, range.first, range.last,
+                                               scene.frame_count()));
   }
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
@@ -137,7 +138,8 @@ int run_render(const RenderOptions& options) {
   std::filesystem::path movie_path;
   if (scene.movie != MovieFormat::kNone) {
     const bool gif = scene.movie == MovieFormat::kGif;
-    movie_path = folder / movie_file_name(scene.name, scene.movie);
+    movie_path = folder / movie_file_name(scene.name, scene.movie, range.first, range.last,
+                                          scene.frame_count());
     movie = MovieEncoder::start(
         {scene.image_width, scene.image_height, scene.fps, movie_path, gif, stop_if_asked});
     if (!movie) {

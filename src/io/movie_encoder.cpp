@@ -107,10 +107,15 @@ std::vector<std::string> ffmpeg_arguments(const MovieRequest& request,
     arguments.insert(arguments.end(),
                      {"-filter_complex", palette_filter, "-loop", "0", "-f", "gif"});
   } else {
-    // H.264 in yuv420p needs even dimensions; pad an odd one by a pixel.
-    arguments.insert(arguments.end(), {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264",
-                                       "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p",
-                                       "-movflags", "+faststart", "-f", "mp4"});
+    // H.264 in yuv420p needs even dimensions; pad an odd one by a pixel. The frames are sRGB,
+    // whose primaries are BT.709's: they are turned into YUV with BT.709's matrix in its limited
+    // range (ffmpeg's default matrix is BT.601's) and the stream says so, so that players and
+    // compositors turn them back with the same matrix rather than guess.
+    arguments.insert(arguments.end(),
+                     {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv",
+                      "-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt",
+                      "yuv420p", "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc",
+                      "bt709", "-color_range", "tv", "-movflags", "+faststart", "-f", "mp4"});
   }
   // The output: a local file only (mp4's faststart reads it back, so "file" it is, not "pipe"),
   // named by an absolute path after "file:", which no name can turn into an option or a protocol.

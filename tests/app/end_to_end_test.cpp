@@ -102,6 +102,22 @@ TEST_F(EndToEnd, FrameRangeWritesOnlyThoseFrames) {
   EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
 }
 
+// A part of the frames makes a movie of that part, named for it: never a short movie under the
+// whole movie's name, which a player or an editor would take for the whole.
+TEST_F(EndToEnd, AFrameRangesMovieIsNamedForTheRange) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
+                                         "' --size 64x48 --frames 2-3 --quiet"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
+  const CommandResult probe =
+      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+          "stream=nb_read_frames -of csv=p=0 '" +
+          (out() / "tiny_frames_2-3.mp4").string() + "'");
+  ASSERT_EQ(probe.exit_code, 0) << probe.output;
+  EXPECT_EQ(probe.output, "2\n");
+}
+
 TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
   const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +

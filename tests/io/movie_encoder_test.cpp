@@ -108,6 +108,57 @@ TEST(MovieEncoder, EncodesFramesSentWhileItRuns) {
   EXPECT_EQ(test::folder_entries(folder.path()), std::vector<std::string>{"demo.mp4"});
 }
 
+// The movie says it is BT.709 (matrix, primaries, transfer; limited range), and is: ffmpeg, which
+// reads those tags, turns a frame of strong colours back into RGB within the rounding of 8-bit
+// YUV 4:2:0 of a flat picture (±3 of 255). With the matrix of BT.601 (ffmpeg's default) under
+// BT.709's tags, the colours would come back up to 23 off (the green of the second quarter).
+TEST(MovieEncoder, TheMovieIsTaggedBt709AndDecodesToItsColours) {
+  if (test::run_command("command -v ffprobe").output.empty()) {
+    GTEST_SKIP() << "ffprobe is not installed";
+  }
+  test::TemporaryFolder folder("movie");
+  const std::filesystem::path movie = folder.path() / "colours.mp4";
+  const std::unique_ptr<MovieEncoder> encoder = MovieEncoder::start({64, 64, 24.0, movie});
+  ASSERT_NE(encoder, nullptr);
+  Image frame(64, 64);
+  const std::array<std::array<std::uint8_t, 3>, 4> colours{
+      {{200, 30, 30}, {30, 180, 60}, {40, 60, 220}, {235, 235, 235}}};
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      const auto& c = colours[static_cast<std::size_t>((y / 32) * 2 + x / 32)];
+      const std::size_t at = 4 * static_cast<std::size_t>(y * 64 + x);
+      frame.rgba[at] = c[0];
+      frame.rgba[at + 1] = c[1];
+      frame.rgba[at + 2] = c[2];
+      frame.rgba[at + 3] = 255;
+    }
+  }
+  for (int f = 0; f < 3; ++f) {
+    encoder->add_frame(frame);
+  }
+  encoder->finish();
+  const test::CommandResult probe = test::run_command(
+      "ffprobe -v error -select_streams v:0 -show_entries "
+      "stream=color_space,color_transfer,color_primaries,color_range -of default=nw=1 '" +
+      movie.string() + "'");
+  test::expect_contains(probe.output, {"color_range=tv", "color_space=bt709",
+                                       "color_transfer=bt709", "color_primaries=bt709"});
+  const std::filesystem::path decoded = folder.path() / "decoded.png";
+  const test::CommandResult decode = test::run_command(
+      "ffmpeg -v error -i '" + movie.string() + "' -frames:v 1 -vf scale=in_color_matrix=auto '" +
+      decoded.string() + "'");
+  ASSERT_EQ(decode.exit_code, 0) << decode.output;
+  const Image back = read_png(decoded);
+  for (std::size_t q = 0; q < colours.size(); ++q) {
+    const int x = 16 + 32 * static_cast<int>(q % 2);  // the middle of each quarter
+    const int y = 16 + 32 * static_cast<int>(q / 2);
+    for (int c = 0; c < 3; ++c) {
+      const int got = back.rgba[4 * static_cast<std::size_t>(y * 64 + x) + static_cast<std::size_t>(c)];
+      EXPECT_NEAR(got, colours[q][static_cast<std::size_t>(c)], 3) << "quarter " << q << " channel " << c;
+    }
+  }
+}
+
 TEST(MovieEncoder, FailingFfmpegIsAnErrorWithItsMessageAndLeavesNoMovie) {
   test::TemporaryFolder folder("movie");
   // ffmpeg refuses a frame rate of 0 and exits; the frame sent after that is dropped.
