@@ -25,14 +25,19 @@ struct RenderOptions {
   bool energy_csv = false;  // write DIR/energy.csv, one row per frame
   bool force = false;       // run even when the memory estimate passes what is available, or the
                             // run-time estimate an hour
+  bool preview = false;     // draft, small, every Nth frame: DIR/NAME_preview.gif and .png
 };
 
 // Simulates the scene (or reads its motion from a cache), writes DIR/frame_NNNN.png, DIR/
 // frames.json and the movie. The frames are the same whether the whole motion is drawn at once or
 // in ranges, from the scene or from its cache. Throws UserError for bad input (before anything is
 // written) and RuntimeError for other failures. Returns the exit code: kExitFailure when the
-// frames were written but ffmpeg is missing.
+// frames were written but ffmpeg is missing. With `preview`, run_preview.
 int run_render(const RenderOptions& options);
+
+// render --preview: the scene at draft quality, 320 pixels wide, about 30 frames spread over the
+// motion (or --frames), as an animated GIF at the scene's pace and a contact sheet (PNG).
+int run_preview(const RenderOptions& options);
 
 struct SimulateOptions {
   std::filesystem::path scene;

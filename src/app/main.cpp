@@ -77,6 +77,10 @@ int run(int argc, char** argv) {
   render_command->add_option("--cache", render_cache,
                              "Draw from this motion cache (made by 'dinam simulate') instead of "
                              "simulating; refused when the scene's motion has changed since");
+  render_command->add_flag(
+      "--preview", render.preview,
+      "A quick look: draft quality, 320 pixels wide, about 30 frames spread over the motion, as "
+      "DIR/NAME_preview.gif and a contact sheet DIR/NAME_preview.png");
   render_command->add_flag("--force", render.force,
                            "Run even when the memory the run needs (see 'dinam info') passes "
                            "what the machine has available, or its run time an hour");

@@ -17,6 +17,7 @@
 #include "app/frame_writer.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
+#include "app/render_input.hpp"
 #include "app/run_estimate.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/error.hpp"
@@ -34,50 +35,15 @@
 namespace dinam {
 
 int run_render(const RenderOptions& options) {
-  // Everything that can be wrong with the input is found before the first file is written.
-  SceneDescription scene = read_scene(options.scene);
-  if (options.size) {
-    parse_image_size(*options.size, scene.image_width, scene.image_height);
+  if (options.preview) {
+    return run_preview(options);
   }
-  const MovieFormat scene_movie = scene.movie;  // `dinam movie` makes it from chunks drawn without
-  if (options.movie) {
-    scene.movie = parse_movie_format(*options.movie);
-  }
-  const FrameRange range = options.frames ? parse_frame_range(*options.frames, scene.frame_count())
-                                          : FrameRange{1, scene.frame_count()};
-  std::optional<MotionCache> cache;
-  if (options.cache) {
-    if (options.energy_csv) {
-      throw_user_error({},
-                       "--energy reports what the simulation did, and --cache simulates nothing; "
-                       "ask 'dinam simulate --energy' for it (manifest.json and energy.csv)");
-    }
-    cache.emplace(*options.cache);
-    cache->check_scene(scene);
-    cache->check_motion_blur(scene);
-  }
-  const Model model = build_model_telling_warnings(scene);
-  if (cache) {
-    cache->check_model(model);
-  }
-  const std::optional<TimeStep> timestep =
-      cache ? std::nullopt
-            : std::optional(choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc));
-  // Every frame of the motion is held (or, from a cache, those drawn) until it is drawn.
-  // With motion blur, a simulated frame holds its instants too.
-  const int frames_held = cache ? range.last - range.first + 1 : scene.frame_count();
-  const MotionBlurDesc& blur = scene.quality.motion_blur;
-  const int instants = blur.enabled() ? blur.samples : 0;
-  refuse_if_over_budget(options.scene, cache ? FileLoc{} : scene.duration_loc,
-                        estimate_memory(scene, model,
-                                        {frames_held, options.energy_csv, scene.image_width,
-                                         scene.image_height, instants}),
-                        available_memory(), options.force);
-  if (timestep) {
-    refuse_if_too_long(scene, model, *timestep,
-                       estimate_run(scene, model, *timestep, thread_count()), options.force);
-  }
-  std::vector<Image> textures = read_textures(scene);
+  const RenderInput input = read_render_input(options);
+  const SceneDescription& scene = input.scene;
+  const FrameRange& range = input.range;
+  const std::optional<MotionCache>& cache = input.cache;
+  const Model& model = input.model;
+  const std::optional<TimeStep>& timestep = input.timestep;
   const std::filesystem::path folder = options.output.value_or(scene.output);
   create_folder(folder);
   // Every name the run will write, refused now if one is a link or a special file, rather than
@@ -96,40 +62,20 @@ int run_render(const RenderOptions& options) {
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
 
-  // 1. The motion: from the cache, or simulated to the last frame of the movie, whichever frames
-  //    are drawn, since the whole motion frames the camera, the ground and the shadows.
+  // 1. The motion.
   std::optional<EnergyCsv> energy_csv;
   if (options.energy_csv) {
     energy_csv.emplace(folder / "energy.csv");
   }
-  SimulatedFrames frames;
-  if (cache) {
-    frames = cached_frames(*cache, range.first, range.last, &scene.quality.motion_blur);
-  } else {
-    Progress simulation_progress(scene.frame_count(), !options.quiet, "simulate");
-    try {
-      frames = simulate_frames(
-          model, *timestep, scene.frame_count(), options.energy_csv,
-          [&](int frame, const State& s) {
-            stop_if_asked();
-            if (energy_csv) {
-              energy_csv->write(s.energy_workspace.last);
-            }
-            simulation_progress.update(frame, fmt::format("t = {:.2f} s", s.time));
-          },
-          &scene.quality.motion_blur);
-    } catch (const Interrupted& e) {
-      simulation_progress.finish();
-      throw Interrupted(e.signal(), "it was still simulating, so no frame was drawn");
-    }
-  }
+  const SimulatedFrames frames =
+      render_motion(input, options.quiet, energy_csv ? &*energy_csv : nullptr);
   if (energy_csv) {
     energy_csv->close();
   }
 
   // 2. Draw the frames; a thread of their own writes them (PNG) and feeds them to ffmpeg, which
   //    encodes the movie meanwhile.
-  const DrawList draw_list = make_draw_list(scene, model, frames.motion, std::move(textures));
+  const DrawList draw_list = make_draw_list(scene, model, frames.motion, input.textures);
   const FrameCameras cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
   int exit_code = kExitOk;
@@ -186,7 +132,7 @@ int run_render(const RenderOptions& options) {
   }
   progress.finish();
   write_frame_folder_info(folder, {scene.name, scene.fps, scene.frame_count(), scene.image_width,
-                                   scene.image_height, scene_movie});
+                                   scene.image_height, input.scene_movie});
   const double draw_seconds = seconds_since(draw_start);
 
   // 3. The movie: ffmpeg finishes what it has been encoding all along.

@@ -118,6 +118,51 @@ TEST_F(EndToEnd, AFrameRangesMovieIsNamedForTheRange) {
   EXPECT_EQ(probe.output, "2\n");
 }
 
+// --preview: the scene drawn as `image: {quality: draft}` at 320 pixels wide would draw it, every
+// Nth frame, as a contact sheet whose pictures are those frames, and as a GIF of them.
+TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
+  std::string text = kTinyScene;
+  text.replace(text.find("duration: 0.3"), 13, "duration: 4.0");  // 40 frames: every 2nd, 20
+  const auto scene = write_scene("tiny.yaml", text);
+  const CommandResult preview =
+      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "' --preview"));
+  ASSERT_EQ(preview.exit_code, 0) << preview.output;
+  EXPECT_NE(preview.output.find("preview of 20 frames (every 2nd frame)"), std::string::npos)
+      << preview.output;
+  const Image sheet = read_png(out() / "tiny_preview.png");
+  // 6 columns and 4 rows of 320 × 240 pictures, 2 pixels apart and around.
+  EXPECT_EQ(sheet.width, 6 * 320 + 7 * 2);
+  EXPECT_EQ(sheet.height, 4 * 240 + 5 * 2);
+  const CommandResult probe =
+      run("ffprobe -v error -count_frames -show_entries stream=nb_read_frames,width,height -of "
+          "csv=p=0 '" +
+          (out() / "tiny_preview.gif").string() + "'");
+  EXPECT_EQ(probe.output, "320,240,20\n");
+  EXPECT_FALSE(std::filesystem::exists(out() / "frame_0001.png"));
+  EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
+
+  // The eighth picture (row 1, column 1) is frame 15 as a full render at draft quality draws it.
+  std::string draft = text;
+  draft.replace(draft.find("image: {width: 640, height: 480}"), 32,
+                "image: {width: 320, height: 240, quality: draft}");
+  const auto draft_scene = write_scene("draft.yaml", draft);
+  const CommandResult full =
+      run(dinam("render '" + draft_scene.string() + "' -o '" + (out() / "full").string() +
+                "' --frames 15 --movie none -q"));
+  ASSERT_EQ(full.exit_code, 0) << full.output;
+  const Image frame = read_png(out() / "full" / "frame_0015.png");
+  int differing = 0;
+  for (int y = 0; y < 240; ++y) {
+    for (int x = 0; x < 320; ++x) {
+      differing += std::equal(frame.pixel(x, y), frame.pixel(x, y) + 3,
+                              sheet.pixel(2 + 1 * 322 + x, 2 + 1 * 242 + y))
+                       ? 0
+                       : 1;
+    }
+  }
+  EXPECT_EQ(differing, 0);
+}
+
 TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
   const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
