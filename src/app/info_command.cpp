@@ -219,9 +219,15 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
   print_step_limits(model);
   fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
              timestep.critical);
+  const bool implicit = model.integrator == IntegratorKind::kImplicit;
   fmt::print("time step        {:.6g} s ({})\n", timestep.dt,
-             timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
-                                : "from the scene, fitted to whole steps per frame");
+             implicit ? fmt::format("implicit, backward Euler: stable at any step; {}, halved "
+                                    "where a step needs it",
+                                    timestep.automatic ? fmt::format("auto: 1/{} of a frame",
+                                                                     kImplicitStepsPerFrame)
+                                                       : "from the scene")
+             : timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
+                                  : "from the scene, fitted to whole steps per frame");
   fmt::print("steps per frame  {}\n", timestep.steps_per_frame);
   const long long steps_to_last_frame =
       static_cast<long long>(frames - 1) * timestep.steps_per_frame;
@@ -247,19 +253,25 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
              cost.threads < run.threads.threads
                  ? std::string("; this model's steps run on 1, too small to share")
                  : std::string());
-  fmt::print(
-      "run time         about {} to simulate ({:.3g} ms a step on {} thread{}, estimated from "
-      "the model's springs and nodes; drawing comes on top){}\n",
-      duration_text(run.estimate.seconds), 1e3 * cost.seconds, cost.threads,
-      cost.threads == 1 ? "" : "s",
-      run.estimate.long_run() ? fmt::format("; over {}, so render and simulate refuse it "
-                                            "without --force",
-                                            duration_text(kLongRunSeconds))
-                              : "");
-  fmt::print(
-      "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
-      "now\n",
-      1e3 * run.measured.seconds_per_step, run.measured.steps);
+  if (model.integrator == IntegratorKind::kImplicit) {
+    fmt::print(
+        "run time         not estimated for the implicit integrator yet: each step is a Newton "
+        "solve, which the per-spring costs do not give (docs/performance.md)\n");
+  } else {
+    fmt::print(
+        "run time         about {} to simulate ({:.3g} ms a step on {} thread{}, estimated from "
+        "the model's springs and nodes; drawing comes on top){}\n",
+        duration_text(run.estimate.seconds), 1e3 * cost.seconds, cost.threads,
+        cost.threads == 1 ? "" : "s",
+        run.estimate.long_run() ? fmt::format("; over {}, so render and simulate refuse it "
+                                              "without --force",
+                                              duration_text(kLongRunSeconds))
+                                : "");
+    fmt::print(
+        "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
+        "now\n",
+        1e3 * run.measured.seconds_per_step, run.measured.steps);
+  }
   const MemoryFigures memory = memory_figures(scene, model);
   fmt::print("memory, render   about {} at {}×{}\n", memory.render.summary(), scene.image_width,
              scene.image_height);
@@ -277,8 +289,13 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   const SceneDescription scene = read_scene(scene_path);
   const Model model = build_model_telling_warnings(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  // A step of the implicit integrator is a Newton solve, which the probe (central differences'
+  // step) does not measure.
   const RunFigures run{estimate_run(scene, model, timestep, thread_count()),
-                       measure_step_now(model, timestep), threads};
+                       model.integrator == IntegratorKind::kImplicit
+                           ? MeasuredStep{}
+                           : measure_step_now(model, timestep),
+                       threads};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     pinned += model.pinned(i) ? 1 : 0;

@@ -30,7 +30,11 @@ TimeStep choose_timestep(const Model& model, std::optional<double> requested, do
   step.automatic = !requested.has_value();
   const double frame_interval = 1.0 / fps;
   double target = 0.0;
-  if (requested) {
+  if (model.integrator == IntegratorKind::kImplicit) {
+    // Stable at any step: `timestep` is the longest it takes (a share of it where the error asks,
+    // solver/implicit_integrator.hpp), by default a quarter of a frame.
+    target = requested.value_or(frame_interval / kImplicitStepsPerFrame);
+  } else if (requested) {
     if (*requested > step.critical) {
       throw_user_error(where,
                        "the time step {:.6g} s is above this model's stability limit {:.6g} s "

@@ -77,6 +77,8 @@ struct SettleOutcome {
   // Why relaxation served where Newton's method was asked for; empty when it was not.
   std::string fallback;
   std::int64_t steps = 0;          // relaxation: steps taken until it converged, in all
+  double step = 0.0;               // s, relaxation's step (the motion's, or with the implicit
+                                   // integrator the automatic explicit one)
   std::int64_t viscous_steps = 0;  // of which overdamped, before kinetic damping
   std::int64_t max_steps = 0;      // relaxation: the most it could take (settle.duration)
   double residual = 0.0;  // largest out-of-balance force on a free node / that node's weight

@@ -226,6 +226,7 @@ struct Model {
   std::vector<ModelObject> objects;
   Vec3 gravity = Vec3::Zero();  // m/s²
   double global_damping = 0.0;  // 1/s: every free node feels −α m v
+  IntegratorKind integrator = IntegratorKind::kCentralDifference;
   std::vector<FieldForce> fields;
   std::vector<PinMotion> pin_motions;
   SettlePhase settle;

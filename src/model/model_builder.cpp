@@ -1,3 +1,5 @@
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -440,10 +442,35 @@ void release_spare_capacity(Model& model) {
   for_each_model_array(model, [](std::string_view, auto& array) { array.shrink_to_fit(); });
 }
 
+// The implicit integrator handles elastic springs, dampers, gravity, fields, wind and the ground
+// (solver/implicit_integrator.hpp); the rest is refused at `integrator`, naming it.
+void refuse_what_implicit_cannot_do(const SceneDescription& scene, const Model& model) {
+  if (model.integrator != IntegratorKind::kImplicit) {
+    return;
+  }
+  std::vector<std::string> missing;
+  if (model.bars_yield || model.bends_yield || model.torsions_yield || model.clamps_yield) {
+    missing.emplace_back("springs that yield (yield_stress)");
+  }
+  if (model.can_tear()) {
+    missing.emplace_back("bars that tear (breaking)");
+  }
+  if (model.contact.enabled) {
+    missing.emplace_back("contact between objects (contact)");
+  }
+  if (!missing.empty()) {
+    throw_user_error(scene.integrator_loc,
+                     "'integrator: implicit' does not handle {} yet; use 'integrator: "
+                     "central_difference' (the default) for this scene",
+                     fmt::format("{}", fmt::join(missing, ", ")));
+  }
+}
+
 Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) {
   Model model;
   model.gravity = scene.gravity;
   model.global_damping = scene.global_damping;
+  model.integrator = scene.integrator;
   model.settle = {scene.settle.enabled,  scene.settle.method,  scene.settle.duration,
                   scene.settle.residual, scene.settle.damping, scene.settle.loc};
   model.face_offsets.push_back(0);
@@ -487,6 +514,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   add_ground_contact(scene, model);
   add_object_contact(scene, model);
   note_yielding_kinds(model);
+  refuse_what_implicit_cannot_do(scene, model);
   note_implausible_values(scene, model);
   release_spare_capacity(model);
   check_derived_quantities(model, scene);

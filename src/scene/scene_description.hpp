@@ -287,6 +287,11 @@ struct ContactDesc {
 // on the potential energy, or dynamic relaxation (stepping in time, damped, until it stops).
 enum class SettleMethod { kNewton, kRelax };
 
+// How the motion is integrated in time (`integrator`): central differences, explicit, whose step
+// the stiffest bar bounds; or backward Euler, implicit (solver/implicit_integrator.hpp), whose
+// step is chosen for accuracy.
+enum class IntegratorKind { kCentralDifference, kImplicit };
+
 // A phase before t = 0 in which the structure comes to rest under gravity alone (no fields, no
 // wind, no initial velocities); its final shape is the start of the shown motion. The paper's flag
 // begins this way.
@@ -341,7 +346,9 @@ struct SceneDescription {
   FileLoc duration_loc;
   double fps = 0.0;                // frames per second
   std::optional<double> timestep;  // s; empty for `auto`
-  StepTargetDesc step_target;      // what an automatic step aims at
+  IntegratorKind integrator = IntegratorKind::kCentralDifference;
+  FileLoc integrator_loc;
+  StepTargetDesc step_target;  // what an automatic step aims at
   FileLoc timestep_loc;
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s²
   double global_damping = 0.0;    // 1/s, viscous friction −α m v on every node

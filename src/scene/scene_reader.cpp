@@ -280,6 +280,16 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
   }
 
   read_timestep(map, scene);
+  scene.integrator_loc = map.loc("integrator");
+  const std::string integrator = map.string("integrator", "central_difference");
+  if (integrator == "implicit") {
+    scene.integrator = IntegratorKind::kImplicit;
+  } else if (integrator != "central_difference") {
+    throw_user_error(scene.integrator_loc,
+                     "'integrator' must be central_difference (explicit, the paper's method) or "
+                     "implicit (backward Euler, steps as long as a frame); got '{}'",
+                     integrator);
+  }
   scene.gravity = map.vec3("gravity", scene.gravity);
   if (map.has("damping")) {
     YamlMap damping(map.get("damping"), file, "damping");

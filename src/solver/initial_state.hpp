@@ -14,8 +14,8 @@ enum class Settling { kRun, kSkip };
 
 // The state at t = 0: x_0 and v_0 from the model (settled first, with kRun, where the model has a
 // settling phase), and v_{−½} = v_0 − ½Δt a_0 so that the first half-step velocity is
-// v_{½} = v_0 + ½Δt a_0. With `track_energy`, every step also keeps the energy accounts and report
-// (at some cost).
+// v_{½} = v_0 + ½Δt a_0; or, for the implicit integrator, v_0 itself. With `track_energy`, every
+// step also keeps the energy accounts and report (at some cost).
 State initial_state(const Model& model, double dt, const ForceSwitches& switches = {},
                     bool track_energy = false, Settling settling = Settling::kRun);
 

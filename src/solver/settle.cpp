@@ -215,6 +215,7 @@ void settle_under_gravity(const Model& model, double dt, const ForceSwitches& sw
     }
   }
   outcome.ran = true;
+  outcome.step = dt;
   state.settled = outcome;
   // The shape reached, and what the way there left: plastic sets, what broke under its own
   // weight, the ground's anchors. Velocities, time and the energy start afresh at t = 0.

@@ -1,0 +1,355 @@
+#include "solver/implicit_integrator.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+#include "core/error.hpp"
+#include "dynamics/pin_motion.hpp"
+#include "model/model.hpp"
+#include "solver/positive_definite_solver.hpp"
+#include "solver/potential.hpp"
+#include "solver/stiffness_matrix.hpp"
+
+namespace dinam {
+namespace {
+
+using Vector = Eigen::VectorXd;
+
+// Newton iterations a step may take before it is split.
+constexpr int kMostIterations = 25;
+// Halvings of a step before the run gives up, and of them those the error criterion may ask for.
+constexpr int kMostSplits = 10;
+constexpr int kErrorSplits = 5;
+// A step is found once a Newton step has been taken and the out-of-balance force left would move
+// no node by more than this share of the median bar within the step (|g_i| h²/m_i): far below
+// what can be seen, far above rounding.
+constexpr double kConvergedShare = 1e-5;
+// The line search's sufficient decrease (of what the quadratic model promised) and its least
+// step length before the step is split instead.
+constexpr double kSufficientDecrease = 1e-4;
+constexpr double kLeastLength = 1.0 / 1024;
+
+// The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
+// anchors are not updated (compute_static_forces), and no node is marked touching, so no stick
+// spring acts.
+ForceSwitches potential_switches() {
+  ForceSwitches s;
+  s.fields = false;
+  s.wind = false;
+  s.axial_dampers = false;
+  s.global_damping = false;
+  s.object_contact = false;
+  return s;
+}
+
+// The forces taken at (x_n, v_n): fields and wind.
+ForceSwitches explicit_switches() {
+  ForceSwitches s;
+  s.gravity = false;
+  s.axial_springs = false;
+  s.axial_dampers = false;
+  s.bending = false;
+  s.torsion = false;
+  s.clamps = false;
+  s.global_damping = false;
+  s.ground = false;
+  s.object_contact = false;
+  return s;
+}
+
+double median_bar(const Model& model) {
+  std::vector<double> lengths = model.bar_rest_length;
+  if (lengths.empty()) {
+    return 1.0;
+  }
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+}  // namespace
+
+struct ImplicitIntegrator::Workspace {
+  FreeDofs dofs;
+  Vector mass;  // (dofs)
+  StiffnessAssembly assembly;
+  PositiveDefiniteSolver solver;
+  std::vector<Eigen::Triplet<double>> damper_triplets;
+  double bar = 1.0;  // m, the median bar
+  std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before;
+  bool have_accel = false;
+};
+
+ImplicitIntegrator::ImplicitIntegrator(const Model& model)
+    : model_(model), work_(std::make_unique<Workspace>()) {
+  work_->dofs = free_dofs(model);
+  work_->mass = free_masses(model, work_->dofs);
+  work_->bar = median_bar(model);
+}
+
+ImplicitIntegrator::~ImplicitIntegrator() = default;
+
+void ImplicitIntegrator::advance(State& state, double h, std::int64_t steps) {
+  for (std::int64_t k = 0; k < steps; ++k) {
+    step_or_split(state, h, 0);
+  }
+}
+
+void ImplicitIntegrator::step_or_split(State& state, double h, int depth) {
+  // Past kErrorSplits halvings only Newton's convergence splits a step: an impact's jump in
+  // acceleration is no error that a shorter step would remove.
+  if (try_step(state, h, depth < kErrorSplits)) {
+    return;
+  }
+  if (depth >= kMostSplits) {
+    throw RuntimeError(fmt::format(
+        "the implicit integrator found no step at t = {:.6g} s even of {:.3g} s (Newton's method "
+        "does not converge there); try 'integrator: central_difference'",
+        state.time, h));
+  }
+  stats_.splits += 1;
+  step_or_split(state, 0.5 * h, depth + 1);
+  step_or_split(state, 0.5 * h, depth + 1);
+}
+
+bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
+  Workspace& w = *work_;
+  const Model& model = model_;
+  const FreeDofs& dofs = w.dofs;
+  const auto n = static_cast<std::size_t>(model.node_count());
+  w.x_start = state.x;
+  w.v_start = state.v_half;  // v_n: the implicit integrator keeps full-step velocities there
+  const double t_next = state.time + h;
+
+  // The explicit forces at (x_n, v_n): fields and wind, then the ground's lagged friction.
+  state.dt = 0.0;
+  compute_forces(model, explicit_switches(), state);
+  w.explicit_force = state.force;
+  if (model.ground.enabled) {
+    const GroundContact& ground = model.ground;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double depth = -ground.clearance(static_cast<Index>(i), state.x[i]);
+      if (model.pinned(static_cast<Index>(i)) || depth <= 0.0) {
+        continue;
+      }
+      const double normal = ground.node_stiffness[i] * depth;
+      const Vec3& v = state.v_half[i];
+      const Vec3 tangential = v - v.dot(ground.normal) * ground.normal;
+      const double speed = tangential.norm();
+      if (speed == 0.0) {
+        continue;
+      }
+      // What stops the node within the step, if static friction can; else kinetic friction.
+      const double stopping = model.node_mass[i] * speed / h;
+      const double friction = ground.stick || stopping <= ground.static_friction * normal
+                                  ? stopping
+                                  : ground.kinetic_friction * normal;
+      w.explicit_force[i] -= (friction / speed) * tangential;
+    }
+  }
+
+  // x̂ = x_n + h v_n + h² M⁻¹ F_e; driven pins go to their places at t_{n+1}.
+  w.predicted.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    w.predicted[i] =
+        state.x[i] + h * state.v_half[i] + (h * h * model.node_inv_mass[i]) * w.explicit_force[i];
+  }
+  place_driven_nodes(model, t_next, state);
+
+  // The dampers' Hessian, with the bars' directions at x_n: (c/h) e eᵀ on each bar's blocks, and
+  // α m / h on the diagonal.
+  const bool global = model.global_damping > 0.0;
+  w.damper_triplets.clear();
+  if (model.any_bar_damping) {
+    for (Index b = 0; b < model.bar_count(); ++b) {
+      const double c = model.bar_damping[b];
+      if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
+        continue;
+      }
+      const Index a = model.bar_nodes[2 * b];
+      const Index bb = model.bar_nodes[2 * b + 1];
+      const Vec3 e = (w.x_start[bb] - w.x_start[a]).normalized();
+      const Eigen::Matrix3d block = (c / h) * e * e.transpose();
+      for (const auto& [p, q, sign] : {std::tuple{a, a, 1.0}, std::tuple{bb, bb, 1.0},
+                                       std::tuple{a, bb, -1.0}, std::tuple{bb, a, -1.0}}) {
+        const Index dp = dofs.first_dof[p];
+        const Index dq = dofs.first_dof[q];
+        if (dp < 0 || dq < 0) {
+          continue;
+        }
+        for (int r = 0; r < 3; ++r) {
+          for (int s = 0; s < 3; ++s) {
+            w.damper_triplets.emplace_back(dp + r, dq + s, sign * block(r, s));
+          }
+        }
+      }
+    }
+  }
+  SparseMatrix damping(dofs.count, dofs.count);
+  damping.setFromTriplets(w.damper_triplets.begin(), w.damper_triplets.end());
+
+  // The incremental potential's gradient g = M(x − x̂)/h² − F(x) + ∇hD, and the energy E.
+  const ForceSwitches switches = potential_switches();
+  const Vector inertia = w.mass / (h * h) + (global ? model.global_damping / h : 0.0) * w.mass;
+  auto gradient = [&](Vector& g) {
+    compute_static_forces(model, switches, state);
+    g.setZero(dofs.count);
+    Vector dx(dofs.count);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Index d = dofs.first_dof[i];
+      if (d < 0) {
+        continue;
+      }
+      const double m = model.node_mass[i];
+      const Vec3 off = state.x[i] - w.predicted[i];
+      const Vec3 moved = state.x[i] - w.x_start[i];
+      g.segment<3>(d) = (m / (h * h)) * off - state.force[i] +
+                        (global ? model.global_damping * m / h : 0.0) * moved;
+      dx.segment<3>(d) = moved;
+    }
+    g += damping * dx;
+  };
+  auto energy = [&]() {
+    double e = potential_energy(model, state, switches, w.x_start).energy;
+    Vector dx(dofs.count);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Index d = dofs.first_dof[i];
+      if (d < 0) {
+        continue;
+      }
+      const double m = model.node_mass[i];
+      const Vec3 moved = state.x[i] - w.x_start[i];
+      e += (0.5 * m / (h * h)) * (state.x[i] - w.predicted[i]).squaredNorm() +
+           (global ? 0.5 * model.global_damping * m / h : 0.0) * moved.squaredNorm();
+      dx.segment<3>(d) = moved;
+    }
+    return e + 0.5 * dx.dot(damping * dx);
+  };
+  auto restore = [&] {
+    state.x = w.x_start;
+    state.v_half = w.v_start;
+    state.time = t_next - h;
+  };
+
+  // Newton's method from x̂ (the free nodes; the driven ones are placed).
+  for (std::size_t i = 0; i < n; ++i) {
+    if (dofs.first_dof[i] >= 0) {
+      state.x[i] = w.predicted[i];
+    }
+  }
+  const double converged = kConvergedShare * w.bar / (h * h);  // m/s², a node's |g|/m
+  Vector g;
+  gradient(g);
+  double e = energy();
+  bool done = false;
+  // The Hessian is assembled and factorised at the step's first iterate and kept while its
+  // steps make good progress (the stiffness changes little within a step; assembling it costs
+  // far more than a force), and again where a step with it fails.
+  bool factored = false;
+  bool fresh = false;
+  auto factor_here = [&] {
+    stats_.factorizations += 1;
+    factored = false;
+    // The Hessian as it is, which M/h² makes definite unless a step is long against a buckling
+    // structure's instability; then each element's made definite (a descent still, if slower).
+    for (const Definiteness definiteness : {Definiteness::kExact, Definiteness::kProjected}) {
+      SparseMatrix system = w.assembly.assemble(model, state, switches, dofs, definiteness);
+      system += damping;
+      system.diagonal() += inertia;
+      if (w.solver.factorize(system)) {
+        factored = true;
+        break;
+      }
+    }
+    fresh = true;
+    return factored;
+  };
+  for (int iteration = 0; iteration < kMostIterations && !done; ++iteration) {
+    double worst = 0.0;
+    for (Index d = 0; d < dofs.count; ++d) {
+      worst = std::max(worst, std::abs(g[d]) / w.mass[d]);
+    }
+    // At least one Newton step: from x̂ alone a slow motion would pass the test unsolved (a
+    // linear step is exact after one).
+    if (iteration > 0 && worst <= converged) {
+      done = true;
+      break;
+    }
+    stats_.iterations += 1;
+    if (!factored && !factor_here()) {
+      break;
+    }
+    const Vector step = w.solver.solve(-g);
+    const double slope = g.dot(step);  // < 0 for a descent direction
+    const std::vector<Vec3> from = state.x;
+    double length = 1.0;
+    bool accepted = false;
+    while (slope < 0.0 && length >= kLeastLength) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const Index d = dofs.first_dof[i];
+        if (d >= 0) {
+          state.x[i] = from[i] + length * Vec3(step.segment<3>(d));
+        }
+      }
+      const double trial = energy();
+      if (trial <= e + kSufficientDecrease * length * slope ||
+          std::abs(trial - e) <= 1e-13 * std::abs(e)) {
+        e = trial;
+        accepted = true;
+        break;
+      }
+      length *= 0.5;
+    }
+    if (!accepted) {
+      state.x = from;
+      if (fresh) {
+        break;  // not even the Hessian of this iterate gives a step: split it
+      }
+      factored = false;  // a stale Hessian: assemble it here and try again
+      continue;
+    }
+    fresh = false;
+    // A step cut short says the quadratic model has drifted from the energy: renew it.
+    if (length < 1.0) {
+      factored = false;
+    }
+    gradient(g);
+  }
+  if (!done) {
+    restore();
+    return false;
+  }
+
+  // v_{n+1} = (x_{n+1} − x_n)/h; the local error h²/2 |a_{n+1} − a_n|.
+  double error = 0.0;
+  std::vector<Vec3> accel(n, Vec3::Zero());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 v = (state.x[i] - w.x_start[i]) / h;
+    accel[i] = (v - w.v_start[i]) / h;
+    if (w.have_accel && !model.pinned(static_cast<Index>(i))) {
+      error = std::max(error, 0.5 * h * h * (accel[i] - w.accel_before[i]).norm());
+    }
+    state.v_half[i] = v;
+  }
+  if (check_error && error > kImplicitErrorShare * w.bar) {
+    restore();
+    return false;
+  }
+  w.accel_before = std::move(accel);
+  w.have_accel = true;
+  state.time = t_next;
+  state.step += 1;
+  stats_.steps += 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!state.x[i].allFinite() || !state.v_half[i].allFinite()) {
+      throw RuntimeError(
+          fmt::format("the motion diverged at node {} at t = {:.6g} s", i, state.time));
+    }
+  }
+  return true;
+}
+
+}  // namespace dinam

@@ -1,0 +1,62 @@
+#pragma once
+// Backward Euler beside central differences (`integrator: implicit`): each step of h minimises the
+// incremental potential
+//   E(x) = Σ m/(2h²) |x − x̂|² + V(x) + h D((x − x_n)/h),   x̂ = x_n + h v_n + h² M⁻¹ F_e,
+// where V is the potential of the springs, gravity and the ground's normal penalty
+// (potential.hpp), D the dampers' dissipation (the bars' axial dampers along their directions at
+// x_n, and the global damping), and F_e the forces taken explicitly at (x_n, v_n): fields, wind
+// and the ground's friction (lagged: it opposes the tangential velocity at x_n with at most μ
+// times the normal force at x_n, and never more than stops it within the step). The minimum is
+// found by Newton's method with the sparse stiffness (stiffness_matrix.hpp) and a line search on
+// E; then v_{n+1} = (x_{n+1} − x_n)/h. A step is never limited by the stiffest bar: it is
+// stable for any h. It is split in halves where Newton does not converge or where its local
+// error, h²/2 |a_{n+1} − a_n| at some node, passes kImplicitErrorShare of the median bar.
+//
+// Not yet: springs that yield, bars that tear and contact between objects are refused at the
+// scene (model/derived_checks.cpp); the state's velocities are v_n, not leapfrog's v_{n−½}.
+#include <memory>
+
+#include "dynamics/integrator.hpp"
+#include "dynamics/state.hpp"
+
+namespace dinam {
+
+struct Model;
+
+// The largest position error a step may make at a node, as a share of the median bar length.
+inline constexpr double kImplicitErrorShare = 0.05;
+
+struct ImplicitStats {
+  std::int64_t steps = 0;           // steps taken, halves counted
+  std::int64_t iterations = 0;      // Newton iterations, in all
+  std::int64_t factorizations = 0;  // Hessians assembled and factorised
+  std::int64_t splits = 0;          // steps split in halves
+};
+
+class ImplicitIntegrator {
+ public:
+  explicit ImplicitIntegrator(const Model& model);
+  ~ImplicitIntegrator();
+  ImplicitIntegrator(const ImplicitIntegrator&) = delete;
+  ImplicitIntegrator& operator=(const ImplicitIntegrator&) = delete;
+
+  // Advances `state` (positions x_n, velocities v_n in state.v_half, time t_n) by `steps` steps
+  // of h, each split as often as it needs. Throws RuntimeError naming the time where even a step
+  // of h/2¹⁰ does not converge.
+  void advance(State& state, double h, std::int64_t steps);
+
+  const ImplicitStats& stats() const { return stats_; }
+
+ private:
+  struct Workspace;
+  // One step of h; false (and `state` as it was) where Newton did not converge or, with
+  // `check_error`, the local error is too large.
+  bool try_step(State& state, double h, bool check_error);
+  void step_or_split(State& state, double h, int depth);
+
+  const Model& model_;
+  std::unique_ptr<Workspace> work_;
+  ImplicitStats stats_;
+};
+
+}  // namespace dinam
