@@ -19,25 +19,16 @@
 # Prints "addon: PASS"; raises otherwise.
 import json
 import os
-import struct
 import sys
 import time
 
 import addon_utils
 import bpy
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cache"))
+from pc2_reader import read_pc2  # noqa: E402  (tests/cache/pc2_reader.py)
+
 zip_path, dinam, work = sys.argv[sys.argv.index("--") + 1:]
-
-
-def read_pc2(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    signature, version, points, _, _, samples = struct.unpack_from("<12siiffi", data)
-    assert signature == b"POINTCACHE2\0" and version == 1, path
-    frame = struct.Struct(f"<{3 * points}f")
-    return [[frame.unpack_from(data, 32 + k * frame.size)[3 * i:3 * i + 3] for i in range(points)]
-            for k in range(samples)]
-
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)

@@ -12,10 +12,11 @@
 # vertices in their order. Prints "round-trip: PASS"; raises otherwise.
 import json
 import os
-import struct
 import sys
 
 import bpy
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pc2_reader import read_pc2  # noqa: E402  (beside this file)
 
 
 def make(out_obj, out_blend):
@@ -39,16 +40,6 @@ def make(out_obj, out_blend):
     assert first_seen != sorted(first_seen), "the subdivided plane's faces meet its vertices in order"
     bpy.ops.wm.save_as_mainfile(filepath=out_blend)
     print(f"round-trip: made {len(plane.data.vertices)} vertices")
-
-
-def read_pc2(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    signature, version, points, _, _, samples = struct.unpack_from("<12siiffi", data)
-    assert signature == b"POINTCACHE2\0" and version == 1, path
-    frame = struct.Struct(f"<{3 * points}f")
-    return [[frame.unpack_from(data, 32 + k * frame.size)[3 * i:3 * i + 3] for i in range(points)]
-            for k in range(samples)]
 
 
 def check(cache, object_name):

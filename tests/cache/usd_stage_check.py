@@ -21,8 +21,9 @@ reader here; a Blender from blender.org imports the same file with File > Import
 import json
 import os
 import re
-import struct
 import sys
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pc2_reader import read_pc2  # noqa: E402
 
 TOKEN = re.compile(r"""
     (?P<space>\s+|\#[^\n]*)
@@ -182,16 +183,6 @@ def edges_of(faces, lines):
     for line in lines:
         edges.update(tuple(sorted(e)) for e in zip(line, line[1:]))
     return edges
-
-
-def read_pc2(path):
-    with open(path, "rb") as f:
-        data = f.read()
-    signature, version, points, _, _, samples = struct.unpack_from("<12siiffi", data)
-    assert signature == b"POINTCACHE2\0" and version == 1, path
-    frame = struct.Struct(f"<{3 * points}f")
-    return [[frame.unpack_from(data, 32 + k * frame.size)[3 * i:3 * i + 3] for i in range(points)]
-            for k in range(samples)]
 
 
 def prim_name(object_name):
