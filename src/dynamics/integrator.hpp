@@ -25,6 +25,11 @@ struct ForceSwitches {
   bool wind = true;
   bool ground = true;
   bool object_contact = true;  // between objects and within one
+
+  // Every kind off: a start from which to switch on one or two.
+  static ForceSwitches none() {
+    return {false, false, false, false, false, false, false, false, false, false, false};
+  }
 };
 
 // How a step departs from the model's own motion without a copy of the model: the settling phase

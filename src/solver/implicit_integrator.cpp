@@ -48,16 +48,9 @@ ForceSwitches potential_switches() {
 
 // The forces taken at (x_n, v_n): fields and wind.
 ForceSwitches explicit_switches() {
-  ForceSwitches s;
-  s.gravity = false;
-  s.axial_springs = false;
-  s.axial_dampers = false;
-  s.bending = false;
-  s.torsion = false;
-  s.clamps = false;
-  s.global_damping = false;
-  s.ground = false;
-  s.object_contact = false;
+  ForceSwitches s = ForceSwitches::none();
+  s.fields = true;
+  s.wind = true;
   return s;
 }
 
