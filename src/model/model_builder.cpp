@@ -182,10 +182,15 @@ std::vector<Index> node_order(const std::vector<Index>& source_of_welded) {
   for (std::size_t w = 0; w < order.size(); ++w) {
     order[w] = static_cast<Index>(w);
   }
-  std::stable_sort(order.begin(), order.end(), [&](Index a, Index b) {
+  // Those with a number first, by it; then the rest, by id (a total order, so std::sort is as
+  // stable as it needs to be, and takes no temporary buffer).
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
     const Index sa = source_of_welded[a];
     const Index sb = source_of_welded[b];
-    return sb < 0 ? sa >= 0 : (sa >= 0 && sa < sb);
+    if ((sa < 0) != (sb < 0)) {
+      return sa >= 0;
+    }
+    return sa != sb ? sa < sb : a < b;
   });
   return order;
 }
