@@ -39,17 +39,6 @@ constexpr double kUnstableShift = 1e-8;
 
 using Vector = Eigen::VectorXd;
 
-// The free nodes' forces as a vector over the free dofs.
-Vector free_part(const FreeDofs& dofs, const std::vector<Vec3>& force) {
-  Vector f(dofs.count);
-  for (std::size_t i = 0; i < force.size(); ++i) {
-    if (dofs.first_dof[i] >= 0) {
-      f.segment<3>(dofs.first_dof[i]) = force[i];
-    }
-  }
-  return f;
-}
-
 void move_free_nodes(const FreeDofs& dofs, const std::vector<Vec3>& from, const Vector& step,
                      double length, std::vector<Vec3>& to) {
   for (std::size_t i = 0; i < from.size(); ++i) {

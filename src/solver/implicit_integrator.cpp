@@ -187,39 +187,24 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   // The incremental potential's gradient g = M(x − x̂)/h² − F(x) + ∇hD, and the energy E.
   const ForceSwitches switches = potential_switches();
   const Vector inertia = w.mass / (h * h) + (global ? model.global_damping / h : 0.0) * w.mass;
+  const Vector predicted = free_part(dofs, w.predicted);
+  const Vector start = free_part(dofs, w.x_start);
+  const double alpha = global ? model.global_damping : 0.0;
   auto gradient = [&](Vector& g) {
     compute_static_forces(model, switches, state);
-    g.setZero(dofs.count);
-    Vector dx(dofs.count);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Index d = dofs.first_dof[i];
-      if (d < 0) {
-        continue;
-      }
-      const double m = model.node_mass[i];
-      const Vec3 off = state.x[i] - w.predicted[i];
-      const Vec3 moved = state.x[i] - w.x_start[i];
-      g.segment<3>(d) = (m / (h * h)) * off - state.force[i] +
-                        (global ? model.global_damping * m / h : 0.0) * moved;
-      dx.segment<3>(d) = moved;
-    }
-    g += damping * dx;
+    const Vector x = free_part(dofs, state.x);
+    const Vector moved = x - start;
+    g = (w.mass / (h * h)).cwiseProduct(x - predicted) + (alpha / h) * w.mass.cwiseProduct(moved) -
+        free_part(dofs, state.force) + damping * moved;
   };
   auto energy = [&]() {
-    double e = potential_energy(model, state, switches, w.x_start).energy;
-    Vector dx(dofs.count);
-    for (std::size_t i = 0; i < n; ++i) {
-      const Index d = dofs.first_dof[i];
-      if (d < 0) {
-        continue;
-      }
-      const double m = model.node_mass[i];
-      const Vec3 moved = state.x[i] - w.x_start[i];
-      e += (0.5 * m / (h * h)) * (state.x[i] - w.predicted[i]).squaredNorm() +
-           (global ? 0.5 * model.global_damping * m / h : 0.0) * moved.squaredNorm();
-      dx.segment<3>(d) = moved;
-    }
-    return e + 0.5 * dx.dot(damping * dx);
+    const Vector x = free_part(dofs, state.x);
+    const Vector off = x - predicted;
+    const Vector moved = x - start;
+    return potential_energy(model, state, switches, w.x_start).energy +
+           (0.5 / (h * h)) * w.mass.dot(off.cwiseProduct(off)) +
+           (0.5 * alpha / h) * w.mass.dot(moved.cwiseProduct(moved)) +
+           0.5 * moved.dot(damping * moved);
   };
   auto restore = [&] {
     state.x = w.x_start;

@@ -82,6 +82,16 @@ class TripletSink final : public StiffnessSink {
 
 }  // namespace
 
+Eigen::VectorXd free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node) {
+  Eigen::VectorXd v(dofs.count);
+  for (std::size_t i = 0; i < per_node.size(); ++i) {
+    if (dofs.first_dof[i] >= 0) {
+      v.segment<3>(dofs.first_dof[i]) = per_node[i];
+    }
+  }
+  return v;
+}
+
 FreeDofs free_dofs(const Model& model) {
   FreeDofs dofs;
   dofs.first_dof.assign(static_cast<std::size_t>(model.node_count()), -1);

@@ -23,6 +23,9 @@ struct FreeDofs {
 };
 FreeDofs free_dofs(const Model& model);
 
+// A per-node array (forces, positions) as a vector over the free dofs.
+Eigen::VectorXd free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node);
+
 // The lumped mass of each free degree of freedom, kg: each free node's mass three times, in the
 // order of `dofs`. M of Newton's shift μM and of the modes' K φ = ω² M φ.
 Eigen::VectorXd free_masses(const Model& model, const FreeDofs& dofs);
