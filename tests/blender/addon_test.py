@@ -26,6 +26,7 @@ import addon_utils
 import bpy
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cache"))
+from blender_banner import subdivided_banner  # noqa: E402  (tests/cache/)
 from pc2_reader import read_pc2  # noqa: E402  (tests/cache/pc2_reader.py)
 
 zip_path, dinam, work = sys.argv[sys.argv.index("--") + 1:]
@@ -40,12 +41,7 @@ scene = bpy.context.scene
 scene.frame_start, scene.frame_end = 1, 24
 scene.render.fps, scene.render.fps_base = 24, 1.0
 
-bpy.ops.mesh.primitive_plane_add(size=1.0, location=(0.3, 0.2, 1.5), rotation=(1.5707963, 0, 0))
-banner = bpy.context.active_object
-banner.name = "Banner"
-bpy.ops.object.mode_set(mode="EDIT")
-bpy.ops.mesh.subdivide(number_cuts=5)
-bpy.ops.object.mode_set(mode="OBJECT")
+banner = subdivided_banner((0.3, 0.2, 1.5))  # its transform left unapplied
 top = max((banner.matrix_world @ v.co).z for v in banner.data.vertices)
 pins = [v.index for v in banner.data.vertices if (banner.matrix_world @ v.co).z > top - 1e-6]
 banner.vertex_groups.new(name="pins").add(pins, 1.0, "REPLACE")

@@ -16,17 +16,13 @@ import sys
 
 import bpy
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from blender_banner import subdivided_banner  # noqa: E402  (beside this file)
 from pc2_reader import read_pc2  # noqa: E402  (beside this file)
 
 
 def make(out_obj, out_blend):
     bpy.ops.wm.read_factory_settings(use_empty=True)
-    bpy.ops.mesh.primitive_plane_add(size=1.0, location=(0, 0, 1.5), rotation=(1.5707963, 0, 0))
-    plane = bpy.context.active_object
-    plane.name = "Banner"
-    bpy.ops.object.mode_set(mode="EDIT")
-    bpy.ops.mesh.subdivide(number_cuts=5)
-    bpy.ops.object.mode_set(mode="OBJECT")
+    plane = subdivided_banner((0, 0, 1.5))
     bpy.ops.object.transform_apply(location=True, rotation=True, scale=True)
     bpy.ops.wm.obj_export(filepath=out_obj, forward_axis="Y", up_axis="Z", export_uv=True,
                           export_materials=True, export_selected_objects=True)
