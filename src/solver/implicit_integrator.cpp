@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <vector>
 
@@ -24,14 +25,24 @@ constexpr int kMostIterations = 25;
 // Halvings of a step before the run gives up, and of them those the error criterion may ask for.
 constexpr int kMostSplits = 10;
 constexpr int kErrorSplits = 5;
-// A step is found once a Newton step has been taken and the out-of-balance force left would move
-// no node by more than this share of the median bar within the step (|g_i| h²/m_i): far below
-// what can be seen, far above rounding.
+// A step is found once a Newton step has been taken and either the out-of-balance force left
+// would move no node by more than this share of the median bar within the step (|g_i| h²/m_i), or
+// a whole Newton step moved none by more: far below what can be seen, far above rounding. (The
+// second test is the one a node pressed on the ground meets: the ground's stiffness, not its
+// mass, sets how far its residual force moves it.)
 constexpr double kConvergedShare = 1e-5;
 // The line search's sufficient decrease (of what the quadratic model promised) and its least
 // step length before the step is split instead.
 constexpr double kSufficientDecrease = 1e-4;
 constexpr double kLeastLength = 1.0 / 1024;
+// A kept Hessian is renewed after this many Newton steps with it: the chord method converges
+// linearly, and past a few steps a factorisation here costs less than the steps it saves. (8
+// against renewing whenever a step shrinks by less than half, by less than nothing, or after 5
+// or 10 steps: the fewest seconds over the end-to-end flag and a swinging Wuson,
+// bench_implicit.) A step with a kept Hessian counts towards convergence only where it is at
+// most kContraction of the step before: the Hessian has shown it still describes the energy.
+constexpr int kChordIterations = 8;
+constexpr double kContraction = 0.5;
 
 // The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
 // anchors are not updated (compute_static_forces), and no node is marked touching, so no stick
@@ -74,6 +85,28 @@ struct ImplicitIntegrator::Workspace {
   double bar = 1.0;  // m, the median bar
   std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before;
   bool have_accel = false;
+  bool factored = false;  // `solver` holds a factorised Hessian of a step of `factored_h`
+  double factored_h = 0.0;
+
+  // Assembles and factorises the incremental potential's Hessian at state.x: the stiffness as it
+  // is, which M/h² makes definite unless a step is long against a buckling structure's
+  // instability; else with each element's matrix made definite (a descent still, if slower).
+  bool factor(const Model& model, const State& state, double h, const SparseMatrix& damping,
+              const Vector& inertia) {
+    factored = false;
+    factored_h = h;
+    for (const Definiteness definiteness : {Definiteness::kExact, Definiteness::kProjected}) {
+      SparseMatrix system =
+          assembly.assemble(model, state, potential_switches(), dofs, definiteness);
+      system += damping;
+      system.diagonal() += inertia;
+      if (solver.factorize(system)) {
+        factored = true;
+        break;
+      }
+    }
+    return factored;
+  }
 };
 
 ImplicitIntegrator::ImplicitIntegrator(const Model& model)
@@ -219,31 +252,31 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
   }
   const double converged = kConvergedShare * w.bar / (h * h);  // m/s², a node's |g|/m
+  const double small_step = kConvergedShare * w.bar;           // m
   Vector g;
   gradient(g);
   double e = energy();
   bool done = false;
-  // The Hessian is assembled and factorised at the step's first iterate and kept while its
-  // steps make good progress (the stiffness changes little within a step; assembling it costs
-  // far more than a force), and again where a step with it fails.
-  bool factored = false;
+  // The Hessian is kept, factorised, from iterate to iterate and from step to step (the chord
+  // method: the stiffness changes little between iterates, and assembling and factorising it
+  // costs far more than a force). It is assembled again after kChordIterations steps with it,
+  // where a step with it is cut short or fails, and where h changes. `fresh`: it was factorised
+  // at this iterate.
   bool fresh = false;
   auto factor_here = [&] {
     stats_.factorizations += 1;
-    factored = false;
-    // The Hessian as it is, which M/h² makes definite unless a step is long against a buckling
-    // structure's instability; then each element's made definite (a descent still, if slower).
-    for (const Definiteness definiteness : {Definiteness::kExact, Definiteness::kProjected}) {
-      SparseMatrix system = w.assembly.assemble(model, state, switches, dofs, definiteness);
-      system += damping;
-      system.diagonal() += inertia;
-      if (w.solver.factorize(system)) {
-        factored = true;
-        break;
-      }
-    }
     fresh = true;
-    return factored;
+    return w.factor(model, state, h, damping, inertia);
+  };
+  if (w.factored_h != h) {
+    w.factored = false;
+  }
+  double step_before = std::numeric_limits<double>::infinity();
+  int chord_iterations = 0;
+  auto renew = [&] {
+    chord_iterations = 0;
+    w.factored = false;
+    step_before = std::numeric_limits<double>::infinity();
   };
   for (int iteration = 0; iteration < kMostIterations && !done; ++iteration) {
     double worst = 0.0;
@@ -257,10 +290,23 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       break;
     }
     stats_.iterations += 1;
-    if (!factored && !factor_here()) {
+    if (!w.factored && !factor_here()) {
       break;
     }
     const Vector step = w.solver.solve(-g);
+    double largest = 0.0;  // m, the step's longest move of a node
+    for (Index d = 0; d < dofs.count; d += 3) {
+      largest = std::max(largest, step.segment<3>(d).norm());
+    }
+    // A Hessian kept for kChordIterations steps without convergence (a node has met or left the
+    // ground, the structure has turned): assemble it here.
+    const bool measured = step_before < std::numeric_limits<double>::infinity();
+    const bool contracting = measured && largest <= kContraction * step_before;
+    chord_iterations += 1;
+    if (!fresh && chord_iterations > kChordIterations) {
+      renew();
+      continue;
+    }
     const double slope = g.dot(step);  // < 0 for a descent direction
     const std::vector<Vec3> from = state.x;
     double length = 1.0;
@@ -286,15 +332,22 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       if (fresh) {
         break;  // not even the Hessian of this iterate gives a step: split it
       }
-      factored = false;  // a stale Hessian: assemble it here and try again
+      renew();  // a kept Hessian: assemble it here and try again
       continue;
     }
+    gradient(g);
+    // A whole step, with a Hessian of this iterate or one that has shown it contracts, that moved
+    // no node further than `small_step`: the next would move them far less.
+    if (length == 1.0 && largest <= small_step && (fresh || contracting)) {
+      done = true;
+      break;
+    }
     fresh = false;
+    step_before = length * largest;
     // A step cut short says the quadratic model has drifted from the energy: renew it.
     if (length < 1.0) {
-      factored = false;
+      renew();
     }
-    gradient(g);
   }
   if (!done) {
     restore();
@@ -302,6 +355,16 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   }
 
   // v_{n+1} = (x_{n+1} − x_n)/h; the local error h²/2 |a_{n+1} − a_n|.
+  // A step in which a node meets or leaves the ground has a jump in acceleration that no shorter
+  // step would smooth (an impact ends within it): it is not judged, nor is the next against it.
+  bool contact_changed = false;
+  if (model.ground.enabled) {
+    for (std::size_t i = 0; i < n && !contact_changed; ++i) {
+      const auto node = static_cast<Index>(i);
+      contact_changed = (model.ground.clearance(node, w.x_start[i]) < 0.0) !=
+                        (model.ground.clearance(node, state.x[i]) < 0.0);
+    }
+  }
   double error = 0.0;
   std::vector<Vec3> accel(n, Vec3::Zero());
   for (std::size_t i = 0; i < n; ++i) {
@@ -312,12 +375,12 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
     state.v_half[i] = v;
   }
-  if (check_error && error > kImplicitErrorShare * w.bar) {
+  if (check_error && !contact_changed && error > kImplicitErrorShare * w.bar) {
     restore();
     return false;
   }
   w.accel_before = std::move(accel);
-  w.have_accel = true;
+  w.have_accel = !contact_changed;
   state.time = t_next;
   state.step += 1;
   stats_.steps += 1;

@@ -8,9 +8,11 @@
 // and the ground's friction (lagged: it opposes the tangential velocity at x_n with at most μ
 // times the normal force at x_n, and never more than stops it within the step). The minimum is
 // found by Newton's method with the sparse stiffness (stiffness_matrix.hpp) and a line search on
-// E; then v_{n+1} = (x_{n+1} − x_n)/h. A step is never limited by the stiffest bar: it is
+// E, keeping one factorised Hessian over iterations and steps while it serves (the chord
+// method); then v_{n+1} = (x_{n+1} − x_n)/h. A step is never limited by the stiffest bar: it is
 // stable for any h. It is split in halves where Newton does not converge or where its local
-// error, h²/2 |a_{n+1} − a_n| at some node, passes kImplicitErrorShare of the median bar.
+// error, h²/2 |a_{n+1} − a_n| at some node, passes kImplicitErrorShare of the median bar (but
+// for a step in which a node meets or leaves the ground).
 //
 // Not yet: springs that yield, bars that tear and contact between objects are refused at the
 // scene (model/derived_checks.cpp); the state's velocities are v_n, not leapfrog's v_{n−½}.
