@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <string>
 
+#include "bench_scenes.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -22,21 +23,6 @@
 
 namespace dinam {
 namespace {
-
-constexpr const char* kWuson = "/usr/share/assimp/models/OFF/Wuson.off";
-
-SceneDescription wuson_scene() {
-  return read_scene_text(fmt::format(R"(version: 1
-duration: 3
-fps: 20
-objects:
-  - mesh: {{file: "{}", fit: {{size: 1}}, translation: [0, 0, 0.5]}}
-    material: {{density: 1100, youngs_modulus: 5.0e7, radius: 0.004}}
-    style: wire
-)",
-                                     kWuson),
-                         std::filesystem::temp_directory_path() / "bench_implicit_wuson.yaml");
-}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

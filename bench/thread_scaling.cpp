@@ -38,23 +38,6 @@
 namespace dinam {
 namespace {
 
-// Debian's assimp-testmodels: the Wuson of the issue, as the real-mesh sweep drops it (a 1 m
-// rubber wire; tests/real_meshes/real_mesh_sweep.py).
-constexpr const char* kWuson = "/usr/share/assimp/models/OFF/Wuson.off";
-
-SceneDescription wuson_scene() {
-  return read_scene_text(fmt::format(R"(version: 1
-duration: 3
-fps: 20
-objects:
-  - mesh: {{file: "{}", fit: {{size: 1}}, translation: [0, 0, 0.5]}}
-    material: {{density: 1100, youngs_modulus: 5.0e7, radius: 0.004}}
-    style: wire
-)",
-                                     kWuson),
-                         std::filesystem::temp_directory_path() / "bench_threads_wuson.yaml");
-}
-
 struct BenchModel {
   std::string name;
   SceneDescription scene;

@@ -52,6 +52,33 @@ void element_matrix(const double* stiffness, int node_count, Definiteness defini
   }
 }
 
+// Calls column(row_dof, col_dof, values) for each column of each 3 × 3 block of an element's
+// matrix (`matrix`, 3 node_count square, column-major) between two free nodes: `values` are the
+// column's three rows, row_dof's x, y and z; stops where it returns false.
+template <class Column>
+void for_each_block_column(const FreeDofs& dofs, const Index* nodes, int node_count,
+                           const std::vector<double>& matrix, const Column& column) {
+  const int size = 3 * node_count;
+  for (int col_node = 0; col_node < node_count; ++col_node) {
+    const Index col_dof = dofs.first_dof[nodes[col_node]];
+    if (col_dof < 0) {
+      continue;
+    }
+    for (int row_node = 0; row_node < node_count; ++row_node) {
+      const Index row_dof = dofs.first_dof[nodes[row_node]];
+      if (row_dof < 0) {
+        continue;
+      }
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t at = (3 * static_cast<std::size_t>(col_node) + b) * size + 3 * row_node;
+        if (!column(row_dof, col_dof + b, &matrix[at])) {
+          return;
+        }
+      }
+    }
+  }
+}
+
 // Hands each element's 3 × 3 blocks between free nodes to the triplets.
 class TripletSink final : public StiffnessSink {
  public:
@@ -60,27 +87,14 @@ class TripletSink final : public StiffnessSink {
       : dofs_(dofs), definiteness_(definiteness), triplets_(triplets) {}
 
   void add(const Index* nodes, int node_count, const double* stiffness) override {
-    const int size = 3 * node_count;
     element_matrix(stiffness, node_count, definiteness_, scratch_);
-    for (int col_node = 0; col_node < node_count; ++col_node) {
-      const Index col_dof = dofs_.first_dof[nodes[col_node]];
-      if (col_dof < 0) {
-        continue;
-      }
-      for (int row_node = 0; row_node < node_count; ++row_node) {
-        const Index row_dof = dofs_.first_dof[nodes[row_node]];
-        if (row_dof < 0) {
-          continue;
-        }
-        for (int b = 0; b < 3; ++b) {
-          for (int a = 0; a < 3; ++a) {
-            const std::size_t column = 3 * static_cast<std::size_t>(col_node) + b;
-            const double value = scratch_[column * size + 3 * row_node + a];
-            triplets_.emplace_back(row_dof + a, col_dof + b, value);
-          }
-        }
-      }
-    }
+    for_each_block_column(dofs_, nodes, node_count, scratch_,
+                          [&](Index row_dof, Index col_dof, const double* values) {
+                            for (int a = 0; a < 3; ++a) {
+                              triplets_.emplace_back(row_dof + a, col_dof, values[a]);
+                            }
+                            return true;
+                          });
   }
 
  private:
@@ -101,39 +115,31 @@ class PatternSink final : public StiffnessSink {
   bool missed() const { return missed_; }
 
   void add(const Index* nodes, int node_count, const double* stiffness) override {
-    const int size = 3 * node_count;
+    if (missed_) {
+      return;
+    }
     element_matrix(stiffness, node_count, definiteness_, scratch_);
     const int* outer = matrix_.outerIndexPtr();
     const int* inner = matrix_.innerIndexPtr();
-    double* values = matrix_.valuePtr();
-    for (int col_node = 0; col_node < node_count; ++col_node) {
-      const Index col_dof = dofs_.first_dof[nodes[col_node]];
-      if (col_dof < 0) {
-        continue;
-      }
-      for (int row_node = 0; row_node < node_count; ++row_node) {
-        const Index row_dof = dofs_.first_dof[nodes[row_node]];
-        if (row_dof < 0) {
-          continue;
-        }
-        for (int b = 0; b < 3; ++b) {
-          // The block's three rows follow one another in each of its columns: every block of
-          // the pattern came in whole (explicit zeros included).
-          const int* first = inner + outer[col_dof + b];
-          const int* last = inner + outer[col_dof + b + 1];
-          const int* at = std::lower_bound(first, last, static_cast<int>(row_dof));
-          if (last - at < 3 || *at != row_dof) {
-            missed_ = true;
-            return;
-          }
-          double* column_values = values + (at - inner);
-          const std::size_t column = 3 * static_cast<std::size_t>(col_node) + b;
-          for (int a = 0; a < 3; ++a) {
-            column_values[a] += scratch_[column * size + 3 * row_node + a];
-          }
-        }
-      }
-    }
+    double* matrix_values = matrix_.valuePtr();
+    for_each_block_column(dofs_, nodes, node_count, scratch_,
+                          [&](Index row_dof, Index col_dof, const double* values) {
+                            // The block's three rows follow one another in each of its columns:
+                            // every block of the pattern came in whole (explicit zeros included).
+                            const int* first = inner + outer[col_dof];
+                            const int* last = inner + outer[col_dof + 1];
+                            const int* at =
+                                std::lower_bound(first, last, static_cast<int>(row_dof));
+                            if (last - at < 3 || *at != row_dof) {
+                              missed_ = true;
+                              return false;
+                            }
+                            double* column_values = matrix_values + (at - inner);
+                            for (int a = 0; a < 3; ++a) {
+                              column_values[a] += values[a];
+                            }
+                            return true;
+                          });
   }
 
  private:
