@@ -227,6 +227,7 @@ struct Model {
   Vec3 gravity = Vec3::Zero();  // m/s²
   double global_damping = 0.0;  // 1/s: every free node feels −α m v
   IntegratorKind integrator = IntegratorKind::kCentralDifference;
+  ImplicitScheme implicit_scheme = ImplicitScheme::kBackwardEuler;
   std::vector<FieldForce> fields;
   std::vector<PinMotion> pin_motions;
   SettlePhase settle;

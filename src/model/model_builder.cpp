@@ -476,6 +476,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   model.gravity = scene.gravity;
   model.global_damping = scene.global_damping;
   model.integrator = scene.integrator;
+  model.implicit_scheme = scene.implicit_scheme;
   model.settle = {scene.settle.enabled,  scene.settle.method,  scene.settle.duration,
                   scene.settle.residual, scene.settle.damping, scene.settle.loc};
   model.face_offsets.push_back(0);

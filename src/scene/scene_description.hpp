@@ -292,6 +292,12 @@ enum class SettleMethod { kNewton, kRelax };
 // step is chosen for accuracy.
 enum class IntegratorKind { kCentralDifference, kImplicit };
 
+// The implicit integrator's formula (`integrator: implicit` or `implicit_bdf2`): backward Euler,
+// first order, which damps a mode of ω by 1/√(1 + ω²h²) a step; or the two-step backward
+// differentiation formula, second order, which damps the modes the step resolves far less and
+// the ones it does not still strongly (both are L-stable).
+enum class ImplicitScheme { kBackwardEuler, kBdf2 };
+
 // A phase before t = 0 in which the structure comes to rest under gravity alone (no fields, no
 // wind, no initial velocities); its final shape is the start of the shown motion. The paper's flag
 // begins this way.
@@ -347,6 +353,7 @@ struct SceneDescription {
   double fps = 0.0;                // frames per second
   std::optional<double> timestep;  // s; empty for `auto`
   IntegratorKind integrator = IntegratorKind::kCentralDifference;
+  ImplicitScheme implicit_scheme = ImplicitScheme::kBackwardEuler;
   FileLoc integrator_loc;
   StepTargetDesc step_target;  // what an automatic step aims at
   FileLoc timestep_loc;

@@ -282,12 +282,15 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
   read_timestep(map, scene);
   scene.integrator_loc = map.loc("integrator");
   const std::string integrator = map.string("integrator", "central_difference");
-  if (integrator == "implicit") {
+  if (integrator == "implicit" || integrator == "implicit_bdf2") {
     scene.integrator = IntegratorKind::kImplicit;
+    scene.implicit_scheme =
+        integrator == "implicit" ? ImplicitScheme::kBackwardEuler : ImplicitScheme::kBdf2;
   } else if (integrator != "central_difference") {
     throw_user_error(scene.integrator_loc,
-                     "'integrator' must be central_difference (explicit, the paper's method) or "
-                     "implicit (backward Euler, steps as long as a frame); got '{}'",
+                     "'integrator' must be central_difference (explicit, the paper's method), "
+                     "implicit (backward Euler, steps as long as a frame) or implicit_bdf2 (the "
+                     "same steps, second order, less numerical damping); got '{}'",
                      integrator);
   }
   scene.gravity = map.vec3("gravity", scene.gravity);

@@ -86,6 +86,12 @@ struct ImplicitIntegrator::Workspace {
   double bar = 1.0;  // m, the median bar
   std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before;
   bool have_accel = false;
+  // BDF2's history: x_{n−1} and v_{n−1}, from the last step taken, of `before_h` (0: none).
+  std::vector<Vec3> x_before, v_before;
+  double before_h = 0.0;
+  // The state each step is solved from: (x_n, v_n) for backward Euler; for BDF2, (4 x_n −
+  // x_{n−1})/3 and (4 v_n − v_{n−1})/3, with 2h/3 in the place of h.
+  std::vector<Vec3> x_base, v_base;
   bool factored = false;  // `solver` holds a factorised Hessian of a step of `factored_h`
   double factored_h = 0.0;
 
@@ -151,6 +157,21 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   w.v_start = state.v_half;  // v_n: the implicit integrator keeps full-step velocities there
   const double t_next = state.time + h;
 
+  // BDF2 on M v' = F, x' = v: (3 y_{n+1} − 4 y_n + y_{n−1}) / 2h = y'_{n+1} for y = x and v, which
+  // is backward Euler's step of 2h/3 from the base y_b = (4 y_n − y_{n−1})/3. It needs the step
+  // before to have been as long as this one; the first step, and one after a split, is backward
+  // Euler's.
+  const bool two_step = model.implicit_scheme == ImplicitScheme::kBdf2 && w.before_h == h;
+  const double hs = two_step ? 2.0 * h / 3.0 : h;  // the step the minimisation takes
+  w.x_base = w.x_start;
+  w.v_base = w.v_start;
+  if (two_step) {
+    for (std::size_t i = 0; i < n; ++i) {
+      w.x_base[i] = (4.0 * w.x_start[i] - w.x_before[i]) / 3.0;
+      w.v_base[i] = (4.0 * w.v_start[i] - w.v_before[i]) / 3.0;
+    }
+  }
+
   // The explicit forces at (x_n, v_n): fields and wind, then the ground's lagged friction.
   state.dt = 0.0;
   compute_forces(model, explicit_switches(), state);
@@ -163,14 +184,14 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
         continue;
       }
       const double normal = ground.node_stiffness[i] * depth;
-      const Vec3& v = state.v_half[i];
+      const Vec3& v = w.v_base[i];
       const Vec3 tangential = v - v.dot(ground.normal) * ground.normal;
       const double speed = tangential.norm();
       if (speed == 0.0) {
         continue;
       }
       // What stops the node within the step, if static friction can; else kinetic friction.
-      const double stopping = model.node_mass[i] * speed / h;
+      const double stopping = model.node_mass[i] * speed / hs;
       const double friction = ground.stick || stopping <= ground.static_friction * normal
                                   ? stopping
                                   : ground.kinetic_friction * normal;
@@ -178,11 +199,12 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
   }
 
-  // x̂ = x_n + h v_n + h² M⁻¹ F_e; driven pins go to their places at t_{n+1}.
+  // x̂ = x_b + h v_b + h² M⁻¹ F_e (h: the step solved for); driven pins go to their places at
+  // t_{n+1}.
   w.predicted.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    w.predicted[i] =
-        state.x[i] + h * state.v_half[i] + (h * h * model.node_inv_mass[i]) * w.explicit_force[i];
+    w.predicted[i] = w.x_base[i] + hs * w.v_base[i] +
+                     (hs * hs * model.node_inv_mass[i]) * w.explicit_force[i];
   }
   place_driven_nodes(model, t_next, state);
 
@@ -199,7 +221,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       const Index a = model.bar_nodes[2 * b];
       const Index bb = model.bar_nodes[2 * b + 1];
       const Vec3 e = (w.x_start[bb] - w.x_start[a]).normalized();
-      const Eigen::Matrix3d block = (c / h) * e * e.transpose();
+      const Eigen::Matrix3d block = (c / hs) * e * e.transpose();
       for (const auto& [p, q, sign] : {std::tuple{a, a, 1.0}, std::tuple{bb, bb, 1.0},
                                        std::tuple{a, bb, -1.0}, std::tuple{bb, a, -1.0}}) {
         const Index dp = dofs.first_dof[p];
@@ -218,17 +240,19 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   SparseMatrix damping(dofs.count, dofs.count);
   damping.setFromTriplets(w.damper_triplets.begin(), w.damper_triplets.end());
 
-  // The incremental potential's gradient g = M(x − x̂)/h² − F(x) + ∇hD, and the energy E.
+  // The incremental potential's gradient g = M(x − x̂)/h² − F(x) + ∇hD, and the energy E, with
+  // the dampers' velocities (x − x_b)/h.
   const ForceSwitches switches = potential_switches();
-  const Vector inertia = w.mass / (h * h) + (global ? model.global_damping / h : 0.0) * w.mass;
+  const Vector inertia = w.mass / (hs * hs) + (global ? model.global_damping / hs : 0.0) * w.mass;
   const Vector predicted = free_part(dofs, w.predicted);
-  const Vector start = free_part(dofs, w.x_start);
+  const Vector start = free_part(dofs, w.x_base);
   const double alpha = global ? model.global_damping : 0.0;
   auto gradient = [&](Vector& g) {
     compute_static_forces(model, switches, state);
     const Vector x = free_part(dofs, state.x);
     const Vector moved = x - start;
-    g = (w.mass / (h * h)).cwiseProduct(x - predicted) + (alpha / h) * w.mass.cwiseProduct(moved) -
+    g = (w.mass / (hs * hs)).cwiseProduct(x - predicted) +
+        (alpha / hs) * w.mass.cwiseProduct(moved) -
         free_part(dofs, state.force) + damping * moved;
   };
   auto energy = [&]() {
@@ -236,8 +260,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     const Vector off = x - predicted;
     const Vector moved = x - start;
     return potential_energy(model, state, switches, w.x_start).energy +
-           (0.5 / (h * h)) * w.mass.dot(off.cwiseProduct(off)) +
-           (0.5 * alpha / h) * w.mass.dot(moved.cwiseProduct(moved)) +
+           (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
+           (0.5 * alpha / hs) * w.mass.dot(moved.cwiseProduct(moved)) +
            0.5 * moved.dot(damping * moved);
   };
   auto restore = [&] {
@@ -252,7 +276,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       state.x[i] = w.predicted[i];
     }
   }
-  const double converged = kConvergedShare * w.bar / (h * h);  // m/s², a node's |g|/m
+  const double converged = kConvergedShare * w.bar / (hs * hs);  // m/s², a node's |g|/m
   const double small_step = kConvergedShare * w.bar;           // m
   Vector g;
   gradient(g);
@@ -267,9 +291,9 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   auto factor_here = [&] {
     stats_.factorizations += 1;
     fresh = true;
-    return w.factor(model, state, h, damping, inertia);
+    return w.factor(model, state, hs, damping, inertia);
   };
-  if (w.factored_h != h) {
+  if (w.factored_h != hs) {
     w.factored = false;
   }
   double step_before = std::numeric_limits<double>::infinity();
@@ -355,7 +379,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     return false;
   }
 
-  // v_{n+1} = (x_{n+1} − x_n)/h; the local error h²/2 |a_{n+1} − a_n|.
+  // v_{n+1} = (x_{n+1} − x_b)/h; the local error h²/2 |a_{n+1} − a_n|, a_n = (v_{n+1} − v_n)/h
+  // over the whole step.
   // A step in which a node meets or leaves the ground has a jump in acceleration that no shorter
   // step would smooth (an impact ends within it): it is not judged, nor is the next against it.
   bool contact_changed = false;
@@ -369,7 +394,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   double error = 0.0;
   std::vector<Vec3> accel(n, Vec3::Zero());
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 v = (state.x[i] - w.x_start[i]) / h;
+    const Vec3 v = (state.x[i] - w.x_base[i]) / hs;
     accel[i] = (v - w.v_start[i]) / h;
     if (w.have_accel && !model.pinned(static_cast<Index>(i))) {
       error = std::max(error, 0.5 * h * h * (accel[i] - w.accel_before[i]).norm());
@@ -382,6 +407,11 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   }
   w.accel_before = std::move(accel);
   w.have_accel = !contact_changed;
+  if (model.implicit_scheme == ImplicitScheme::kBdf2) {
+    w.x_before = w.x_start;
+    w.v_before = w.v_start;
+    w.before_h = h;
+  }
   state.time = t_next;
   state.step += 1;
   stats_.steps += 1;

@@ -9,8 +9,11 @@
 // times the normal force at x_n, and never more than stops it within the step). The minimum is
 // found by Newton's method with the sparse stiffness (stiffness_matrix.hpp) and a line search on
 // E, keeping one factorised Hessian over iterations and steps while it serves (the chord
-// method); then v_{n+1} = (x_{n+1} − x_n)/h. A step is never limited by the stiffest bar: it is
-// stable for any h. It is split in halves where Newton does not converge or where its local
+// method); then v_{n+1} = (x_{n+1} − x_n)/h. With `integrator: implicit_bdf2` (ImplicitScheme::
+// kBdf2) a step of h after one of the same h is BDF2's, which is backward Euler's of 2h/3 from
+// x_b = (4 x_n − x_{n−1})/3 and v_b = (4 v_n − v_{n−1})/3 in the place of x_n and v_n (the first
+// step, and the first after a change of h, is backward Euler's). Either is L-stable: a step is
+// never limited by the stiffest bar. It is split in halves where Newton does not converge or where its local
 // error, h²/2 |a_{n+1} − a_n| at some node, passes kImplicitErrorShare of the median bar (but
 // for a step in which a node meets or leaves the ground).
 //
