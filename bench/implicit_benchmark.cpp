@@ -1,11 +1,16 @@
 // The implicit integrator against central differences on one scene, frame by frame (issue 33's
 // figures; docs/performance.md, "The implicit integrator"):
 //   cmake --build build --target bench_implicit && build/bench/bench_implicit [SCENE] [--until S]
-//       [--explicit-steps N]
+//       [--explicit-steps N] [--scheme backward_euler|bdf2] [--step S|auto] [--energy]
 // Without SCENE, the Wuson of the issue (assimp's OFF/Wuson.off fitted to 1 m, a rubber wire
 // dropped 0.5 m). Prints each frame's steps, Newton iterations, factorisations and time, then the
 // whole run's; central differences are timed over their first N steps (default 2 000) and
-// scaled to the run's step count, since running them through takes minutes.
+// scaled to the run's step count, since running them through takes minutes. --scheme picks the
+// implicit formula (default: the scene's), --step its step (`auto`: a quarter of a frame, for a
+// scene whose `timestep` is central differences'). --energy prints each frame's mechanical energy
+// (kinetic, springs, gravity, the ground's penalty and the fields' potential, which a field
+// constant in time has) beside central differences' at the same frame, which are then run
+// through: the numerical damping of an undamped scene.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -20,12 +25,44 @@
 #include "scene/scene_description.hpp"
 #include "solver/implicit_integrator.hpp"
 #include "solver/initial_state.hpp"
+#include "solver/potential.hpp"
 
 namespace dinam {
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The mechanical energy, J, gravity's and the fields' measured from `origin`: kinetic, springs,
+// gravity, the ground's penalty, and −m a·(x − origin) of every field (a potential while the field
+// is constant in time). Velocities are the state's (v_{n−½} for central differences).
+double kinetic_energy(const Model& model, const State& state) {
+  double energy = 0.0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (!model.pinned(i)) {
+      energy += 0.5 * model.node_mass[i] * state.v_half[i].squaredNorm();
+    }
+  }
+  return energy;
+}
+
+double mechanical_energy(const Model& model, const State& state, const std::vector<Vec3>& origin) {
+  ForceSwitches switches;
+  switches.fields = switches.wind = switches.axial_dampers = switches.global_damping = false;
+  switches.object_contact = false;
+  double energy =
+      potential_energy(model, state, switches, origin).energy + kinetic_energy(model, state);
+  for (const FieldForce& field : model.fields) {
+    const double scale = field.profile(state.time);
+    for (const Index i : field.nodes) {
+      if (!model.pinned(i)) {
+        const double mass = field.per_unit_mass ? model.node_mass[i] : 1.0;
+        energy -= mass * scale * field.value.dot(state.x[i] - origin[i]);
+      }
+    }
+  }
+  return energy;
 }
 
 }  // namespace
@@ -36,8 +73,17 @@ int main(int argc, char** argv) {
   std::string scene_path;
   double until = -1.0;
   std::int64_t explicit_steps = 2000;
+  std::string scheme;
+  std::string implicit_step;
+  bool energy = false;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--until") == 0 && i + 1 < argc) {
+    if (std::strcmp(argv[i], "--scheme") == 0 && i + 1 < argc) {
+      scheme = argv[++i];
+    } else if (std::strcmp(argv[i], "--step") == 0 && i + 1 < argc) {
+      implicit_step = argv[++i];
+    } else if (std::strcmp(argv[i], "--energy") == 0) {
+      energy = true;
+    } else if (std::strcmp(argv[i], "--until") == 0 && i + 1 < argc) {
       until = std::stod(argv[++i]);
     } else if (std::strcmp(argv[i], "--explicit-steps") == 0 && i + 1 < argc) {
       explicit_steps = std::stoll(argv[++i]);
@@ -61,24 +107,49 @@ int main(int argc, char** argv) {
   const std::int64_t explicit_total =
       static_cast<std::int64_t>(std::ceil(duration / explicit_step.dt));
   double explicit_seconds = 0.0;
+  std::vector<double> explicit_energy;  // at each frame, with --energy
+  double peak_kinetic = 0.0;            // J, central differences', at the frames
   {
     State state = initial_state(explicit_model, explicit_step.dt);
-    const std::int64_t taken = std::min(explicit_steps, explicit_total);
+    const std::vector<Vec3> origin = state.x;
+    const std::int64_t taken = energy ? explicit_total : std::min(explicit_steps, explicit_total);
     const auto start = std::chrono::steady_clock::now();
-    advance_steps(explicit_model, explicit_step.dt, {}, state, taken);
+    if (energy) {
+      explicit_energy.push_back(mechanical_energy(explicit_model, state, origin));
+      for (int frame = 1; frame <= frames; ++frame) {
+        advance_steps(explicit_model, explicit_step.dt, {}, state, explicit_step.steps_per_frame);
+        explicit_energy.push_back(mechanical_energy(explicit_model, state, origin));
+        peak_kinetic = std::max(peak_kinetic, kinetic_energy(explicit_model, state));
+      }
+    } else {
+      advance_steps(explicit_model, explicit_step.dt, {}, state, taken);
+    }
     explicit_seconds =
         seconds_since(start) * static_cast<double>(explicit_total) / static_cast<double>(taken);
   }
 
   // The implicit integrator at its automatic step.
   scene.integrator = IntegratorKind::kImplicit;
+  if (scheme == "bdf2") {
+    scene.implicit_scheme = ImplicitScheme::kBdf2;
+  } else if (scheme == "backward_euler") {
+    scene.implicit_scheme = ImplicitScheme::kBackwardEuler;
+  }
+  if (implicit_step == "auto") {
+    scene.timestep.reset();
+  } else if (!implicit_step.empty()) {
+    scene.timestep = std::stod(implicit_step);
+  }
   const Model model = build_model(scene);
   const TimeStep step = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   const auto steps_per_frame = static_cast<std::int64_t>(std::lround(1.0 / (scene.fps * step.dt)));
-  fmt::print("{}: {} nodes, {} bars; {} frames of {:.4g} s\n",
+  fmt::print("{}: {} nodes, {} bars; {} frames of {:.4g} s; {}, steps of {:.4g} s\n",
              scene_path.empty() ? "Wuson" : scene_path, model.node_count(), model.bar_count(),
-             frames, 1.0 / scene.fps);
+             frames, 1.0 / scene.fps,
+             model.implicit_scheme == ImplicitScheme::kBdf2 ? "BDF2" : "backward Euler", step.dt);
   State state = initial_state(model, step.dt);
+  const std::vector<Vec3> origin = state.x;
+  const double first_energy = mechanical_energy(model, state, origin);
   ImplicitIntegrator integrator(model);
   const auto start = std::chrono::steady_clock::now();
   ImplicitStats before;
@@ -88,9 +159,16 @@ int main(int argc, char** argv) {
     const ImplicitStats& now = integrator.stats();
     fmt::print(
         "frame {:3}  t {:6.3f} s  steps {:4}  iterations {:5}  factorisations {:4}  "
-        "{:8.3f} s\n",
+        "{:8.3f} s",
         frame, state.time, now.steps - before.steps, now.iterations - before.iterations,
         now.factorizations - before.factorizations, seconds_since(frame_start));
+    if (energy) {
+      fmt::print("  energy {:+.5g} J (central differences {:+.5g} J; both from {:+.5g} J)",
+                 mechanical_energy(model, state, origin) - first_energy,
+                 explicit_energy[static_cast<std::size_t>(frame)] - explicit_energy[0],
+                 first_energy);
+    }
+    fmt::print("\n");
     before = now;
   }
   const double implicit_seconds = seconds_since(start);
@@ -102,8 +180,12 @@ int main(int argc, char** argv) {
       stats.factorizations);
   fmt::print(
       "central differences: {} steps of {:.3g} s, about {:.2f} s (timed over the first {}); "
-      "{:.1f}× the implicit\n",
-      explicit_total, explicit_step.dt, explicit_seconds, std::min(explicit_steps, explicit_total),
+      "{:.3g}× the implicit\n",
+      explicit_total, explicit_step.dt, explicit_seconds,
+      energy ? explicit_total : std::min(explicit_steps, explicit_total),
       explicit_seconds / implicit_seconds);
+  if (energy) {
+    fmt::print("central differences' largest kinetic energy at a frame: {:.4g} J\n", peak_kinetic);
+  }
   return 0;
 }
