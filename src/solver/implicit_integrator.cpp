@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "model/model.hpp"
+#include "solver/implicit_friction.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -43,6 +44,10 @@ constexpr double kLeastLength = 1.0 / 1024;
 // only where it is at most kContraction of the step before: the Hessian has shown it still
 // describes the energy.
 constexpr int kChordIterations = 8;
+// Times a step's solve goes on with the friction of nodes that landed within it
+// (ImplicitFriction::add_new_touches): a node that lands where the last round had it above the
+// plane needs another.
+constexpr int kMostLandingRounds = 3;
 constexpr double kContraction = 0.5;
 
 // The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
@@ -92,6 +97,9 @@ struct ImplicitIntegrator::Workspace {
   // The state each step is solved from: (x_n, v_n) for backward Euler; for BDF2, (4 x_n −
   // x_{n−1})/3 and (4 v_n − v_{n−1})/3, with 2h/3 in the place of h.
   std::vector<Vec3> x_base, v_base;
+  ImplicitFriction friction;
+  std::vector<std::uint8_t> touching_start;  // State::contact_touching at x_n
+  std::vector<Eigen::Triplet<double>> friction_triplets;
   bool factored = false;  // `solver` holds a factorised Hessian of a step of `factored_h`
   double factored_h = 0.0;
 
@@ -106,6 +114,13 @@ struct ImplicitIntegrator::Workspace {
       SparseMatrix system =
           assembly.assemble(model, state, potential_switches(), dofs, definiteness);
       system += damping;
+      if (!friction.empty()) {
+        friction_triplets.clear();
+        friction.add_hessian(dofs, state.x, friction_triplets);
+        SparseMatrix held(dofs.count, dofs.count);
+        held.setFromTriplets(friction_triplets.begin(), friction_triplets.end());
+        system += held;
+      }
       system.diagonal() += inertia;
       if (solver.factorize(system)) {
         factored = true;
@@ -172,39 +187,23 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
   }
 
-  // The explicit forces at (x_n, v_n): fields and wind, then the ground's lagged friction.
+  // The explicit forces at (x_n, v_n): fields and wind; the friction springs of the nodes on the
+  // ground at x_n.
   state.dt = 0.0;
   compute_forces(model, explicit_switches(), state);
   w.explicit_force = state.force;
-  if (model.ground.enabled) {
-    const GroundContact& ground = model.ground;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double depth = -ground.clearance(static_cast<Index>(i), state.x[i]);
-      if (model.pinned(static_cast<Index>(i)) || depth <= 0.0) {
-        continue;
-      }
-      const double normal = ground.node_stiffness[i] * depth;
-      const Vec3& v = w.v_base[i];
-      const Vec3 tangential = v - v.dot(ground.normal) * ground.normal;
-      const double speed = tangential.norm();
-      if (speed == 0.0) {
-        continue;
-      }
-      // What stops the node within the step, if static friction can; else kinetic friction.
-      const double stopping = model.node_mass[i] * speed / hs;
-      const double friction = ground.stick || stopping <= ground.static_friction * normal
-                                  ? stopping
-                                  : ground.kinetic_friction * normal;
-      w.explicit_force[i] -= (friction / speed) * tangential;
-    }
-  }
+  w.friction.start_step(model, state);
+  // Central differences' own friction, which compute_static_forces applies to the nodes marked
+  // touching, is no potential: the solve sees none marked (the marks come back with the step).
+  w.touching_start = state.contact_touching;
+  std::fill(state.contact_touching.begin(), state.contact_touching.end(), 0);
 
   // x̂ = x_b + h v_b + h² M⁻¹ F_e (h: the step solved for); driven pins go to their places at
   // t_{n+1}.
   w.predicted.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    w.predicted[i] = w.x_base[i] + hs * w.v_base[i] +
-                     (hs * hs * model.node_inv_mass[i]) * w.explicit_force[i];
+    w.predicted[i] =
+        w.x_base[i] + hs * w.v_base[i] + (hs * hs * model.node_inv_mass[i]) * w.explicit_force[i];
   }
   place_driven_nodes(model, t_next, state);
 
@@ -249,22 +248,23 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   const double alpha = global ? model.global_damping : 0.0;
   auto gradient = [&](Vector& g) {
     compute_static_forces(model, switches, state);
+    w.friction.add_forces(state.x, state.force);
     const Vector x = free_part(dofs, state.x);
     const Vector moved = x - start;
     g = (w.mass / (hs * hs)).cwiseProduct(x - predicted) +
-        (alpha / hs) * w.mass.cwiseProduct(moved) -
-        free_part(dofs, state.force) + damping * moved;
+        (alpha / hs) * w.mass.cwiseProduct(moved) - free_part(dofs, state.force) + damping * moved;
   };
   auto energy = [&]() {
     const Vector x = free_part(dofs, state.x);
     const Vector off = x - predicted;
     const Vector moved = x - start;
-    return potential_energy(model, state, switches, w.x_start).energy +
+    return potential_energy(model, state, switches, w.x_start).energy + w.friction.energy(state.x) +
            (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
            (0.5 * alpha / hs) * w.mass.dot(moved.cwiseProduct(moved)) +
            0.5 * moved.dot(damping * moved);
   };
   auto restore = [&] {
+    state.contact_touching = w.touching_start;
     state.x = w.x_start;
     state.v_half = w.v_start;
     state.time = t_next - h;
@@ -277,7 +277,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
   }
   const double converged = kConvergedShare * w.bar / (hs * hs);  // m/s², a node's |g|/m
-  const double small_step = kConvergedShare * w.bar;           // m
+  const double small_step = kConvergedShare * w.bar;             // m
   Vector g;
   gradient(g);
   double e = energy();
@@ -303,6 +303,18 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     w.factored = false;
     step_before = std::numeric_limits<double>::infinity();
   };
+  // Found, unless a node landed within the step: then its friction joins and the step goes on.
+  int landings = 0;
+  auto found = [&] {
+    if (landings < kMostLandingRounds && w.friction.add_new_touches(model, w.x_start, state.x)) {
+      landings += 1;
+      gradient(g);
+      e = energy();
+      renew();
+      return false;
+    }
+    return true;
+  };
   for (int iteration = 0; iteration < kMostIterations && !done; ++iteration) {
     double worst = 0.0;
     for (Index d = 0; d < dofs.count; ++d) {
@@ -310,7 +322,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
     // At least one Newton step: from x̂ alone a slow motion would pass the test unsolved (a
     // linear step is exact after one).
-    if (iteration > 0 && worst <= converged) {
+    if (iteration > 0 && worst <= converged && found()) {
       done = true;
       break;
     }
@@ -363,7 +375,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     gradient(g);
     // A whole step, with a Hessian of this iterate or one that has shown it contracts, that moved
     // no node further than `small_step`: the next would move them far less.
-    if (length == 1.0 && largest <= small_step && (fresh || contracting)) {
+    if (length == 1.0 && largest <= small_step && (fresh || contracting) && found()) {
       done = true;
       break;
     }
@@ -405,6 +417,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     restore();
     return false;
   }
+  state.contact_touching = w.touching_start;
+  w.friction.finish_step(model, state);
   w.accel_before = std::move(accel);
   w.have_accel = !contact_changed;
   if (model.implicit_scheme == ImplicitScheme::kBdf2) {

@@ -2,12 +2,16 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <vector>
 
 namespace dinam {
 
 struct PositiveDefiniteSolver::Backend {
   bool analysed = false;
   bool supernodal = false;
+  // The pattern analysed: the compressed matrix's column starts and row indices.
+  std::vector<SparseMatrix::StorageIndex> outer, inner;
   Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower> simplicial;
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
 };
@@ -21,7 +25,22 @@ PositiveDefiniteSolver::~PositiveDefiniteSolver() = default;
 
 bool PositiveDefiniteSolver::factorize(const SparseMatrix& matrix) {
   Backend& b = *backend_;
+  const auto* outer = matrix.outerIndexPtr();
+  const auto* inner = matrix.innerIndexPtr();
+  const auto columns = static_cast<std::size_t>(matrix.cols()) + 1;
+  const auto entries = static_cast<std::size_t>(matrix.nonZeros());
+  const bool same_pattern =
+      b.analysed && matrix.isCompressed() && b.outer.size() == columns &&
+      b.inner.size() == entries && std::equal(b.outer.begin(), b.outer.end(), outer) &&
+      std::equal(b.inner.begin(), b.inner.end(), inner);
+  if (!same_pattern) {
+    b.analysed = false;
+  }
   if (!b.analysed) {
+    if (matrix.isCompressed()) {
+      b.outer.assign(outer, outer + columns);
+      b.inner.assign(inner, inner + entries);
+    }
     b.supernodal = matrix.rows() >= kSupernodalFrom;
     if (b.supernodal) {
       b.cholmod.analyzePattern(matrix);

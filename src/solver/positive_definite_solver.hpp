@@ -23,7 +23,9 @@ class PositiveDefiniteSolver {
   PositiveDefiniteSolver& operator=(const PositiveDefiniteSolver&) = delete;
 
   // Factorises `matrix` (its lower triangle is read); false where it is not positive definite.
-  // Its pattern is analysed at the first call: later matrices must have the same pattern.
+  // Its pattern is analysed at the first call and again wherever it differs from the last one
+  // analysed (a pair of objects or a node on the ground that newly couples two unknowns): a
+  // factorisation with another pattern's analysis would be wrong.
   bool factorize(const SparseMatrix& matrix);
   // x = matrix⁻¹ b, after a factorize that returned true.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;

@@ -1,0 +1,164 @@
+#include "solver/implicit_friction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "model/model.hpp"
+#include "solver/stiffness_matrix.hpp"
+
+namespace dinam {
+
+void ImplicitFriction::start_step(const Model& model, const State& state) {
+  nodes_.clear();
+  anchor_.clear();
+  stiffness_.clear();
+  cap_.clear();
+  const GroundContact& ground = model.ground;
+  if (!ground.enabled) {
+    return;
+  }
+  normal_ = ground.normal;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const double depth = -ground.clearance(i, state.x[i]);
+    if (depth <= 0.0 || model.pinned(i)) {
+      continue;
+    }
+    const double k = ground.node_stiffness[i];
+    const bool kept = !state.contact_touching.empty() && state.contact_touching[i] != 0;
+    const Vec3 foot = state.x[i] - (ground.node_radius[i] - depth) * ground.normal;
+    const double mu = !state.contact_sliding.empty() && state.contact_sliding[i] != 0
+                          ? ground.kinetic_friction
+                          : ground.static_friction;
+    nodes_.push_back(i);
+    anchor_.push_back(kept ? state.contact_anchor[i] : foot);
+    stiffness_.push_back(k);
+    cap_.push_back(ground.stick ? std::numeric_limits<double>::infinity() : mu * k * depth);
+  }
+}
+
+bool ImplicitFriction::add_new_touches(const Model& model, const std::vector<Vec3>& x_start,
+                                       const std::vector<Vec3>& x) {
+  const GroundContact& ground = model.ground;
+  if (!ground.enabled) {
+    return false;
+  }
+  bool joined = false;
+  std::size_t held = 0;  // nodes_ ascends: walk it beside i
+  const std::size_t before = nodes_.size();
+  for (Index i = 0; i < model.node_count(); ++i) {
+    while (held < before && nodes_[held] < i) {
+      ++held;
+    }
+    if (held < before && nodes_[held] == i) {
+      continue;
+    }
+    const double depth = -ground.clearance(i, x[i]);
+    if (depth <= 0.0 || model.pinned(i)) {
+      continue;
+    }
+    const double start_height = ground.clearance(i, x_start[i]) + ground.node_radius[i];
+    const double k = ground.node_stiffness[i];
+    nodes_.push_back(i);
+    anchor_.push_back(x_start[i] - start_height * ground.normal);
+    stiffness_.push_back(k);
+    cap_.push_back(ground.stick ? std::numeric_limits<double>::infinity()
+                                : ground.static_friction * k * depth);
+    joined = true;
+  }
+  return joined;
+}
+
+namespace {
+
+// u = P (x − a), the spring's stretch along the plane.
+Vec3 stretch(const Vec3& normal, const Vec3& x, const Vec3& anchor) {
+  const Vec3 d = x - anchor;
+  return d - d.dot(normal) * normal;
+}
+
+}  // namespace
+
+double ImplicitFriction::energy(const std::vector<Vec3>& x) const {
+  double energy = 0.0;
+  for (std::size_t s = 0; s < nodes_.size(); ++s) {
+    const double r = stretch(normal_, x[nodes_[s]], anchor_[s]).norm();
+    const double k = stiffness_[s];
+    const double reach = cap_[s] / k;  // r_c
+    energy += r <= reach ? 0.5 * k * r * r : cap_[s] * (r - reach) + 0.5 * k * reach * reach;
+  }
+  return energy;
+}
+
+void ImplicitFriction::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const {
+  for (std::size_t s = 0; s < nodes_.size(); ++s) {
+    const Vec3 u = stretch(normal_, x[nodes_[s]], anchor_[s]);
+    const double r = u.norm();
+    const double k = stiffness_[s];
+    force[nodes_[s]] -= r * k <= cap_[s] ? Vec3(k * u) : Vec3((cap_[s] / r) * u);
+  }
+}
+
+void ImplicitFriction::add_hessian(const FreeDofs& dofs, const std::vector<Vec3>& x,
+                                   std::vector<Eigen::Triplet<double>>& triplets) const {
+  const Mat3 across = Mat3::Identity() - normal_ * normal_.transpose();
+  for (std::size_t s = 0; s < nodes_.size(); ++s) {
+    const Index d = dofs.first_dof[nodes_[s]];
+    if (d < 0) {
+      continue;
+    }
+    const Vec3 u = stretch(normal_, x[nodes_[s]], anchor_[s]);
+    const double r = u.norm();
+    const double k = stiffness_[s];
+    // Sticking: k P. Sliding: the cap's force turns with u, (μN/r)(P − û ûᵀ), positive
+    // semi-definite (nothing along û: the force's size does not change with r).
+    Mat3 block = k * across;
+    if (r * k > cap_[s]) {
+      const Vec3 along = u / r;
+      block = (cap_[s] / r) * (across - along * along.transpose());
+    }
+    for (int row = 0; row < 3; ++row) {
+      for (int col = 0; col < 3; ++col) {
+        triplets.emplace_back(d + row, d + col, block(row, col));
+      }
+    }
+  }
+}
+
+void ImplicitFriction::finish_step(const Model& model, State& state) const {
+  const GroundContact& ground = model.ground;
+  if (!ground.enabled || state.contact_touching.empty()) {
+    return;
+  }
+  // Every node as it stands now; then the held ones' anchors from their springs.
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const double depth = -ground.clearance(i, state.x[i]);
+    const bool touching = depth > 0.0 && !model.pinned(i);
+    if (touching && state.contact_touching[i] == 0) {
+      state.contact_anchor[i] = state.x[i] - (ground.node_radius[i] - depth) * ground.normal;
+    }
+    state.contact_touching[i] = touching ? 1 : 0;
+    state.contact_sliding[i] = 0;
+  }
+  for (std::size_t s = 0; s < nodes_.size(); ++s) {
+    const Index i = nodes_[s];
+    if (state.contact_touching[i] == 0) {
+      continue;
+    }
+    const Vec3 u = stretch(normal_, state.x[i], anchor_[s]);
+    const double r = u.norm();
+    const bool slid = r * stiffness_[s] > cap_[s];
+    // The stretch the spring keeps: at most the cap of this step, and at most the cap the next
+    // step will have (μ times the normal force at x_{n+1}, with the μ of what it did): a node
+    // pressed hard at x_n (a landing) may not carry the stretch that allowed into a step in which
+    // it presses lightly, where it would count as sliding.
+    const double next_mu = slid ? ground.kinetic_friction : ground.static_friction;
+    const double next_reach = ground.stick ? std::numeric_limits<double>::infinity()
+                                           : next_mu * -ground.clearance(i, state.x[i]);
+    const double kept = std::min({r, cap_[s] / stiffness_[s], next_reach});
+    state.contact_anchor[i] = kept < r ? Vec3(anchor_[s] + ((r - kept) / r) * u) : anchor_[s];
+    state.contact_sliding[i] = slid ? 1 : 0;
+  }
+}
+
+}  // namespace dinam

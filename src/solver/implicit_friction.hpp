@@ -1,0 +1,56 @@
+#pragma once
+// The ground's Coulomb friction inside an implicit step: the stick spring of central differences'
+// contact (dynamics/ground_contact.hpp), as a potential of the positions that Newton's method
+// minimises with the rest. Each node below the plane at x_n keeps its anchor a on the plane and
+// is held by the tangential spring k u, u = P (x − a) (P the projection onto the plane, k the
+// ground's penalty stiffness), up to the cap μ N (μs while it sticks, μk while it slides; N =
+// k × its depth at x_n, lagged), beyond which it slides at the cap:
+//   E(u) = ½ k |u|²  for |u| ≤ r_c = μN/k,   μN (|u| − r_c) + ½ k r_c²  beyond,
+// convex and once differentiable, so the step stays a minimisation. A node that sticks moves
+// only by the spring's give, μN/k at most, however long the step: it does not creep. After the
+// step a node that slid drags its anchor to r_c behind its foot, as central differences do; one
+// that first touched within the step is anchored at its foot. With `stick` the cap is infinite.
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "core/types.hpp"
+#include "dynamics/state.hpp"
+
+namespace dinam {
+
+struct Model;
+struct FreeDofs;
+
+class ImplicitFriction {
+ public:
+  // The springs of the nodes below the plane at state.x (x_n), from the state's contact history.
+  void start_step(const Model& model, const State& state);
+
+  // Nodes below the plane at `x` (the step's solution) that were above it at `x_start` (x_n)
+  // join, anchored at x_n's foot on the plane, their cap μs times the normal force at x: a node
+  // that lands within the step is held from its start, as it would be by central differences'
+  // short steps (else a block set down on a slope slides freely for its first step and lands
+  // too fast to stick). True where any joined: the step is to be solved again.
+  bool add_new_touches(const Model& model, const std::vector<Vec3>& x_start,
+                       const std::vector<Vec3>& x);
+
+  bool empty() const { return nodes_.empty(); }
+  double energy(const std::vector<Vec3>& x) const;                              // J
+  void add_forces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const;  // N, −∇E
+  // The Hessian of E at x, 3 × 3 blocks on the free nodes' diagonal.
+  void add_hessian(const FreeDofs& dofs, const std::vector<Vec3>& x,
+                   std::vector<Eigen::Triplet<double>>& triplets) const;
+
+  // After an accepted step to state.x: anchors dragged where a node slid, new touches anchored
+  // at their feet, nodes that left the plane forgotten (State::contact_*).
+  void finish_step(const Model& model, State& state) const;
+
+ private:
+  Vec3 normal_ = Vec3::UnitZ();
+  std::vector<Index> nodes_;
+  std::vector<Vec3> anchor_;       // m, on the plane
+  std::vector<double> stiffness_;  // N/m
+  std::vector<double> cap_;        // N, μ N; infinite with `stick`
+};
+
+}  // namespace dinam
