@@ -61,17 +61,17 @@ void add_axial_damper_forces(ForceContext& context) {
                         });
 }
 
-double axial_spring_energy(const Model& model, const State& state) {
+double axial_spring_energy(const Model& model, const State& state, SpringEnergy which) {
   double energy = 0.0;
   for (Index b = 0; b < model.bar_count(); ++b) {
     if (!state.bar_broken.empty() && state.bar_broken[b] != 0) {
       continue;
     }
-    energy += axial_spring(state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
-                           model.bar_rest_length[b], model.bar_axial_stiffness[b],
-                           plastic_set_of(state.bar_plastic_set, b),
-                           yield_limit(model.bar_yield_force, b))
-                  .energy;
+    const auto r = axial_spring(
+        state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
+        model.bar_rest_length[b], model.bar_axial_stiffness[b],
+        plastic_set_of(state.bar_plastic_set, b), yield_limit(model.bar_yield_force, b));
+    energy += which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
   }
   return energy;
 }

@@ -57,7 +57,7 @@ void add_axial_spring_forces(ForceContext& context);
 void add_axial_damper_forces(ForceContext& context);
 
 // Σ ½ k (L − L0 − p)² over all bars, J.
-double axial_spring_energy(const Model& model, const State& state);
+double axial_spring_energy(const Model& model, const State& state, SpringEnergy which);
 // Each bar's stiffness: k n nᵀ + (N / L)(I − n nᵀ) on its ends, as ±.
 void add_axial_spring_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 

@@ -67,18 +67,18 @@ void add_bending_spring_forces(ForceContext& context) {
       });
 }
 
-double bending_spring_energy(const Model& model, const State& state) {
+double bending_spring_energy(const Model& model, const State& state, SpringEnergy which) {
   double energy = 0.0;
   for (Index s = 0; s < model.bend_count(); ++s) {
     if (!state.bend_broken.empty() && state.bend_broken[s] != 0) {
       continue;
     }
     const Index* nodes = &model.bend_nodes[3 * s];
-    energy += bending_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]],
-                             model.bend_rest_angle[s], model.bend_stiffness[s],
-                             plastic_set_of(state.bend_plastic_set, s),
-                             yield_limit(model.bend_yield_moment, s))
-                  .energy;
+    const auto r = bending_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]],
+                                  model.bend_rest_angle[s], model.bend_stiffness[s],
+                                  plastic_set_of(state.bend_plastic_set, s),
+                                  yield_limit(model.bend_yield_moment, s));
+    energy += which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
   }
   return energy;
 }

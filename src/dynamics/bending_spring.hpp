@@ -110,7 +110,7 @@ LocalStiffness<3> bending_spring_stiffness(const std::array<Vec3, 3>& at, double
                                            double stiffness, double plastic_set, double yield);
 
 void add_bending_spring_forces(ForceContext& context);
-double bending_spring_energy(const Model& model, const State& state);
+double bending_spring_energy(const Model& model, const State& state, SpringEnergy which);
 void add_bending_spring_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 
 // The entry of spring_kinds.hpp.

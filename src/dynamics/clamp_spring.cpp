@@ -47,13 +47,14 @@ void add_clamp_forces(ForceContext& context) {
   }
 }
 
-double clamp_spring_energy(const Model& model, const State& state) {
+double clamp_spring_energy(const Model& model, const State& state, SpringEnergy which) {
   double energy = 0.0;
   for (Index s = 0; s < model.clamp_count(); ++s) {
     if (!state.clamp_broken.empty() && state.clamp_broken[s] != 0) {
       continue;
     }
-    energy += clamp_spring(model, state, s).energy;
+    const auto r = clamp_spring(model, state, s);
+    energy += which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
   }
   return energy;
 }

@@ -12,7 +12,7 @@ struct Model;
 // A few springs at the supports: one loop in clamp order, each worker the clamps of its own free
 // nodes.
 void add_clamp_forces(ForceContext& context);
-double clamp_spring_energy(const Model& model, const State& state);
+double clamp_spring_energy(const Model& model, const State& state, SpringEnergy which);
 // Over the support c and the free node a; the support's share (its row) goes to the support.
 void add_clamp_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 

@@ -31,7 +31,7 @@ EnergyReport energy_report(const Model& model, const State& state,
   report.time = state.time;
   report.kinetic = kinetic_energy(model, v_whole);
   for (const SpringKind* kind : kSpringKinds) {  // clamps are booked with the bending springs
-    report.*kind->report += kind->energy(model, state);
+    report.*kind->report += kind->energy(model, state, SpringEnergy::kStored);
   }
   report.gravitational = gravitational_energy(model, state.x);
   report.contact = ground_contact_energy(model, state) + object_contact_energy(state);

@@ -19,13 +19,20 @@
 
 namespace dinam {
 
+// What a kind's energy counts (SpringKind::energy): the elastic energy stored; or that and the work
+// that the flow from the state's plastic sets to the present positions would dissipate, whose
+// gradient is the flattened force: the springs' share of the incremental potential that an
+// implicit step minimises with its plastic sets held at the step's start (a return mapping at
+// every iterate).
+enum class SpringEnergy { kStored, kWithFlow };
+
 struct SpringKind {
   // The model stage's half (model/model_spring_kind.hpp): its name, arrays, stability bound and
   // tearing.
   const ModelSpringKind* built;
   bool ForceSwitches::*switched;  // its switch: off, the step leaves it out (tests isolate kinds)
-  void (*add_forces)(ForceContext&);             // on the context worker's own nodes
-  double (*energy)(const Model&, const State&);  // J, elastic, of the springs not broken
+  void (*add_forces)(ForceContext&);                           // on the context worker's own nodes
+  double (*energy)(const Model&, const State&, SpringEnergy);  // J, of the springs not broken
   // Each spring's stiffness matrix at the state's positions (stiffness.hpp), for Newton's method:
   // the Jacobian of its forces, plastic sets held, of the springs not broken.
   void (*add_stiffness)(const Model&, const State&, StiffnessSink&);

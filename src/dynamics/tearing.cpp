@@ -11,7 +11,7 @@ namespace {
 double elastic_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (const SpringKind* kind : kSpringKinds) {
-    energy += kind->energy(model, state);
+    energy += kind->energy(model, state, SpringEnergy::kStored);
   }
   return energy;
 }

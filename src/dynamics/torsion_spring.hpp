@@ -150,7 +150,7 @@ template <class T>
 }
 
 void add_torsion_spring_forces(ForceContext& context);
-double torsion_spring_energy(const Model& model, const State& state);
+double torsion_spring_energy(const Model& model, const State& state, SpringEnergy which);
 void add_torsion_spring_stiffness(const Model& model, const State& state, StiffnessSink& sink);
 
 // The entry of spring_kinds.hpp.

@@ -447,16 +447,13 @@ void release_spare_capacity(Model& model) {
   for_each_model_array(model, [](std::string_view, auto& array) { array.shrink_to_fit(); });
 }
 
-// The implicit integrator handles elastic springs, dampers, gravity, fields, wind and the ground
-// (solver/implicit_integrator.hpp); the rest is refused at `integrator`, naming it.
+// The implicit integrator handles springs (yielding too), dampers, gravity, fields, wind and the
+// ground (solver/implicit_integrator.hpp); the rest is refused at `integrator`, naming it.
 void refuse_what_implicit_cannot_do(const SceneDescription& scene, const Model& model) {
   if (model.integrator != IntegratorKind::kImplicit) {
     return;
   }
   std::vector<std::string> missing;
-  if (model.bars_yield || model.bends_yield || model.torsions_yield || model.clamps_yield) {
-    missing.emplace_back("springs that yield (yield_stress)");
-  }
   if (model.can_tear()) {
     missing.emplace_back("bars that tear (breaking)");
   }

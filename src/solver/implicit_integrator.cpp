@@ -88,7 +88,8 @@ struct ImplicitIntegrator::Workspace {
   StiffnessAssembly assembly;
   PositiveDefiniteSolver solver;
   std::vector<Eigen::Triplet<double>> damper_triplets;
-  double bar = 1.0;  // m, the median bar
+  double bar = 1.0;        // m, the median bar
+  bool any_yield = false;  // some spring can flow
   std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before;
   bool have_accel = false;
   // BDF2's history: x_{n−1} and v_{n−1}, from the last step taken, of `before_h` (0: none).
@@ -136,6 +137,8 @@ ImplicitIntegrator::ImplicitIntegrator(const Model& model)
   work_->dofs = free_dofs(model);
   work_->mass = free_masses(model, work_->dofs);
   work_->bar = median_bar(model);
+  work_->any_yield =
+      model.bars_yield || model.bends_yield || model.torsions_yield || model.clamps_yield;
 }
 
 ImplicitIntegrator::~ImplicitIntegrator() = default;
@@ -258,8 +261,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     const Vector x = free_part(dofs, state.x);
     const Vector off = x - predicted;
     const Vector moved = x - start;
-    return potential_energy(model, state, switches, w.x_start).energy + w.friction.energy(state.x) +
-           (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
+    return potential_energy(model, state, switches, w.x_start, SpringEnergy::kWithFlow).energy +
+           w.friction.energy(state.x) + (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
            (0.5 * alpha / hs) * w.mass.dot(moved.cwiseProduct(moved)) +
            0.5 * moved.dot(damping * moved);
   };
@@ -345,6 +348,12 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       continue;
     }
     const double slope = g.dot(step);  // < 0 for a descent direction
+    // No descent left to take, and none needed (a structure at rest with nothing moving it: the
+    // gradient is zero and so is the step).
+    if (slope >= 0.0 && fresh && largest <= small_step && found()) {
+      done = true;
+      break;
+    }
     const std::vector<Vec3> from = state.x;
     double length = 1.0;
     bool accepted = false;
@@ -419,6 +428,14 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   }
   state.contact_touching = w.touching_start;
   w.friction.finish_step(model, state);
+  if (w.any_yield) {
+    // The springs that flowed keep their new plastic sets (the return mapping at x_{n+1}).
+    ForceSwitches springs = potential_switches();
+    springs.gravity = springs.ground = false;
+    const std::vector<Vec3> velocities = state.v_half;
+    compute_forces(model, springs, state, true);
+    state.v_half = velocities;
+  }
   w.accel_before = std::move(accel);
   w.have_accel = !contact_changed;
   if (model.implicit_scheme == ImplicitScheme::kBdf2) {

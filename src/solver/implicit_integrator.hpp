@@ -18,8 +18,11 @@
 // where its local error, h²/2 |a_{n+1} − a_n| at some node, passes kImplicitErrorShare of the
 // median bar (but for a step in which a node meets or leaves the ground).
 //
-// Not yet: springs that yield, bars that tear and contact between objects are refused at the
-// scene (model/derived_checks.cpp); the state's velocities are v_n, not leapfrog's v_{n−½}.
+// Springs that yield: the plastic sets are held at the step's start while Newton minimises the
+// stored energy plus the work of the flow from them (SpringEnergy::kWithFlow, whose gradient is
+// the flattened force: a return mapping at every iterate), and kept at the step's end.
+// Not yet: bars that tear and contact between objects are refused at the scene
+// (model/model_builder.cpp); the state's velocities are v_n, not leapfrog's v_{n−½}.
 #include <memory>
 
 #include "dynamics/integrator.hpp"

@@ -29,10 +29,10 @@ bool PositiveDefiniteSolver::factorize(const SparseMatrix& matrix) {
   const auto* inner = matrix.innerIndexPtr();
   const auto columns = static_cast<std::size_t>(matrix.cols()) + 1;
   const auto entries = static_cast<std::size_t>(matrix.nonZeros());
-  const bool same_pattern =
-      b.analysed && matrix.isCompressed() && b.outer.size() == columns &&
-      b.inner.size() == entries && std::equal(b.outer.begin(), b.outer.end(), outer) &&
-      std::equal(b.inner.begin(), b.inner.end(), inner);
+  const bool same_pattern = b.analysed && matrix.isCompressed() && b.outer.size() == columns &&
+                            b.inner.size() == entries &&
+                            std::equal(b.outer.begin(), b.outer.end(), outer) &&
+                            std::equal(b.inner.begin(), b.inner.end(), inner);
   if (!same_pattern) {
     b.analysed = false;
   }

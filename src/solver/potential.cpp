@@ -9,7 +9,7 @@
 namespace dinam {
 
 Potential potential_energy(const Model& model, const State& state, const ForceSwitches& switches,
-                           const std::vector<Vec3>& gravity_origin) {
+                           const std::vector<Vec3>& gravity_origin, SpringEnergy springs) {
   Potential potential;
   auto add = [&](double term) {
     potential.energy += term;
@@ -17,7 +17,7 @@ Potential potential_energy(const Model& model, const State& state, const ForceSw
   };
   for (const SpringKind* kind : kSpringKinds) {
     if (switches.*kind->switched) {
-      add(kind->energy(model, state));
+      add(kind->energy(model, state, springs));
     }
   }
   if (switches.gravity) {

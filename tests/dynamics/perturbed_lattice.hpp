@@ -2,6 +2,7 @@
 // What the tests of every force kind share (spring_kinds_test.cpp, stiffness_test.cpp): a small
 // model that has every kind of spring, moved off its rest shape, and switches with nothing on.
 #include <random>
+#include <string>
 
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
@@ -20,13 +21,14 @@ inline ForceSwitches nothing_on() {
 
 // A wire lattice of 5 × 5 cells of 0.2 m hanging from a clamped edge (so clamps exist beside
 // axial, bending and torsion springs), every free node moved by up to 3 mm at random and 4 mm
-// down, so that its lowest row, 2 mm above the ground, dips into it.
+// down, so that its lowest row, 2 mm above the ground, dips into it. `material_extra` ends the
+// material's map (", yield_stress: 1.0e6").
 struct PerturbedLattice {
   Model model;
   State state;
 };
 
-inline PerturbedLattice perturbed_lattice() {
+inline PerturbedLattice perturbed_lattice(const std::string& material_extra = "") {
   PerturbedLattice p{build_model(scene_from_yaml(R"(version: 1
 duration: 1
 ground: {height: -0.3}
@@ -36,7 +38,8 @@ objects:
       grid: {width: 1.0, height: 1.0, columns: 5, rows: 5, diagonals: none}
       rotation: [-90, 0, 0]
       translation: [0, 0, 0.702]
-    material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.002}
+    material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.002)" +
+                                                 material_extra + R"(}
     pinned: {box: {min: [-1, -1, 0.701], max: [1, 1, 0.703]}, clamped: true}
 )")),
                      {}};

@@ -45,8 +45,7 @@ struct Vibration {
 // loss and the turn are measured over the last period, when BDF2's start has long died out.
 Vibration vibrate(const std::string& integrator, int steps_per_period, int periods,
                   double* omega_out = nullptr) {
-  const Model model =
-      test::clamped_cantilever(20, "gravity: [0, 0, 0]\nintegrator: " + integrator);
+  const Model model = test::clamped_cantilever(20, "gravity: [0, 0, 0]\nintegrator: " + integrator);
   State rest = make_state(model, false);
   const std::vector<NaturalMode> modes = natural_modes(model, rest, test::static_forces(), 2);
   const NaturalMode& mode = modes[0].mass_share.z() > modes[1].mass_share.z() ? modes[0] : modes[1];
@@ -91,8 +90,9 @@ std::complex<double> bdf2_root(double omega_h) {
 // The model's first frequency is Euler–Bernoulli's to its discretisation error (−0.21 % at 20
 // bars: tests/dynamics/beam_test.cpp), so what is measured here is the schemes' own error.
 TEST(ImplicitDamping, TheCantileverLosesPerPeriodWhatEachSchemesClosedFormSays) {
-  std::printf("steps a period | backward Euler: loss a period, closed form | period error, closed "
-              "form | BDF2: loss, closed form | period error, closed form\n");
+  std::printf(
+      "steps a period | backward Euler: loss a period, closed form | period error, closed "
+      "form | BDF2: loss, closed form | period error, closed form\n");
   double omega = 0.0;
   double euler_period_error_before = 0.0;
   double bdf2_period_error_before = 0.0;
@@ -109,8 +109,8 @@ TEST(ImplicitDamping, TheCantileverLosesPerPeriodWhatEachSchemesClosedFormSays) 
     const double bdf2_period = omega_h / std::arg(rb) - 1.0;
     std::printf("%14d | %.4f %.4f | %+.4f %+.4f | %.5f %.5f | %+.4f %+.4f\n", steps,
                 euler.loss_per_period, euler_loss, omega_h / euler.phase_per_step - 1.0,
-                euler_period, bdf2.loss_per_period, bdf2_loss,
-                omega_h / bdf2.phase_per_step - 1.0, bdf2_period);
+                euler_period, bdf2.loss_per_period, bdf2_loss, omega_h / bdf2.phase_per_step - 1.0,
+                bdf2_period);
     // Newton's method stops within 1e-5 of a bar of the solution a step (about 5e-7 m against an
     // amplitude of 1e-4 m at the tip, spread over the mode): the measured losses agree with the
     // closed forms to a few 1e-4 of the amplitude.

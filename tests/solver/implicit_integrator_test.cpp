@@ -80,7 +80,7 @@ objects:
   const double amplitude = 0.01 / omega;
   State state = initial_state(model, h);
   ImplicitIntegrator integrator(model);
-  std::complex<double> before(0.0, -amplitude);  // u_0
+  std::complex<double> before(0.0, -amplitude);   // u_0
   std::complex<double> now = before / (1.0 - z);  // u_1
   integrator.advance(state, h, 1);
   EXPECT_NEAR(state.x[1].x() - 1.0, now.real(), 1e-6 * amplitude) << "step 1";
@@ -203,13 +203,13 @@ duration: 1
 integrator: implicit
 objects:
   - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}
-    material: {density: 1000, youngs_modulus: 1.0e8, radius: 0.005, yield_stress: 1.0e6}
+    material: {density: 1000, youngs_modulus: 1.0e8, radius: 0.005, breaking: {strain: 0.1}}
     pinned: {indices: [0]}
 )"));
-    ADD_FAILURE() << "a yielding material was taken";
+    ADD_FAILURE() << "a material that tears was taken";
   } catch (const UserError& e) {
     test::expect_contains(e.message(),
-                          {"integrator: implicit", "springs that yield", "central_difference"});
+                          {"integrator: implicit", "bars that tear", "central_difference"});
     EXPECT_EQ(e.loc().line, 3);
   }
 }
