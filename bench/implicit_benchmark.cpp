@@ -1,7 +1,7 @@
 // The implicit integrator against central differences on one scene, frame by frame (issue 33's
 // figures; docs/performance.md, "The implicit integrator"):
 //   cmake --build build --target bench_implicit && build/bench/bench_implicit [SCENE] [--until S]
-//       [--explicit-steps N] [--scheme backward_euler|bdf2] [--step S|auto] [--energy]
+//       [--explicit-steps N] [--scheme backward_euler|bdf2] [--step S|auto] [--energy] [--costs]
 // Without SCENE, the Wuson of the issue (assimp's OFF/Wuson.off fitted to 1 m, a rubber wire
 // dropped 0.5 m). Prints each frame's steps, Newton iterations, factorisations and time, then the
 // whole run's; central differences are timed over their first N steps (default 2 000) and
@@ -10,7 +10,9 @@
 // scene whose `timestep` is central differences'). --energy prints each frame's mechanical energy
 // (kinetic, springs, gravity, the ground's penalty and the fields' potential, which a field
 // constant in time has) beside central differences' at the same frame, which are then run
-// through: the numerical damping of an undamped scene.
+// through: the numerical damping of an undamped scene. --costs measures, instead of the run, what
+// src/solver/implicit_cost.cpp's estimate is made of: an assembly and factorisation of the
+// Hessian, a solve, a force evaluation and an energy, against the factor's size.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -23,9 +25,12 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/implicit_cost.hpp"
 #include "solver/implicit_integrator.hpp"
 #include "solver/initial_state.hpp"
+#include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
+#include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
 namespace {
@@ -65,6 +70,60 @@ double mechanical_energy(const Model& model, const State& state, const std::vect
   return energy;
 }
 
+// Times `work` over repeats until about half a second has passed; seconds per repeat.
+template <class Work>
+double seconds_each(const Work& work) {
+  const auto start = std::chrono::steady_clock::now();
+  int repeats = 0;
+  do {
+    work();
+    ++repeats;
+  } while (seconds_since(start) < 0.5);
+  return seconds_since(start) / repeats;
+}
+
+// What the implicit integrator's cost estimate (src/solver/implicit_cost.hpp) is made of, measured
+// at the scene's initial state, one thread.
+void print_costs(SceneDescription scene) {
+  scene.integrator = IntegratorKind::kImplicit;
+  const Model model = build_model(scene);
+  const HessianFactorSize factor = hessian_factor_size(model);
+  const FreeDofs dofs = free_dofs(model);
+  State state = make_state(model, false);
+  ForceSwitches springs;
+  springs.fields = springs.wind = springs.axial_dampers = false;
+  springs.global_damping = springs.object_contact = false;
+  StiffnessAssembly assembly;
+  PositiveDefiniteSolver solver;
+  const Eigen::VectorXd shift = free_masses(model, dofs) / (0.0125 * 0.0125);
+  const double factorize = seconds_each([&] {
+    SparseMatrix system = assembly.assemble(model, state, springs, dofs, Definiteness::kProjected);
+    system.diagonal() += shift;
+    solver.factorize(system);
+  });
+  const double assemble = seconds_each(
+      [&] { assembly.assemble(model, state, springs, dofs, Definiteness::kProjected); });
+  const double assemble_exact =
+      seconds_each([&] { assembly.assemble(model, state, springs, dofs, Definiteness::kExact); });
+  const Eigen::VectorXd rhs = Eigen::VectorXd::Ones(dofs.count);
+  const double solve = seconds_each([&] { solver.solve(rhs); });
+  const double force = seconds_each([&] { compute_static_forces(model, springs, state); });
+  const double energy = seconds_each([&] {
+    potential_energy(model, state, springs, model.node_initial_x, SpringEnergy::kWithFlow);
+  });
+  const auto springs_count = model.bar_count() + model.bend_count() + model.torsion_count();
+  fmt::print(
+      "{} unknowns, {} springs; factor: {:.4g} nonzeros, {:.4g} flops\n"
+      "assembly {:.4g} ms ({:.4g} ns a spring; exact, not projected: {:.4g} ms); assembly and "
+      "factorisation {:.4g} ms (the "
+      "factorisation {:.4g} ns a flop)\nsolve {:.4g} ms ({:.4g} ns a nonzero, forward and back); "
+      "forces {:.4g} ms; energy {:.4g} ms\n",
+      dofs.count, springs_count, factor.nonzeros, factor.flops, 1e3 * assemble,
+      1e9 * assemble / static_cast<double>(springs_count), 1e3 * assemble_exact, 1e3 * factorize,
+      1e9 * (factorize - assemble) / factor.flops, 1e3 * solve,
+      1e9 * solve / (2.0 * factor.nonzeros), 1e3 * force, 1e3 * energy);
+}
+
 }  // namespace
 }  // namespace dinam
 
@@ -76,6 +135,7 @@ int main(int argc, char** argv) {
   std::string scheme;
   std::string implicit_step;
   bool energy = false;
+  bool costs = false;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--scheme") == 0 && i + 1 < argc) {
       scheme = argv[++i];
@@ -83,6 +143,8 @@ int main(int argc, char** argv) {
       implicit_step = argv[++i];
     } else if (std::strcmp(argv[i], "--energy") == 0) {
       energy = true;
+    } else if (std::strcmp(argv[i], "--costs") == 0) {
+      costs = true;
     } else if (std::strcmp(argv[i], "--until") == 0 && i + 1 < argc) {
       until = std::stod(argv[++i]);
     } else if (std::strcmp(argv[i], "--explicit-steps") == 0 && i + 1 < argc) {
@@ -96,6 +158,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   SceneDescription scene = scene_path.empty() ? wuson_scene() : read_scene(scene_path);
+  if (costs) {
+    print_costs(scene);
+    return 0;
+  }
   const double duration = until > 0.0 ? until : scene.duration;
   const int frames = static_cast<int>(std::lround(duration * scene.fps));
 

@@ -9,6 +9,7 @@
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
+#include "app/integrator_choice.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/run_estimate.hpp"
 #include "core/thread_team.hpp"
@@ -81,7 +82,39 @@ struct RunFigures {
   RunEstimate estimate;
   MeasuredStep measured;
   ThreadChoice threads;
+  IntegratorChoice choice;
 };
+
+const char* integrator_key(IntegratorKind kind) {
+  return kind == IntegratorKind::kImplicit ? "implicit" : "central_difference";
+}
+
+// What each integrator would need, and the one recommended.
+void print_integrator_choice(const IntegratorChoice& choice) {
+  if (!choice.implicit_refused.empty()) {
+    fmt::print(
+        "integrators      central_difference: {} steps, about {}; implicit: not for this scene "
+        "({})\nrecommended      integrator: central_difference\n",
+        choice.central_difference.steps, duration_text(choice.central_difference.seconds),
+        choice.implicit_refused);
+    return;
+  }
+  const ImplicitStepCost& step = choice.implicit_step;
+  fmt::print(
+      "integrators      central_difference: {} steps, about {}; implicit: {} steps (more where "
+      "a step is split), about {} at {:g} Newton iterations and {:g} factorisations a step "
+      "({:.3g} ms each, of a factor of {:.3g} nonzeros for {:.0f} unknowns; a swing takes fewer, "
+      "an impact on the ground more: docs/performance.md)\n",
+      choice.central_difference.steps, duration_text(choice.central_difference.seconds),
+      choice.implicit.steps, duration_text(choice.implicit.seconds), kAssumedIterationsPerStep,
+      kAssumedFactorizationsPerStep, 1e3 * step.factorization_seconds, step.factor.nonzeros,
+      step.factor.unknowns);
+  fmt::print("recommended      integrator: {} ({})\n", integrator_key(choice.recommended),
+             choice.recommended == IntegratorKind::kImplicit
+                 ? "its estimate is under half of central differences'"
+                 : "the implicit integrator's estimate is not under half of central "
+                   "differences', which are exact and cheap per step");
+}
 
 void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
                 Index pinned, const RunFigures& run) {
@@ -136,6 +169,11 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"seconds_per_step", run.estimate.step.seconds},
       {"estimated_run_s", run.estimate.seconds},
       {"measured_seconds_per_step", run.measured.seconds_per_step},
+      {"central_difference_steps", run.choice.central_difference.steps},
+      {"central_difference_estimated_run_s", run.choice.central_difference.seconds},
+      {"implicit_steps", run.choice.implicit.steps},
+      {"implicit_estimated_run_s", run.choice.implicit.seconds},
+      {"recommended_integrator", integrator_key(run.choice.recommended)},
       {"memory_render_bytes", memory.render.peak()},
       {"memory_simulate_bytes", memory.simulate.peak()},
       {"memory_available_bytes", memory.available.bytes},
@@ -255,8 +293,9 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
                  : std::string());
   if (model.integrator == IntegratorKind::kImplicit) {
     fmt::print(
-        "run time         not estimated for the implicit integrator yet: each step is a Newton "
-        "solve, which the per-spring costs do not give (docs/performance.md)\n");
+        "run time         about {} to simulate ({:.3g} ms a step, a Newton solve, estimated from "
+        "the model's springs and the size of its Hessian's factor; drawing comes on top)\n",
+        duration_text(run.estimate.seconds), 1e3 * cost.seconds);
   } else {
     fmt::print(
         "run time         about {} to simulate ({:.3g} ms a step on {} thread{}, estimated from "
@@ -272,6 +311,7 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
         "now\n",
         1e3 * run.measured.seconds_per_step, run.measured.steps);
   }
+  print_integrator_choice(run.choice);
   const MemoryFigures memory = memory_figures(scene, model);
   fmt::print("memory, render   about {} at {}×{}\n", memory.render.summary(), scene.image_width,
              scene.image_height);
@@ -295,7 +335,7 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
                        model.integrator == IntegratorKind::kImplicit
                            ? MeasuredStep{}
                            : measure_step_now(model, timestep),
-                       threads};
+                       threads, compare_integrators(scene, model, thread_count())};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     pinned += model.pinned(i) ? 1 : 0;

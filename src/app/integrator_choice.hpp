@@ -1,0 +1,30 @@
+#pragma once
+// Which integrator fits a scene (`dinam info`): the steps each would take and an estimate of its
+// time, both from counts (app/run_estimate.hpp, solver/implicit_cost.hpp), and the one
+// recommended: the implicit integrator where its estimate is under half of central differences',
+// which are exact and cheap per step, so the default otherwise.
+#include <string>
+
+#include "app/run_estimate.hpp"
+#include "scene/scene_description.hpp"
+#include "solver/implicit_cost.hpp"
+
+namespace dinam {
+
+struct Model;
+
+// The estimates are of the motion alone: the settling before it is left out of both.
+struct IntegratorChoice {
+  RunEstimate central_difference;  // at its automatic step (or the scene's), with mass scaling
+  RunEstimate implicit;            // at the scene's `timestep` or a quarter of a frame
+  ImplicitStepCost implicit_step;
+  std::string implicit_refused;  // why the scene cannot take it; empty where it can
+  IntegratorKind recommended = IntegratorKind::kCentralDifference;
+};
+
+// `model` is the scene's, built for its own integrator; the other integrator's model is built
+// here (it differs in the mass scaling added to lengthen central differences' step).
+IntegratorChoice compare_integrators(const SceneDescription& scene, const Model& model,
+                                     int threads);
+
+}  // namespace dinam

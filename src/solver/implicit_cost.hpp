@@ -1,0 +1,42 @@
+#pragma once
+// What a step of the implicit integrator costs, estimated from what the model holds and from the
+// size of its Hessian's Cholesky factor (CHOLMOD's analysis of the pattern, no numbers), so that
+// `info` can set the two integrators side by side the same way on a quiet machine and a busy one
+// (docs/threads.md, "The estimate of a run"). The per-item costs are bench_implicit --costs's on
+// the machine of docs/performance.md; how many Newton iterations and factorisations a step takes
+// depends on the motion (a swing takes a few, an impact on the ground tens), and the estimate
+// assumes the middle of what bench_implicit measured.
+#include "dynamics/step_cost.hpp"
+
+namespace dinam {
+
+struct Model;
+
+// Newton iterations and factorisations a step is assumed to take, and the range bench_implicit
+// measured over the scenes of docs/performance.md (a free fall 1 and 0.03; the end-to-end flag 12
+// and 1.6; the Wuson hitting the ground 27 and 8).
+inline constexpr double kAssumedIterationsPerStep = 12.0;
+inline constexpr double kAssumedFactorizationsPerStep = 2.0;
+
+struct HessianFactorSize {
+  double unknowns = 0.0;  // free degrees of freedom
+  double nonzeros = 0.0;  // in L
+  double flops = 0.0;     // of one factorisation
+};
+
+// The Cholesky factor of the model's stiffness pattern (every spring's blocks, the free nodes'
+// diagonal blocks), fill-reducing ordered as CHOLMOD orders it.
+HessianFactorSize hessian_factor_size(const Model& model);
+
+struct ImplicitStepCost {
+  HessianFactorSize factor;
+  double factorization_seconds = 0.0;  // assembling the Hessian and factorising it, once
+  double iteration_seconds = 0.0;      // a Newton iteration: forces, energies, one solve
+  double seconds = 0.0;                // a step at the assumed iterations and factorisations
+};
+
+// `forces`: the cost of one evaluation of the model's forces (central differences' step cost,
+// dynamics/step_cost.hpp), on one thread.
+ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forces);
+
+}  // namespace dinam
