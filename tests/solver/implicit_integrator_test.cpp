@@ -3,10 +3,12 @@
 // the motion bit for bit on any thread count.
 #include "solver/implicit_integrator.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
+#include <string>
 #include <vector>
 
 #include "core/thread_team.hpp"
@@ -23,18 +25,23 @@ namespace {
 // One steel-free bar: node 0 pinned at the origin, node 1 at x = 1 m with the bar's half mass,
 // thrown along the bar at v0 = 0.01 m/s, without gravity: a linear oscillator of ω² = (EA/L)/m
 // (the axial spring is linear for motion along the bar).
-TEST(ImplicitIntegrator, AnOscillatorFollowsBackwardEulersClosedForm) {
-  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+Model oscillator(const std::string& integrator) {
+  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
 duration: 1
 gravity: [0, 0, 0]
-integrator: implicit
-ground: {contact: false}
+integrator: {}
+ground: {{contact: false}}
 objects:
-  - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}
-    material: {density: 1000, youngs_modulus: 2.0e5, area: 1.0e-4}
-    pinned: {indices: [0]}
+  - mesh: {{polyline: {{points: [[0, 0, 1], [1, 0, 1]]}}}}
+    material: {{density: 1000, youngs_modulus: 2.0e5, area: 1.0e-4}}
+    pinned: {{indices: [0]}}
     initial_velocity: [0.01, 0, 0]
-)"));
+)",
+                                                       integrator)));
+}
+
+TEST(ImplicitIntegrator, AnOscillatorFollowsBackwardEulersClosedForm) {
+  const Model model = oscillator("implicit");
   const double m = model.node_mass[1];            // 0.05 kg
   const double k = model.bar_axial_stiffness[0];  // 20 N/m
   const double omega = std::sqrt(k / m);          // 20 rad/s
@@ -63,17 +70,7 @@ objects:
 // the principal root's |r| = |2 + √(1 + 2iωh)| / |3 − 2iωh| a step, far less than backward
 // Euler's ρ: at ωh = 0.4, 0.35 % a step against 7.4 %.
 TEST(ImplicitIntegrator, BDF2FollowsItsClosedFormAndDampsLessThanBackwardEuler) {
-  const Model model = build_model(test::scene_from_yaml(R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-integrator: implicit_bdf2
-ground: {contact: false}
-objects:
-  - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}
-    material: {density: 1000, youngs_modulus: 2.0e5, area: 1.0e-4}
-    pinned: {indices: [0]}
-    initial_velocity: [0.01, 0, 0]
-)"));
+  const Model model = oscillator("implicit_bdf2");
   ASSERT_EQ(model.implicit_scheme, ImplicitScheme::kBdf2);
   const double omega = std::sqrt(model.bar_axial_stiffness[0] / model.node_mass[1]);  // 20 rad/s
   const double h = 0.02;
