@@ -447,16 +447,14 @@ void release_spare_capacity(Model& model) {
   for_each_model_array(model, [](std::string_view, auto& array) { array.shrink_to_fit(); });
 }
 
-// The implicit integrator handles springs (yielding too), dampers, gravity, fields, wind and the
-// ground (solver/implicit_integrator.hpp); the rest is refused at `integrator`, naming it.
+// The implicit integrator handles springs (yielding and tearing too), dampers, gravity, fields,
+// wind and the ground (solver/implicit_integrator.hpp); the rest is refused at `integrator`,
+// naming it.
 void refuse_what_implicit_cannot_do(const SceneDescription& scene, const Model& model) {
   if (model.integrator != IntegratorKind::kImplicit) {
     return;
   }
   std::vector<std::string> missing;
-  if (model.can_tear()) {
-    missing.emplace_back("bars that tear (breaking)");
-  }
   if (model.contact.enabled) {
     missing.emplace_back("contact between objects (contact)");
   }

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "dynamics/pin_motion.hpp"
+#include "dynamics/tearing.hpp"
 #include "model/model.hpp"
 #include "solver/implicit_friction.hpp"
 #include "solver/positive_definite_solver.hpp"
@@ -70,10 +71,16 @@ ForceSwitches potential_switches() {
   return s;
 }
 
-// The forces taken at (x_n, v_n): fields and wind.
-ForceSwitches explicit_switches() {
+// The forces outside the potential, one kind at a time: the fields (taken at t_{n+1}) and the
+// wind (at x_n, v_n).
+ForceSwitches only_fields() {
   ForceSwitches s = ForceSwitches::none();
   s.fields = true;
+  return s;
+}
+
+ForceSwitches only_wind() {
+  ForceSwitches s = ForceSwitches::none();
   s.wind = true;
   return s;
 }
@@ -176,6 +183,12 @@ void ImplicitIntegrator::step_or_split(State& state, double h, int depth) {
 bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   Workspace& w = *work_;
   const Model& model = model_;
+  // Bars strained past their breaking limit at x_n break, with what stands on them, as at the
+  // start of a step of central differences (serially, so the same bars on any thread count; a
+  // step tried again from the same x_n breaks nothing more).
+  if (model.can_tear()) {
+    break_overloaded_bars(model, state);
+  }
   const FreeDofs& dofs = w.dofs;
   const auto n = static_cast<std::size_t>(model.node_count());
   w.x_start = state.x;
@@ -197,11 +210,22 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
   }
 
-  // The explicit forces at (x_n, v_n): fields and wind; the friction springs of the nodes on the
-  // ground at x_n.
+  // The forces outside the potential: the fields, which depend on the time alone, at t_{n+1}, as
+  // the scheme takes every force (taken at t_n they lagged a ramped load by a whole step); the
+  // wind, which depends on the velocities, at (x_n, v_n). Then the friction springs of the nodes
+  // on the ground at x_n.
   state.dt = 0.0;
-  compute_forces(model, explicit_switches(), state);
+  const double t_start = state.time;
+  state.time = t_next;
+  compute_forces(model, only_fields(), state);
+  state.time = t_start;
   w.explicit_force = state.force;
+  if (!model.wind.faces.empty() || !model.wind.bars.empty()) {
+    compute_forces(model, only_wind(), state);
+    for (std::size_t i = 0; i < n; ++i) {
+      w.explicit_force[i] += state.force[i];
+    }
+  }
   w.friction.start_step(model, state);
   // Central differences' own friction, which compute_static_forces applies to the nodes marked
   // touching, is no potential: the solve sees none marked (the marks come back with the step).

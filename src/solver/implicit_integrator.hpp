@@ -5,24 +5,26 @@
 // where V is the potential of the springs, gravity, the ground's normal penalty (potential.hpp)
 // and the ground's friction (its stick springs, capped at μ times the normal force at x_n:
 // implicit_friction.hpp), D the dampers' dissipation (the bars' axial dampers along their
-// directions at x_n, and the global damping), and F_e the forces taken explicitly at (x_n, v_n):
-// fields and wind. The ground's damper is left out (an impact at these steps is inelastic
-// whatever its damping_ratio says: backward Euler damps the contact's vibration). The minimum is
-// found by Newton's method with the sparse stiffness (stiffness_matrix.hpp) and a line search on
-// E, keeping one factorised Hessian over iterations and steps while it serves (the chord
-// method); then v_{n+1} = (x_{n+1} − x_n)/h. With `integrator: implicit_bdf2` (ImplicitScheme::
-// kBdf2) a step of h after one of the same h is BDF2's, which is backward Euler's of 2h/3 from
-// x_b = (4 x_n − x_{n−1})/3 and v_b = (4 v_n − v_{n−1})/3 in the place of x_n and v_n (the first
-// step, and the first after a change of h, is backward Euler's). Either is L-stable: a step is
-// never limited by the stiffest bar. It is split in halves where Newton does not converge or
-// where its local error, h²/2 |a_{n+1} − a_n| at some node, passes kImplicitErrorShare of the
-// median bar (but for a step in which a node meets or leaves the ground).
+// directions at x_n, and the global damping), and F_e the forces outside the potential: the
+// fields at t_{n+1} (they depend on the time alone) and the wind at (x_n, v_n). The ground's damper
+// is left out (an impact at these steps is inelastic whatever its damping_ratio says: backward
+// Euler damps the contact's vibration). The minimum is found by Newton's method with the sparse
+// stiffness (stiffness_matrix.hpp) and a line search on E, keeping one factorised Hessian over
+// iterations and steps while it serves (the chord method); then v_{n+1} = (x_{n+1} − x_n)/h. With
+// `integrator: implicit_bdf2` (ImplicitScheme:: kBdf2) a step of h after one of the same h is
+// BDF2's, which is backward Euler's of 2h/3 from x_b = (4 x_n − x_{n−1})/3 and v_b = (4 v_n −
+// v_{n−1})/3 in the place of x_n and v_n (the first step, and the first after a change of h, is
+// backward Euler's). Either is L-stable: a step is never limited by the stiffest bar. It is split
+// in halves where Newton does not converge or where its local error, h²/2 |a_{n+1} − a_n| at some
+// node, passes kImplicitErrorShare of the median bar (but for a step in which a node meets or
+// leaves the ground).
 //
 // Springs that yield: the plastic sets are held at the step's start while Newton minimises the
 // stored energy plus the work of the flow from them (SpringEnergy::kWithFlow, whose gradient is
 // the flattened force: a return mapping at every iterate), and kept at the step's end.
-// Not yet: bars that tear and contact between objects are refused at the scene
-// (model/model_builder.cpp); the state's velocities are v_n, not leapfrog's v_{n−½}.
+// Bars past their breaking limit at x_n break at the step's start, as in central differences.
+// Not yet: contact between objects is refused at the scene (model/model_builder.cpp); the
+// state's velocities are v_n, not leapfrog's v_{n−½}.
 #include <memory>
 
 #include "dynamics/integrator.hpp"
