@@ -371,8 +371,8 @@ TEST(Cantilever, ImplicitRootStartsToYieldWhenPLReachesMy) {
     }
   }
   ASSERT_GT(load_at_yield, 0.0) << "the root never yielded";
-  // Late by the damping's lag behind a slow ramp, α/ω² = 1/ω1 (0.48 % of the load), backward
-  // Euler's own lag of about a step and the step the flow is seen in (0.17 % each).
+  // Late by the damping's lag behind a slow ramp, α/ω² = 1/ω1 (0.48 % of the load), and at most
+  // the step the flow is seen in (0.17 %).
   EXPECT_NEAR(load_at_yield / collapse, 1.0, 0.01);
 }
 
