@@ -460,8 +460,9 @@ void refuse_what_implicit_cannot_do(const SceneDescription& scene, const Model& 
   }
   if (!missing.empty()) {
     throw_user_error(scene.integrator_loc,
-                     "'integrator: implicit' does not handle {} yet; use 'integrator: "
+                     "'integrator: {}' does not handle {} yet; use 'integrator: "
                      "central_difference' (the default) for this scene",
+                     scene.implicit_scheme == ImplicitScheme::kBdf2 ? "implicit_bdf2" : "implicit",
                      fmt::format("{}", fmt::join(missing, ", ")));
   }
 }
