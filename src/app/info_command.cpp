@@ -99,7 +99,7 @@ void print_integrator_choice(const IntegratorChoice& choice) {
         choice.implicit_refused);
     return;
   }
-  const ImplicitStepCost& step = choice.implicit_step;
+  const ImplicitStepCost& step = choice.implicit.implicit;
   fmt::print(
       "integrators      central_difference: {} steps, about {}; implicit: {} steps (more where "
       "a step is split), about {} at {:g} Newton iterations and {:g} factorisations a step "

@@ -37,11 +37,8 @@ IntegratorChoice compare_integrators(const SceneDescription& scene, const Model&
     choice.central_difference = run(scene, model);
     return choice;
   }
-  const Model& implicit_model = implicit ? model : *other;
   choice.central_difference = implicit ? run(other_scene, *other) : run(scene, model);
   choice.implicit = implicit ? run(scene, model) : run(other_scene, *other);
-  choice.implicit_step =
-      estimate_implicit_step(implicit_model, estimate_step_cost(implicit_model, 1));
   choice.recommended = choice.implicit.seconds < 0.5 * choice.central_difference.seconds
                            ? IntegratorKind::kImplicit
                            : IntegratorKind::kCentralDifference;

@@ -7,7 +7,6 @@
 
 #include "app/run_estimate.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/implicit_cost.hpp"
 
 namespace dinam {
 
@@ -16,9 +15,9 @@ struct Model;
 // The estimates are of the motion alone: the settling before it is left out of both.
 struct IntegratorChoice {
   RunEstimate central_difference;  // at its automatic step (or the scene's), with mass scaling
-  RunEstimate implicit;            // at the scene's `timestep` or a quarter of a frame
-  ImplicitStepCost implicit_step;
-  std::string implicit_refused;  // why the scene cannot take it; empty where it can
+  RunEstimate implicit;            // at the scene's `timestep` or a quarter of a frame (its
+                                   // `implicit` says what a step is made of)
+  std::string implicit_refused;    // why the scene cannot take it; empty where it can
   IntegratorKind recommended = IntegratorKind::kCentralDifference;
 };
 

@@ -11,7 +11,6 @@
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/implicit_cost.hpp"
 #include "solver/initial_state.hpp"
 
 namespace dinam {
@@ -39,11 +38,10 @@ RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
   estimate.step = estimate_step_cost(model, threads);
   if (model.integrator == IntegratorKind::kImplicit) {
     // A Newton solve a step (solver/implicit_cost.hpp), on one thread: the factorisation is.
-    const ImplicitStepCost implicit = estimate_implicit_step(model, estimate_step_cost(model, 1));
-    estimate.step = {{{"Newton iterations and factorisations", 1.0, 1e9 * implicit.seconds}},
-                     1e9 * implicit.seconds,
-                     1,
-                     implicit.seconds};
+    estimate.implicit = estimate_implicit_step(model, estimate_step_cost(model, 1));
+    const double seconds = estimate.implicit.seconds;
+    estimate.step = {
+        {{"Newton iterations and factorisations", 1.0, 1e9 * seconds}}, 1e9 * seconds, 1, seconds};
   }
   estimate.seconds = estimate.step.seconds * static_cast<double>(estimate.steps);
   return estimate;

@@ -8,6 +8,7 @@
 
 #include "dynamics/stability.hpp"
 #include "dynamics/step_cost.hpp"
+#include "solver/implicit_cost.hpp"
 
 namespace dinam {
 
@@ -21,6 +22,7 @@ struct RunEstimate {
   long long steps = 0;         // over the frames, and the most that settling may take
   long long settle_steps = 0;  // of those, the settling's
   StepCost step;               // a step's estimated cost on the threads in use
+  ImplicitStepCost implicit;   // what that step is made of, for the implicit integrator
   double seconds = 0.0;        // steps × step.seconds
 
   bool long_run() const { return seconds > kLongRunSeconds; }

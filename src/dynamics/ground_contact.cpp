@@ -149,9 +149,7 @@ void anchor_nodes_at_rest(const Model& model, State& state) {
     const bool touching = distance < 0.0 && !model.pinned(i);
     state.contact_touching[i] = touching ? 1 : 0;
     state.contact_sliding[i] = 0;
-    state.contact_anchor[i] =
-        touching ? Vec3(state.x[i] - (ground.node_radius[i] + distance) * ground.normal)
-                 : Vec3::Zero();
+    state.contact_anchor[i] = touching ? ground.foot(state.x[i]) : Vec3::Zero();
   }
 }
 

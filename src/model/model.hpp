@@ -81,6 +81,8 @@ struct GroundContact {
   double clearance(Index i, const Vec3& x) const {
     return (x - point).dot(normal) - node_radius[i];
   }
+  // The point of the plane below (or above) x: where a node touching at x is anchored.
+  Vec3 foot(const Vec3& x) const { return x - (x - point).dot(normal) * normal; }
 };
 
 // Contact between objects and within one, as the dynamics sees it (dynamics/object_contact.hpp):

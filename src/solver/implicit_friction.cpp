@@ -26,12 +26,11 @@ void ImplicitFriction::start_step(const Model& model, const State& state) {
     }
     const double k = ground.node_stiffness[i];
     const bool kept = !state.contact_touching.empty() && state.contact_touching[i] != 0;
-    const Vec3 foot = state.x[i] - (ground.node_radius[i] - depth) * ground.normal;
     const double mu = !state.contact_sliding.empty() && state.contact_sliding[i] != 0
                           ? ground.kinetic_friction
                           : ground.static_friction;
     nodes_.push_back(i);
-    anchor_.push_back(kept ? state.contact_anchor[i] : foot);
+    anchor_.push_back(kept ? state.contact_anchor[i] : ground.foot(state.x[i]));
     stiffness_.push_back(k);
     cap_.push_back(ground.stick ? std::numeric_limits<double>::infinity() : mu * k * depth);
   }
@@ -57,10 +56,9 @@ bool ImplicitFriction::add_new_touches(const Model& model, const std::vector<Vec
     if (depth <= 0.0 || model.pinned(i)) {
       continue;
     }
-    const double start_height = ground.clearance(i, x_start[i]) + ground.node_radius[i];
     const double k = ground.node_stiffness[i];
     nodes_.push_back(i);
-    anchor_.push_back(x_start[i] - start_height * ground.normal);
+    anchor_.push_back(ground.foot(x_start[i]));
     stiffness_.push_back(k);
     cap_.push_back(ground.stick ? std::numeric_limits<double>::infinity()
                                 : ground.static_friction * k * depth);
@@ -135,7 +133,7 @@ void ImplicitFriction::finish_step(const Model& model, State& state) const {
     const double depth = -ground.clearance(i, state.x[i]);
     const bool touching = depth > 0.0 && !model.pinned(i);
     if (touching && state.contact_touching[i] == 0) {
-      state.contact_anchor[i] = state.x[i] - (ground.node_radius[i] - depth) * ground.normal;
+      state.contact_anchor[i] = ground.foot(state.x[i]);
     }
     state.contact_touching[i] = touching ? 1 : 0;
     state.contact_sliding[i] = 0;
