@@ -224,10 +224,11 @@ int main(int argc, char** argv) {
     integrator.advance(state, step.dt, steps_per_frame);
     const ImplicitStats& now = integrator.stats();
     fmt::print(
-        "frame {:3}  t {:6.3f} s  steps {:4}  iterations {:5}  factorisations {:4}  "
-        "{:8.3f} s",
+        "frame {:3}  t {:6.3f} s  steps {:4}  iterations {:5}  solve iterations {:5}  "
+        "factorisations {:4}  {:8.3f} s",
         frame, state.time, now.steps - before.steps, now.iterations - before.iterations,
-        now.factorizations - before.factorizations, seconds_since(frame_start));
+        now.solve_iterations - before.solve_iterations, now.factorizations - before.factorizations,
+        seconds_since(frame_start));
     if (energy) {
       fmt::print("  energy {:+.5g} J (central differences {:+.5g} J; both from {:+.5g} J)",
                  mechanical_energy(model, state, origin) - first_energy,
@@ -240,10 +241,10 @@ int main(int argc, char** argv) {
   const double implicit_seconds = seconds_since(start);
   const ImplicitStats& stats = integrator.stats();
   fmt::print(
-      "\nimplicit, {:.3g} s of motion: {:.2f} s; {} steps ({} split), {} Newton iterations, {} "
-      "factorisations\n",
+      "\nimplicit, {:.3g} s of motion: {:.2f} s; {} steps ({} split), {} Newton iterations ({} "
+      "solve iterations), {} factorisations\n",
       duration, implicit_seconds, stats.steps, stats.splits, stats.iterations,
-      stats.factorizations);
+      stats.solve_iterations, stats.factorizations);
   fmt::print(
       "central differences: {} steps of {:.3g} s, about {:.2f} s (timed over the first {}); "
       "{:.3g}× the implicit\n",

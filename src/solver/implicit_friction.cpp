@@ -8,9 +8,19 @@
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
+namespace {
+
+// A landed node's cap is taken again at the step's solution; where it changed by more than this
+// share the step is solved on with it (the cap is lagged, as the normal force of the nodes held
+// from the step's start is).
+constexpr double kCapFollowUp = 0.1;
+
+}  // namespace
 
 void ImplicitFriction::start_step(const Model& model, const State& state) {
   nodes_.clear();
+  held_from_start_ = 0;
+  held_.assign(static_cast<std::size_t>(model.node_count()), 0);
   anchor_.clear();
   stiffness_.clear();
   cap_.clear();
@@ -29,27 +39,24 @@ void ImplicitFriction::start_step(const Model& model, const State& state) {
     const double mu = !state.contact_sliding.empty() && state.contact_sliding[i] != 0
                           ? ground.kinetic_friction
                           : ground.static_friction;
+    held_[i] = 1;
     nodes_.push_back(i);
     anchor_.push_back(kept ? state.contact_anchor[i] : ground.foot(state.x[i]));
     stiffness_.push_back(k);
     cap_.push_back(ground.stick ? std::numeric_limits<double>::infinity() : mu * k * depth);
   }
+  held_from_start_ = nodes_.size();
 }
 
-bool ImplicitFriction::add_new_touches(const Model& model, const std::vector<Vec3>& x_start,
-                                       const std::vector<Vec3>& x) {
+bool ImplicitFriction::join_new_touches(const Model& model, const std::vector<Vec3>& x_start,
+                                        const std::vector<Vec3>& x) {
   const GroundContact& ground = model.ground;
   if (!ground.enabled) {
     return false;
   }
   bool joined = false;
-  std::size_t held = 0;  // nodes_ ascends: walk it beside i
-  const std::size_t before = nodes_.size();
   for (Index i = 0; i < model.node_count(); ++i) {
-    while (held < before && nodes_[held] < i) {
-      ++held;
-    }
-    if (held < before && nodes_[held] == i) {
+    if (held_[i] != 0) {
       continue;
     }
     const double depth = -ground.clearance(i, x[i]);
@@ -57,6 +64,7 @@ bool ImplicitFriction::add_new_touches(const Model& model, const std::vector<Vec
       continue;
     }
     const double k = ground.node_stiffness[i];
+    held_[i] = 1;
     nodes_.push_back(i);
     anchor_.push_back(ground.foot(x_start[i]));
     stiffness_.push_back(k);
@@ -65,6 +73,25 @@ bool ImplicitFriction::add_new_touches(const Model& model, const std::vector<Vec
     joined = true;
   }
   return joined;
+}
+
+bool ImplicitFriction::add_new_touches(const Model& model, const std::vector<Vec3>& x_start,
+                                       const std::vector<Vec3>& x) {
+  const GroundContact& ground = model.ground;
+  if (!ground.enabled) {
+    return false;
+  }
+  // The caps of the nodes that joined within the step, from their depth at x (zero for a node
+  // that has risen above the plane again: it holds nothing).
+  bool changed = false;
+  for (std::size_t s = held_from_start_; s < nodes_.size() && !ground.stick; ++s) {
+    const Index i = nodes_[s];
+    const double cap =
+        ground.static_friction * stiffness_[s] * std::max(-ground.clearance(i, x[i]), 0.0);
+    changed = changed || std::abs(cap - cap_[s]) > kCapFollowUp * std::max(cap, cap_[s]);
+    cap_[s] = cap;
+  }
+  return join_new_touches(model, x_start, x) || changed;
 }
 
 namespace {

@@ -11,6 +11,7 @@
 // step a node that slid drags its anchor to r_c behind its foot, as central differences do; one
 // that first touched within the step is anchored at its foot. With `stick` the cap is infinite.
 #include <Eigen/SparseCore>
+#include <cstdint>
 #include <vector>
 
 #include "core/types.hpp"
@@ -26,11 +27,17 @@ class ImplicitFriction {
   // The springs of the nodes below the plane at state.x (x_n), from the state's contact history.
   void start_step(const Model& model, const State& state);
 
-  // Nodes below the plane at `x` (the step's solution) that were above it at `x_start` (x_n)
+  // Nodes below the plane at `x` (an iterate of the step) that were above it at `x_start` (x_n)
   // join, anchored at x_n's foot on the plane, their cap μs times the normal force at x: a node
   // that lands within the step is held from its start, as it would be by central differences'
   // short steps (else a block set down on a slope slides freely for its first step and lands
-  // too fast to stick). True where any joined: the step is to be solved again.
+  // too fast to stick). True where any joined. Called at every iterate, so that a landing node
+  // holds from the next one on.
+  bool join_new_touches(const Model& model, const std::vector<Vec3>& x_start,
+                        const std::vector<Vec3>& x);
+  // At the step's solution `x`: the caps of the nodes that joined within the step taken again
+  // from their depth at x, and any new touches joined. True where a node joined or a cap changed
+  // by more than a tenth: the step is to be solved on.
   bool add_new_touches(const Model& model, const std::vector<Vec3>& x_start,
                        const std::vector<Vec3>& x);
 
@@ -47,10 +54,12 @@ class ImplicitFriction {
 
  private:
   Vec3 normal_ = Vec3::UnitZ();
-  std::vector<Index> nodes_;
-  std::vector<Vec3> anchor_;       // m, on the plane
-  std::vector<double> stiffness_;  // N/m
-  std::vector<double> cap_;        // N, μ N; infinite with `stick`
+  std::vector<Index> nodes_;         // those below the plane at x_n, then those that joined
+  std::size_t held_from_start_ = 0;  // how many of nodes_ were below the plane at x_n
+  std::vector<std::uint8_t> held_;   // (nodes) 1 where the node is in nodes_
+  std::vector<Vec3> anchor_;         // m, on the plane
+  std::vector<double> stiffness_;    // N/m
+  std::vector<double> cap_;          // N, μ N; infinite with `stick`
 };
 
 }  // namespace dinam

@@ -44,19 +44,16 @@ constexpr double kConvergedAcceleration = 1e-2;  // m/s²
 // step length before the step is split instead.
 constexpr double kSufficientDecrease = 1e-4;
 constexpr double kLeastLength = 1.0 / 1024;
-// A kept Hessian is renewed after this many Newton steps with it: the chord method converges
-// linearly, and past a few steps a factorisation here costs less than the steps it saves.
-// (bench_implicit on the end-to-end flag and a swinging Wuson: renewing after 6 or 10 steps took
-// 0.85 s and 3.3 s or 0.82 s and 3.6 s; renewing wherever a step shrank by less than half, 1.1 s
-// and 5.1 s. 8 lies between the two counts.) A step with a kept Hessian counts towards convergence
-// only where it is at most kContraction of the step before: the Hessian has shown it still
-// describes the energy.
-constexpr int kChordIterations = 8;
+// The Newton step's linear solve (conjugate gradients preconditioned with the kept factorisation):
+// the share of the gradient its residual is cut to, and the iterations it may take before the
+// Hessian is factorised again. (An iteration costs a solve with the factor and a force
+// evaluation, about 1.3 ms on the Wuson; a factorisation 60 to 130 ms.)
+constexpr double kForcing = 0.01;
+constexpr int kMostSolveIterations = 30;
 // Times a step's solve goes on with the friction of nodes that landed within it
 // (ImplicitFriction::add_new_touches): a node that lands where the last round had it above the
 // plane needs another.
 constexpr int kMostLandingRounds = 3;
-constexpr double kContraction = 0.5;
 
 // The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
 // anchors are not updated (compute_static_forces), and no node is marked touching, so no stick
@@ -104,7 +101,7 @@ struct ImplicitIntegrator::Workspace {
   std::vector<Eigen::Triplet<double>> damper_triplets;
   double bar = 1.0;        // m, the median bar
   bool any_yield = false;  // some spring can flow
-  std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before;
+  std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before, x_iterate;
   bool have_accel = false;
   // BDF2's history: x_{n−1} and v_{n−1}, from the last step taken, of `before_h` (0: none).
   std::vector<Vec3> x_before, v_before;
@@ -317,11 +314,99 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   gradient(g);
   double e = energy();
   bool done = false;
-  // The Hessian is kept, factorised, from iterate to iterate and from step to step (the chord
-  // method: the stiffness changes little between iterates, and assembling and factorising it
-  // costs far more than a force). It is assembled again after kChordIterations steps with it,
-  // where a step with it is cut short or fails, and where h changes. `fresh`: it was factorised
-  // at this iterate.
+  // The largest out-of-balance acceleration of a residual, m/s²: what convergence is judged by.
+  auto worst_of = [&](const Vector& r) {
+    double worst = 0.0;
+    for (Index d = 0; d < dofs.count; ++d) {
+      worst = std::max(worst, std::abs(r[d]) / w.mass[d]);
+    }
+    return worst;
+  };
+  // H v, the incremental potential's Hessian at state.x along v, from the gradient there (`g`)
+  // and at state.x + ε v: exact for the inertia and dampers, and to about 1e-7 for the springs
+  // (the difference step, √(rounding × extent × bar), balances the gradient's rounding against
+  // the springs' curvature over the step).
+  double extent = 1.0;
+  for (const Vec3& x : state.x) {
+    extent = std::max(extent, x.lpNorm<Eigen::Infinity>());
+  }
+  const double difference_step =
+      std::sqrt(std::numeric_limits<double>::epsilon() * extent * w.bar);  // m
+  Vector g_moved;
+  auto hessian_times = [&](const Vector& v, Vector& product) {
+    double furthest = 0.0;
+    for (Index d = 0; d < dofs.count; d += 3) {
+      furthest = std::max(furthest, v.segment<3>(d).norm());
+    }
+    if (furthest == 0.0) {
+      product.setZero(dofs.count);
+      return;
+    }
+    const double epsilon = difference_step / furthest;
+    w.x_iterate = state.x;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Index d = dofs.first_dof[i];
+      if (d >= 0) {
+        state.x[i] += epsilon * Vec3(v.segment<3>(d));
+      }
+    }
+    gradient(g_moved);
+    state.x = w.x_iterate;
+    product = (g_moved - g) / epsilon;
+  };
+  // The Newton step s, H s = −g, by conjugate gradients preconditioned with the kept factorised
+  // Hessian P (an earlier iterate's or step's; exactly H for a linear problem, where the first
+  // iteration is the whole step). A node that met the ground or a spring that turned since P was
+  // factorised is an eigenvalue of P⁻¹H away from 1, which costs the solve an iteration or two,
+  // where factorising again costs dozens. Stops once the residual is kForcing of g's (an inexact
+  // Newton step, which still converges fast) or below half the convergence tolerance; at a
+  // direction of negative curvature (the structure is unstable there: the step so far still goes
+  // downhill, and the first iteration's P⁻¹(−g) does, P being positive definite); or after
+  // kMostSolveIterations, where P no longer describes H and is factorised again at the next
+  // iterate. `solved`: the step is Newton's to the tolerance.
+  struct NewtonStep {
+    Vector step;
+    bool solved = false;
+    bool exhausted = false;  // stopped at kMostSolveIterations
+  };
+  Vector residual, preconditioned, direction, product;
+  auto newton_step = [&]() {
+    NewtonStep result;
+    result.step.setZero(dofs.count);
+    residual = -g;
+    const double target = std::max(kForcing * worst_of(g), 0.5 * converged);
+    preconditioned = w.solver.solve(residual);
+    direction = preconditioned;
+    double along = residual.dot(preconditioned);
+    for (int k = 0; k < kMostSolveIterations; ++k) {
+      stats_.solve_iterations += 1;
+      hessian_times(direction, product);
+      const double curvature = direction.dot(product);
+      if (!(curvature > 0.0)) {
+        if (k == 0) {
+          result.step = direction;
+        }
+        return result;
+      }
+      const double length = along / curvature;
+      result.step += length * direction;
+      residual -= length * product;
+      if (worst_of(residual) <= target) {
+        result.solved = true;
+        return result;
+      }
+      preconditioned = w.solver.solve(residual);
+      const double along_next = residual.dot(preconditioned);
+      direction = preconditioned + (along_next / along) * direction;
+      along = along_next;
+    }
+    result.exhausted = true;
+    return result;
+  };
+  // The factorised Hessian is kept from iterate to iterate and from step to step (assembling and
+  // factorising it costs far more than a force), and factorised again where the solve above
+  // exhausts its iterations, where a step with it finds no descent, and where h changes.
+  // `fresh`: it was factorised at this iterate.
   bool fresh = false;
   auto factor_here = [&] {
     stats_.factorizations += 1;
@@ -331,13 +416,6 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   if (w.factored_h != hs) {
     w.factored = false;
   }
-  double step_before = std::numeric_limits<double>::infinity();
-  int chord_iterations = 0;
-  auto renew = [&] {
-    chord_iterations = 0;
-    w.factored = false;
-    step_before = std::numeric_limits<double>::infinity();
-  };
   // Found, unless a node landed within the step: then its friction joins and the step goes on.
   int landings = 0;
   auto found = [&] {
@@ -345,19 +423,14 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       landings += 1;
       gradient(g);
       e = energy();
-      renew();
       return false;
     }
     return true;
   };
   for (int iteration = 0; iteration < kMostIterations && !done; ++iteration) {
-    double worst = 0.0;
-    for (Index d = 0; d < dofs.count; ++d) {
-      worst = std::max(worst, std::abs(g[d]) / w.mass[d]);
-    }
     // At least one Newton step: from x̂ alone a slow motion would pass the test unsolved (a
     // linear step is exact after one).
-    if (iteration > 0 && worst <= converged && found()) {
+    if (iteration > 0 && worst_of(g) <= converged && found()) {
       done = true;
       break;
     }
@@ -365,24 +438,16 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     if (!w.factored && !factor_here()) {
       break;
     }
-    const Vector step = w.solver.solve(-g);
+    const NewtonStep newton = newton_step();
+    const Vector& step = newton.step;
     double largest = 0.0;  // m, the step's longest move of a node
     for (Index d = 0; d < dofs.count; d += 3) {
       largest = std::max(largest, step.segment<3>(d).norm());
     }
-    // A Hessian kept for kChordIterations steps without convergence (a node has met or left the
-    // ground, the structure has turned): assemble it here.
-    const bool measured = step_before < std::numeric_limits<double>::infinity();
-    const bool contracting = measured && largest <= kContraction * step_before;
-    chord_iterations += 1;
-    if (!fresh && chord_iterations > kChordIterations) {
-      renew();
-      continue;
-    }
     const double slope = g.dot(step);  // < 0 for a descent direction
     // No descent left to take, and none needed (a structure at rest with nothing moving it: the
     // gradient is zero and so is the step).
-    if (slope >= 0.0 && fresh && largest <= small_step && found()) {
+    if (slope >= 0.0 && newton.solved && largest <= small_step && found()) {
       done = true;
       break;
     }
@@ -409,7 +474,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       state.x = from;
       // A step this short that lowers no energy the rounding can see: the residual left is
       // rounding's (a stiff bar's axial force, to a fraction of a picometre), not an unsolved step.
-      if (fresh && largest <= small_step) {
+      if (newton.solved && largest <= small_step) {
         done = found();
         if (done) {
           break;
@@ -419,21 +484,25 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       if (fresh) {
         break;  // not even the Hessian of this iterate gives a step: split it
       }
-      renew();  // a kept Hessian: assemble it here and try again
+      w.factored = false;  // a kept Hessian: factorise it here and try again
       continue;
     }
+    // Nodes that went below the plane with this step hold by friction from the next iterate on,
+    // rather than only once the step has converged without them (which restarted the
+    // convergence, once for every round of landings).
+    if (w.friction.join_new_touches(model, w.x_start, state.x)) {
+      e = energy();
+    }
     gradient(g);
-    // A whole step, with a Hessian of this iterate or one that has shown it contracts, that moved
-    // no node further than `small_step`: the next would move them far less.
-    if (length == 1.0 && largest <= small_step && (fresh || contracting) && found()) {
+    // A whole Newton step that moved no node further than `small_step`: the next would move them
+    // far less.
+    if (length == 1.0 && largest <= small_step && newton.solved && found()) {
       done = true;
       break;
     }
     fresh = false;
-    step_before = length * largest;
-    // A step cut short says the quadratic model has drifted from the energy: renew it.
-    if (length < 1.0) {
-      renew();
+    if (newton.exhausted) {
+      w.factored = false;
     }
   }
   if (!done) {

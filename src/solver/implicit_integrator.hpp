@@ -8,9 +8,11 @@
 // directions at x_n, and the global damping), and F_e the forces outside the potential: the
 // fields at t_{n+1} (they depend on the time alone) and the wind at (x_n, v_n). The ground's damper
 // is left out (an impact at these steps is inelastic whatever its damping_ratio says: backward
-// Euler damps the contact's vibration). The minimum is found by Newton's method with the sparse
-// stiffness (stiffness_matrix.hpp) and a line search on E, keeping one factorised Hessian over
-// iterations and steps while it serves (the chord method); then v_{n+1} = (x_{n+1} − x_n)/h. With
+// Euler damps the contact's vibration). The minimum is found by Newton's method and a line search
+// on E. Each Newton step is solved by conjugate gradients with the Hessian's products taken from
+// differences of the gradient, preconditioned with a factorised sparse Hessian
+// (stiffness_matrix.hpp) that is kept over iterations and steps until the solve stops converging
+// in a few iterations; then v_{n+1} = (x_{n+1} − x_n)/h. With
 // `integrator: implicit_bdf2` (ImplicitScheme:: kBdf2) a step of h after one of the same h is
 // BDF2's, which is backward Euler's of 2h/3 from x_b = (4 x_n − x_{n−1})/3 and v_b = (4 v_n −
 // v_{n−1})/3 in the place of x_n and v_n (the first step, and the first after a change of h, is
@@ -38,10 +40,11 @@ struct Model;
 inline constexpr double kImplicitErrorShare = 0.05;
 
 struct ImplicitStats {
-  std::int64_t steps = 0;           // steps taken, halves counted
-  std::int64_t iterations = 0;      // Newton iterations, in all
-  std::int64_t factorizations = 0;  // Hessians assembled and factorised
-  std::int64_t splits = 0;          // steps split in halves
+  std::int64_t steps = 0;             // steps taken, halves counted
+  std::int64_t iterations = 0;        // Newton iterations, in all
+  std::int64_t solve_iterations = 0;  // of the Newton steps' conjugate gradients, in all
+  std::int64_t factorizations = 0;    // Hessians assembled and factorised
+  std::int64_t splits = 0;            // steps split in halves
 };
 
 class ImplicitIntegrator {
