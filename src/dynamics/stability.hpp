@@ -17,9 +17,6 @@ struct Model;
 // which is 2/ω undamped. Infinite when nothing can vibrate.
 double critical_timestep(const Model& model);
 
-// The implicit integrator's steps per frame where `timestep` does not say.
-inline constexpr int kImplicitStepsPerFrame = 4;
-
 struct TimeStep {
   double dt = 0.0;          // s, the step in use
   int steps_per_frame = 1;  // frame interval / dt, a whole number

@@ -292,6 +292,9 @@ enum class SettleMethod { kNewton, kRelax };
 // step is chosen for accuracy.
 enum class IntegratorKind { kCentralDifference, kImplicit };
 
+// The implicit integrator's steps per frame where `timestep` does not say.
+inline constexpr int kImplicitStepsPerFrame = 4;
+
 // The implicit integrator's formula (`integrator: implicit` or `implicit_bdf2`): backward Euler,
 // first order, which damps a mode of ω by 1/√(1 + ω²h²) a step; or the two-step backward
 // differentiation formula, second order, which damps the modes the step resolves far less and

@@ -17,7 +17,8 @@ namespace {
 //   3 µs is taken;
 // - a solve 0.81 to 0.85 ns a nonzero of the factor, forward and back each;
 // - a Newton iteration evaluates the forces once and the energy once or twice (the line
-//   search), each about a step of central differences' forces: 3 in all.
+//   search), each about a step of central differences' forces: 3 in all; each iteration of its
+//   linear solve, a solve with the factor and one force evaluation (the Hessian's product).
 constexpr double kNsPerFlop = 0.5;
 constexpr double kAssemblyNsPerSpring = 3000.0;
 constexpr double kForceEvaluationsPerIteration = 3.0;
@@ -54,9 +55,11 @@ ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forc
       static_cast<double>(model.bar_count() + model.bend_count() + model.torsion_count());
   cost.factorization_seconds =
       1e-9 * (kNsPerFlop * cost.factor.flops + kAssemblyNsPerSpring * springs);
-  cost.iteration_seconds = 1e-9 * (kForceEvaluationsPerIteration * forces.serial_ns +
-                                   2.0 * kNsPerFactorNonzero * cost.factor.nonzeros);
+  cost.iteration_seconds = 1e-9 * kForceEvaluationsPerIteration * forces.serial_ns;
+  cost.solve_iteration_seconds =
+      1e-9 * (forces.serial_ns + 2.0 * kNsPerFactorNonzero * cost.factor.nonzeros);
   cost.seconds = kAssumedIterationsPerStep * cost.iteration_seconds +
+                 kAssumedSolveIterationsPerStep * cost.solve_iteration_seconds +
                  kAssumedFactorizationsPerStep * cost.factorization_seconds;
   return cost;
 }

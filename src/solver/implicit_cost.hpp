@@ -12,11 +12,14 @@ namespace dinam {
 
 struct Model;
 
-// Newton iterations and factorisations a step is assumed to take, and the range bench_implicit
-// measured over the scenes of docs/performance.md (a free fall 1 and 0.03; the end-to-end flag 12
-// and 1.6; the Wuson hitting the ground 27 and 8).
-inline constexpr double kAssumedIterationsPerStep = 12.0;
-inline constexpr double kAssumedFactorizationsPerStep = 2.0;
+// Newton iterations, iterations of their linear solves (conjugate gradients) and factorisations
+// a step is assumed to take, the middle of what bench_implicit measured over the scenes of
+// docs/performance.md: a free fall 1, 1 and 0.03; a steel cable swinging 5.4, 56 and 0.85; the
+// paper's flag 5.0, 52 and 0.27; the Wuson over its 3 s (landing, folding, at rest) 11.6, 149
+// and 1.4.
+inline constexpr double kAssumedIterationsPerStep = 6.0;
+inline constexpr double kAssumedSolveIterationsPerStep = 60.0;
+inline constexpr double kAssumedFactorizationsPerStep = 1.0;
 
 struct HessianFactorSize {
   double unknowns = 0.0;  // free degrees of freedom
@@ -30,9 +33,10 @@ HessianFactorSize hessian_factor_size(const Model& model);
 
 struct ImplicitStepCost {
   HessianFactorSize factor;
-  double factorization_seconds = 0.0;  // assembling the Hessian and factorising it, once
-  double iteration_seconds = 0.0;      // a Newton iteration: forces, energies, one solve
-  double seconds = 0.0;                // a step at the assumed iterations and factorisations
+  double factorization_seconds = 0.0;    // assembling the Hessian and factorising it, once
+  double iteration_seconds = 0.0;        // a Newton iteration: forces and energies
+  double solve_iteration_seconds = 0.0;  // one of its solve's: a solve with the factor, a force
+  double seconds = 0.0;                  // a step at the assumed iterations and factorisations
 };
 
 // `forces`: the cost of one evaluation of the model's forces (central differences' step cost,
