@@ -39,13 +39,18 @@ void ImplicitFriction::start_step(const Model& model, const State& state) {
     const double mu = !state.contact_sliding.empty() && state.contact_sliding[i] != 0
                           ? ground.kinetic_friction
                           : ground.static_friction;
-    held_[i] = 1;
-    nodes_.push_back(i);
-    anchor_.push_back(kept ? state.contact_anchor[i] : ground.foot(state.x[i]));
-    stiffness_.push_back(k);
-    cap_.push_back(ground.stick ? std::numeric_limits<double>::infinity() : mu * k * depth);
+    hold(i, kept ? state.contact_anchor[i] : ground.foot(state.x[i]), k,
+         ground.stick ? std::numeric_limits<double>::infinity() : mu * k * depth);
   }
   held_from_start_ = nodes_.size();
+}
+
+void ImplicitFriction::hold(Index node, const Vec3& anchor, double stiffness, double cap) {
+  held_[node] = 1;
+  nodes_.push_back(node);
+  anchor_.push_back(anchor);
+  stiffness_.push_back(stiffness);
+  cap_.push_back(cap);
 }
 
 bool ImplicitFriction::join_new_touches(const Model& model, const std::vector<Vec3>& x_start,
@@ -64,12 +69,9 @@ bool ImplicitFriction::join_new_touches(const Model& model, const std::vector<Ve
       continue;
     }
     const double k = ground.node_stiffness[i];
-    held_[i] = 1;
-    nodes_.push_back(i);
-    anchor_.push_back(ground.foot(x_start[i]));
-    stiffness_.push_back(k);
-    cap_.push_back(ground.stick ? std::numeric_limits<double>::infinity()
-                                : ground.static_friction * k * depth);
+    hold(i, ground.foot(x_start[i]), k,
+         ground.stick ? std::numeric_limits<double>::infinity()
+                      : ground.static_friction * k * depth);
     joined = true;
   }
   return joined;

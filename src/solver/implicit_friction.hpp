@@ -53,6 +53,9 @@ class ImplicitFriction {
   void finish_step(const Model& model, State& state) const;
 
  private:
+  // Adds a spring on `node` from `anchor`.
+  void hold(Index node, const Vec3& anchor, double stiffness, double cap);
+
   Vec3 normal_ = Vec3::UnitZ();
   std::vector<Index> nodes_;         // those below the plane at x_n, then those that joined
   std::size_t held_from_start_ = 0;  // how many of nodes_ were below the plane at x_n
