@@ -3,7 +3,8 @@
 # the flags of the existing build (build/compile_commands.json):
 #   scripts/vectorisation-report.sh [build-folder]
 # Each kind of spring should show two vectorised compute loops (elastic, and yielding), at the
-# build's widest vectors (32 bytes with x86-64-v3; 16 with the x86-64 baseline), each with its
+# build's widest vectors (32 bytes with x86-64-v3, 64 for the bending and torsion springs where
+# they are built for x86-64-v4; 16 with the x86-64 baseline), each with its
 # narrower epilogue. wind.cpp shows the drag loop
 # (compute_drag, for faces and bars) and the loop that stores the forces; wind_field.cpp the
 # turbulence's loop over points; ground_contact.cpp the loop over touching nodes.

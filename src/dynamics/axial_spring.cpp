@@ -76,19 +76,6 @@ double axial_spring_energy(const Model& model, const State& state, SpringEnergy 
   return energy;
 }
 
-void add_axial_spring_stiffness(const Model& model, const State& state, StiffnessSink& sink) {
-  add_spring_stiffness<2>(
-      model.bar_count(), model.bar_nodes, state.bar_broken, state.x, sink,
-      [&](Index b, const std::array<Vec3, 2>& at) {
-        return local_stiffness<2>(at, [&](const auto& x) {
-          const auto r = axial_spring(
-              x[0], x[1], model.bar_rest_length[b], model.bar_axial_stiffness[b],
-              plastic_set_of(state.bar_plastic_set, b), yield_limit(model.bar_yield_force, b));
-          return std::array{r.force_on_n0, decltype(r.force_on_n0)(-r.force_on_n0)};
-        });
-      });
-}
-
 const SpringKind kAxialSprings{
     .built = &kAxialSpringModel,
     .switched = &ForceSwitches::axial_springs,
