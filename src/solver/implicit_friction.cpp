@@ -8,14 +8,6 @@
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
-namespace {
-
-// A landed node's cap is taken again at the step's solution; where it changed by more than this
-// share the step is solved on with it (the cap is lagged, as the normal force of the nodes held
-// from the step's start is).
-constexpr double kCapFollowUp = 0.1;
-
-}  // namespace
 
 void ImplicitFriction::start_step(const Model& model, const State& state) {
   nodes_.clear();
@@ -83,17 +75,15 @@ bool ImplicitFriction::add_new_touches(const Model& model, const std::vector<Vec
   if (!ground.enabled) {
     return false;
   }
-  // The caps of the nodes that joined within the step, from their depth at x (zero for a node
-  // that has risen above the plane again: it holds nothing).
-  bool changed = false;
-  for (std::size_t s = held_from_start_; s < nodes_.size() && !ground.stick; ++s) {
-    const Index i = nodes_[s];
-    const double cap =
-        ground.static_friction * stiffness_[s] * std::max(-ground.clearance(i, x[i]), 0.0);
-    changed = changed || std::abs(cap - cap_[s]) > kCapFollowUp * std::max(cap, cap_[s]);
-    cap_[s] = cap;
+  // A node that joined within the step but is above the plane at its solution holds nothing.
+  bool left = false;
+  for (std::size_t s = held_from_start_; s < nodes_.size(); ++s) {
+    if (cap_[s] > 0.0 && ground.clearance(nodes_[s], x[nodes_[s]]) >= 0.0) {
+      cap_[s] = 0.0;
+      left = true;
+    }
   }
-  return join_new_touches(model, x_start, x) || changed;
+  return join_new_touches(model, x_start, x) || left;
 }
 
 namespace {

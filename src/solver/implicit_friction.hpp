@@ -35,9 +35,12 @@ class ImplicitFriction {
   // holds from the next one on.
   bool join_new_touches(const Model& model, const std::vector<Vec3>& x_start,
                         const std::vector<Vec3>& x);
-  // At the step's solution `x`: the caps of the nodes that joined within the step taken again
-  // from their depth at x, and any new touches joined. True where a node joined or a cap changed
-  // by more than a tenth: the step is to be solved on.
+  // At the step's solution `x`: the nodes that joined within the step but are above the plane at
+  // x let go (their cap 0), and any new touches joined. True where either happened: the step is
+  // to be solved on. The others keep the cap they joined with, μs times their normal force at
+  // the iterate they joined at, for this step, as the nodes held from the step's start keep
+  // theirs from x_n: taking it again from x and solving on wherever it moved by a tenth cost the
+  // Wuson's fall a quarter of its Newton iterations (docs/performance.md).
   bool add_new_touches(const Model& model, const std::vector<Vec3>& x_start,
                        const std::vector<Vec3>& x);
 
