@@ -1,8 +1,5 @@
-// The axial springs' stiffness matrices, for Newton's method (solver/), apart from their forces:
-// axial_spring.cpp holds the step's loop, which is built for the widest vectors the machine has
-// (src/dynamics/CMakeLists.txt), while this, whose small dense products Eigen vectorises with
-// sums ordered by the vector width, stays with the rest of the program, so that a settled shape
-// has the same bits whatever the width.
+// The axial springs' stiffness matrices, for Newton's method (solver/), in a file apart from their
+// forces as every kind's are (bending_spring_stiffness.cpp says why).
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/stiffness.hpp"
 #include "model/model.hpp"

@@ -1,5 +1,8 @@
-// The bending springs' stiffness matrices, for Newton's method (solver/), apart from their forces
-// for the reason axial_spring_stiffness.cpp gives.
+// The bending springs' stiffness matrices, for Newton's method (solver/), apart from their forces:
+// bending_spring.cpp holds the step's loop, which is built for the widest vectors the machine has
+// (src/dynamics/CMakeLists.txt), while this, whose small dense products Eigen vectorises with
+// sums ordered by the vector width, is built with the rest of the program, so that a shape
+// settled by Newton's method has the same bits whatever the width.
 #include <algorithm>
 #include <cmath>
 #include <numbers>

@@ -1,5 +1,5 @@
 // The torsion springs' stiffness matrices, for Newton's method (solver/), apart from their forces
-// for the reason axial_spring_stiffness.cpp gives.
+// for the reason bending_spring_stiffness.cpp gives.
 #include "dynamics/stiffness.hpp"
 #include "dynamics/torsion_spring.hpp"
 #include "model/model.hpp"
