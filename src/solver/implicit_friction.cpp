@@ -1,7 +1,6 @@
 #include "solver/implicit_friction.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "model/model.hpp"
