@@ -56,7 +56,7 @@ double contact_reach(const ObjectContact& contact, std::uint64_t key) {
                                        : contact.point_radius[a] + contact.triangle_radius[b];
 }
 
-void find_touching_pairs(const Model& model, State& state) {
+void find_touching_pairs(const Model& model, State& state, PairMerging merging) {
   const ObjectContact& contact = model.contact;
   refresh_candidates(model, state);
   ObjectContactWorkspace& work = state.object_contact;
@@ -83,11 +83,14 @@ void find_touching_pairs(const Model& model, State& state) {
   work.touching.clear();
   gather_in_parallel(static_cast<Index>(work.candidates.size()), work.thread_touching,
                      work.touching, check);
-  // One contact per pair of features: the first pair (by key) that names them.
   std::sort(work.touching.begin(), work.touching.end(),
             [](const ContactPoint& a, const ContactPoint& b) {
               return a.features != b.features ? a.features < b.features : a.key < b.key;
             });
+  if (merging == PairMerging::kEveryPair) {
+    return;
+  }
+  // One contact per pair of features: the first pair (by key) that names them.
   const auto last = std::unique(
       work.touching.begin(), work.touching.end(),
       [](const ContactPoint& a, const ContactPoint& b) { return a.features == b.features; });

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include "dynamics/contact_geometry.hpp"
 #include "dynamics/contact_pairs.hpp"
@@ -30,17 +31,11 @@ std::int8_t side_came_from(const ContactPoint& point, const State& state, double
   for (int j = 0; j < 4; ++j) {
     before[j] = state.x[point.nodes[j]] - dt * state.v_half[point.nodes[j]];
   }
-  const Vec3 face = (before[2] - before[1]).cross(before[3] - before[1]);
-  return (before[0] - before[1]).dot(face) < 0.0 ? std::int8_t{-1} : std::int8_t{1};
+  return triangle_side(before);
 }
 
-// The lightest free node on each side sets the pair's stiffness (see the header), or the scene
-// gives it.
-double pair_stiffness(const Model& model, const ContactPoint& point) {
-  const ObjectContact& contact = model.contact;
-  if (contact.omega_squared <= 0.0) {
-    return contact.stiffness;
-  }
+// The lightest free node on each side: the largest inverse masses of side A's nodes and side B's.
+std::pair<double, double> lightest_inverse_masses(const Model& model, const ContactPoint& point) {
   const int side_a_nodes = (point.key >> 63) == kBarBarContact ? 2 : 1;  // then B's
   double inverse_a = 0.0;
   double inverse_b = 0.0;
@@ -48,7 +43,7 @@ double pair_stiffness(const Model& model, const ContactPoint& point) {
     double& inverse = j < side_a_nodes ? inverse_a : inverse_b;
     inverse = std::max(inverse, model.node_inv_mass[point.nodes[j]]);
   }
-  return contact.omega_squared / (inverse_a + inverse_b);
+  return {inverse_a, inverse_b};
 }
 
 // The automatic penalty is soft near the surface and stiff deeper in. A contact that stays within
@@ -66,35 +61,71 @@ T penalty_force(T penetration, double soft, double stiff, double knee) {
                              : T(soft * knee + stiff * (penetration - knee));
 }
 
-// A pair's normal penalty: `soft` N/m up to a penetration `knee`, `stiff` beyond (the automatic
-// stiffness; a given one is linear, its knee infinite).
-struct ContactPenalty {
-  double soft = 0.0;   // N/m
-  double stiff = 0.0;  // N/m
-  double knee = 0.0;   // m
-
-  double force(double penetration) const {  // N, pushing the pair apart
-    return penalty_force(penetration, soft, stiff, knee);
-  }
-  double energy(double penetration) const {  // J
-    if (penetration <= knee) {
-      return 0.5 * soft * penetration * penetration;
-    }
-    const double beyond = penetration - knee;
-    return soft * knee * (0.5 * knee + beyond) + 0.5 * stiff * beyond * beyond;
-  }
-};
-
 // `reach`: the pair's, contact_reach's.
 ContactPenalty contact_penalty(const Model& model, const ContactPoint& point, double reach) {
-  const double stiff = pair_stiffness(model, point);
   if (model.contact.omega_squared <= 0.0) {
-    return {stiff, stiff, std::numeric_limits<double>::infinity()};
+    return contact_penalty_between(model, 0.0, 0.0, reach);
   }
-  return {kSoftStiffnessShare * stiff, stiff, kSoftLayerShare * reach};
+  const auto [inverse_a, inverse_b] = lightest_inverse_masses(model, point);
+  return contact_penalty_between(model, inverse_a, inverse_b, reach);
 }
 
 }  // namespace
+
+double ContactPenalty::force(double penetration) const {
+  return penalty_force(penetration, soft, stiff, knee);
+}
+
+double ContactPenalty::energy(double penetration) const {
+  if (penetration <= knee) {
+    return 0.5 * soft * penetration * penetration;
+  }
+  const double beyond = penetration - knee;
+  return soft * knee * (0.5 * knee + beyond) + 0.5 * stiff * beyond * beyond;
+}
+
+double ContactPenalty::slope(double penetration) const {
+  return penetration <= knee ? soft : stiff;
+}
+
+ContactPenalty contact_penalty_between(const Model& model, double inverse_a, double inverse_b,
+                                       double reach) {
+  const ObjectContact& contact = model.contact;
+  if (contact.omega_squared <= 0.0) {
+    return {contact.stiffness, contact.stiffness, std::numeric_limits<double>::infinity()};
+  }
+  const double stiff = contact.omega_squared / (inverse_a + inverse_b);
+  return {kSoftStiffnessShare * stiff, stiff, kSoftLayerShare * reach};
+}
+
+std::int8_t triangle_side(const std::array<Vec3, 4>& at) {
+  const Vec3 face = (at[2] - at[1]).cross(at[3] - at[1]);
+  return (at[0] - at[1]).dot(face) < 0.0 ? std::int8_t{-1} : std::int8_t{1};
+}
+
+ContactPush contact_push(const Model& model, const ContactPoint& point,
+                         const std::vector<Vec3>& x) {
+  const double reach = contact_reach(model.contact, point.key);
+  const ContactPenalty penalty = contact_penalty(model, point, reach);
+  ContactPush push;
+  push.penalty = penalty;
+  push.soft_stiffness = penalty.soft;
+  const double distance = point.separation.norm();
+  push.normal =
+      distance > 1e-12 * reach ? Vec3(point.separation / distance) : fallback_normal(point, x);
+  push.penetration = reach - distance;
+  if ((point.key >> 63) != kBarBarContact) {
+    const std::array<Index, 4>& n = point.nodes;
+    const Vec3 face = (x[n[2]] - x[n[1]]).cross(x[n[3]] - x[n[1]]);
+    if (point.separation.dot(face) * point.side < 0.0) {
+      push.normal = point.side * fallback_normal(point, x);  // the triangle's unit normal
+      push.penetration = reach + distance;
+    }
+  }
+  push.force = penalty.force(push.penetration);
+  push.energy = penalty.energy(push.penetration);
+  return push;
+}
 
 void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger,
                                std::vector<Vec3>* friction_ledger) {
@@ -131,37 +162,27 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
       predicted_velocity += point.weights[j] * (0.5 * dt * inverse_mass) * context.force[node];
     }
     predicted_velocity += relative_velocity;
-    const double reach = contact_reach(contact, point.key);
-    const ContactPenalty penalty = contact_penalty(model, point, reach);
-    const double k = penalty.soft;
-    double c =
-        inverse_moved > 0.0 ? 2.0 * contact.damping_ratio * std::sqrt(k / inverse_moved) : 0.0;
-
-    const double distance = point.separation.norm();
-    Vec3 normal = distance > 1e-12 * reach ? Vec3(point.separation / distance)
-                                           : fallback_normal(point, state.x);
-    double penetration = reach - distance;
     if ((point.key >> 63) != kBarBarContact) {
       // A node against a triangle is pushed back to the side it came from, even where it has
       // crossed the triangle's middle within a step (beyond the speed envelope), instead of on
       // through: the side where it first touched, or, if it crossed in that very step, the side
       // it was on a step before.
       point.side = touched_before ? previous->side : side_came_from(point, state, dt);
-      const std::array<Index, 4>& n = point.nodes;
-      const Vec3 face = (state.x[n[2]] - state.x[n[1]]).cross(state.x[n[3]] - state.x[n[1]]);
-      if (point.separation.dot(face) * point.side < 0.0) {
-        normal = point.side * fallback_normal(point, state.x);  // the triangle's unit normal
-        penetration = reach + distance;
-      }
     }
+    const ContactPush push = contact_push(model, point, state.x);
+    const Vec3& normal = push.normal;
+    const double penetration = push.penetration;
+    const double k = push.soft_stiffness;
+    double c =
+        inverse_moved > 0.0 ? 2.0 * contact.damping_ratio * std::sqrt(k / inverse_moved) : 0.0;
     const double approach = -relative_velocity.dot(normal);
     if (!touched_before && dt > 0.0 && penetration < approach * dt) {
       c *= (penetration / approach + 0.5 * dt) / dt;
     }
-    const double elastic = penalty.force(penetration);
+    const double elastic = push.force;
     const double normal_force = std::max(
         0.0, (elastic - c * predicted_velocity.dot(normal)) / (1.0 + 0.5 * dt * c * inverse_moved));
-    point.energy = penalty.energy(penetration);
+    point.energy = push.energy;
     work.energy += point.energy;
 
     // Friction: the stick spring stretches with the relative tangential motion since the pair

@@ -26,12 +26,52 @@
 // (relative speed × Δt below the smaller radius) no primitive passes through another; beyond it
 // a node can cross a shell's middle in one step, and is then pushed back to the side it came
 // from (ContactPoint::side), which holds as long as the penalty stops it within the shell.
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "dynamics/force_context.hpp"
 #include "dynamics/stiffness.hpp"
 
 namespace dinam {
+
+struct ContactPoint;
+
+// A pair's normal penalty: `soft` N/m up to a penetration `knee`, `stiff` beyond (the automatic
+// stiffness; a given one is linear, its knee infinite).
+struct ContactPenalty {
+  double soft = 0.0;   // N/m
+  double stiff = 0.0;  // N/m
+  double knee = 0.0;   // m
+
+  double force(double penetration) const;   // N, pushing the pair apart
+  double energy(double penetration) const;  // J
+  double slope(double penetration) const;   // N/m, d force / d penetration
+};
+
+// The penalty of a pair of reach `reach` whose sides' lightest free nodes have inverse masses
+// `inverse_a` and `inverse_b` (1/kg; 0 for a side all pinned): the automatic stiffness (the
+// header's), or the scene's.
+ContactPenalty contact_penalty_between(const Model& model, double inverse_a, double inverse_b,
+                                       double reach);
+
+// A touching pair's normal penalty at positions x (its separation and weights found there): the
+// direction it pushes side A along, how deep the pair is, the penalty's force along that
+// direction and its energy, and the soft stiffness its damper and friction take. A node–triangle
+// pair's node is pushed back to `point.side` of the triangle's plane.
+struct ContactPush {
+  ContactPenalty penalty;
+  Vec3 normal = Vec3::Zero();
+  double penetration = 0.0;     // m
+  double force = 0.0;           // N
+  double energy = 0.0;          // J
+  double soft_stiffness = 0.0;  // N/m
+};
+ContactPush contact_push(const Model& model, const ContactPoint& point, const std::vector<Vec3>& x);
+
+// The side of the plane of triangle (at[1], at[2], at[3]) that node at[0] is on: +1 along
+// (at[2] − at[1]) × (at[3] − at[1]) or in the plane, −1 against.
+std::int8_t triangle_side(const std::array<Vec3, 4>& at);
 
 // Adds the contact forces between objects and within them to context.force; while the energy
 // is tracked, the normal damping and the friction also go to their ledgers (both or neither).
