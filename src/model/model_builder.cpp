@@ -1,4 +1,4 @@
-#include <fmt/ranges.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
@@ -447,26 +447,6 @@ void release_spare_capacity(Model& model) {
   for_each_model_array(model, [](std::string_view, auto& array) { array.shrink_to_fit(); });
 }
 
-// The implicit integrator handles springs (yielding and tearing too), dampers, gravity, fields,
-// wind and the ground (solver/implicit_integrator.hpp); the rest is refused at `integrator`,
-// naming it.
-void refuse_what_implicit_cannot_do(const SceneDescription& scene, const Model& model) {
-  if (model.integrator != IntegratorKind::kImplicit) {
-    return;
-  }
-  std::vector<std::string> missing;
-  if (model.contact.enabled) {
-    missing.emplace_back("contact between objects (contact)");
-  }
-  if (!missing.empty()) {
-    throw_user_error(scene.integrator_loc,
-                     "'integrator: {}' does not handle {} yet; use 'integrator: "
-                     "central_difference' (the default) for this scene",
-                     scene.implicit_scheme == ImplicitScheme::kBdf2 ? "implicit_bdf2" : "implicit",
-                     fmt::format("{}", fmt::join(missing, ", ")));
-  }
-}
-
 Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) {
   Model model;
   model.gravity = scene.gravity;
@@ -516,7 +496,6 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   add_ground_contact(scene, model);
   add_object_contact(scene, model);
   note_yielding_kinds(model);
-  refuse_what_implicit_cannot_do(scene, model);
   note_implausible_values(scene, model);
   release_spare_capacity(model);
   check_derived_quantities(model, scene);

@@ -61,6 +61,9 @@ ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forc
   cost.seconds = kAssumedIterationsPerStep * cost.iteration_seconds +
                  kAssumedSolveIterationsPerStep * cost.solve_iteration_seconds +
                  kAssumedFactorizationsPerStep * cost.factorization_seconds;
+  cost.short_step_seconds = kShortStepIterations * cost.iteration_seconds +
+                            kShortStepSolveIterations * cost.solve_iteration_seconds +
+                            kShortStepFactorizations * cost.factorization_seconds;
   return cost;
 }
 

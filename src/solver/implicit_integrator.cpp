@@ -13,6 +13,7 @@
 #include "dynamics/tearing.hpp"
 #include "model/model.hpp"
 #include "solver/implicit_friction.hpp"
+#include "solver/implicit_object_contact.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -57,7 +58,7 @@ constexpr int kMostLandingRounds = 3;
 
 // The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
 // anchors are not updated (compute_static_forces), and no node is marked touching, so no stick
-// spring acts.
+// spring acts. Contact between objects is ImplicitObjectContact's, outside the switches.
 ForceSwitches potential_switches() {
   ForceSwitches s;
   s.fields = false;
@@ -100,6 +101,7 @@ struct ImplicitIntegrator::Workspace {
   PositiveDefiniteSolver solver;
   std::vector<Eigen::Triplet<double>> damper_triplets;
   double bar = 1.0;        // m, the median bar
+  double envelope = 0.0;   // m, the most a node of contact between objects may move in a step
   bool any_yield = false;  // some spring can flow
   std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before, x_iterate;
   bool have_accel = false;
@@ -110,6 +112,7 @@ struct ImplicitIntegrator::Workspace {
   // x_{n−1})/3 and (4 v_n − v_{n−1})/3, with 2h/3 in the place of h.
   std::vector<Vec3> x_base, v_base;
   ImplicitFriction friction;
+  ImplicitObjectContact objects;             // contact between objects and within one
   std::vector<std::uint8_t> touching_start;  // State::contact_touching at x_n
   std::vector<Eigen::Triplet<double>> friction_triplets;
   bool factored = false;  // `solver` holds a factorised Hessian of a step of `factored_h`
@@ -118,7 +121,7 @@ struct ImplicitIntegrator::Workspace {
   // Assembles and factorises the incremental potential's Hessian at state.x: the stiffness as it
   // is, which M/h² makes definite unless a step is long against a buckling structure's
   // instability; else with each element's matrix made definite (a descent still, if slower).
-  bool factor(const Model& model, const State& state, double h, const SparseMatrix& damping,
+  bool factor(const Model& model, State& state, double h, const SparseMatrix& damping,
               const Vector& inertia) {
     factored = false;
     factored_h = h;
@@ -126,9 +129,12 @@ struct ImplicitIntegrator::Workspace {
       SparseMatrix system =
           assembly.assemble(model, state, potential_switches(), dofs, definiteness);
       system += damping;
+      friction_triplets.clear();
+      objects.add_hessian(model, state, dofs, friction_triplets);
       if (!friction.empty()) {
-        friction_triplets.clear();
         friction.add_hessian(dofs, state.x, friction_triplets);
+      }
+      if (!friction_triplets.empty()) {
         SparseMatrix held(dofs.count, dofs.count);
         held.setFromTriplets(friction_triplets.begin(), friction_triplets.end());
         system += held;
@@ -148,6 +154,7 @@ ImplicitIntegrator::ImplicitIntegrator(const Model& model)
   work_->dofs = free_dofs(model);
   work_->mass = free_masses(model, work_->dofs);
   work_->bar = median_bar(model);
+  work_->envelope = contact_envelope(model);
   work_->any_yield =
       model.bars_yield || model.bends_yield || model.torsions_yield || model.clamps_yield;
 }
@@ -224,6 +231,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     }
   }
   w.friction.start_step(model, state);
+  w.objects.start_step(model, state);
   // Central differences' own friction, which compute_static_forces applies to the nodes marked
   // touching, is no potential: the solve sees none marked (the marks come back with the step).
   w.touching_start = state.contact_touching;
@@ -280,6 +288,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   auto gradient = [&](Vector& g) {
     compute_static_forces(model, switches, state);
     w.friction.add_forces(state.x, state.force);
+    w.objects.add_forces(model, state);
     const Vector x = free_part(dofs, state.x);
     const Vector moved = x - start;
     g = (w.mass / (hs * hs)).cwiseProduct(x - predicted) +
@@ -290,7 +299,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     const Vector off = x - predicted;
     const Vector moved = x - start;
     return potential_energy(model, state, switches, w.x_start, SpringEnergy::kWithFlow).energy +
-           w.friction.energy(state.x) + (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
+           w.friction.energy(state.x) + w.objects.energy(model, state) +
+           (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
            (0.5 * alpha / hs) * w.mass.dot(moved.cwiseProduct(moved)) +
            0.5 * moved.dot(damping * moved);
   };
@@ -300,6 +310,12 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     state.v_half = w.v_start;
     state.time = t_next - h;
   };
+  // A step that would carry a node of the contact between objects past the speed envelope even
+  // without the forces of the potential is split before it is solved.
+  if (model.contact.enabled && w.objects.longest_move(model, w.predicted) > w.envelope) {
+    restore();
+    return false;
+  }
 
   // Newton's method from x̂ (the free nodes; the driven ones are placed).
   for (std::size_t i = 0; i < n; ++i) {
@@ -375,6 +391,13 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     result.step.setZero(dofs.count);
     residual = -g;
     const double target = std::max(kForcing * worst_of(g), 0.5 * converged);
+    // Nothing out of balance at all (a body in free flight without gravity, where x̂ is exact):
+    // the step is zero, and solved. (A residual however small is solved for: a slow motion would
+    // otherwise stop where x̂ put it.)
+    if (worst_of(residual) == 0.0) {
+      result.solved = true;
+      return result;
+    }
     preconditioned = w.solver.solve(residual);
     direction = preconditioned;
     double along = residual.dot(preconditioned);
@@ -509,6 +532,11 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     restore();
     return false;
   }
+  // The speed envelope of contact between objects (implicit_object_contact.hpp), at any depth.
+  if (model.contact.enabled && w.objects.longest_move(model, state.x) > w.envelope) {
+    restore();
+    return false;
+  }
 
   // v_{n+1} = (x_{n+1} − x_b)/h; the local error h²/2 |a_{n+1} − a_n|, a_n = (v_{n+1} − v_n)/h
   // over the whole step.
@@ -522,6 +550,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
                         (model.ground.clearance(node, state.x[i]) < 0.0);
     }
   }
+  contact_changed = w.objects.touching_changed(model, state) || contact_changed;
   double error = 0.0;
   std::vector<Vec3> accel(n, Vec3::Zero());
   for (std::size_t i = 0; i < n; ++i) {
@@ -538,6 +567,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   }
   state.contact_touching = w.touching_start;
   w.friction.finish_step(model, state);
+  w.objects.finish_step(model, state);
   if (w.any_yield) {
     // The springs that flowed keep their new plastic sets (the return mapping at x_{n+1}).
     ForceSwitches springs = potential_switches();

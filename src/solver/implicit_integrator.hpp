@@ -4,29 +4,31 @@
 //   E(x) = Σ m/(2h²) |x − x̂|² + V(x) + h D((x − x_n)/h),   x̂ = x_n + h v_n + h² M⁻¹ F_e,
 // where V is the potential of the springs, gravity, the ground's normal penalty (potential.hpp)
 // and the ground's friction (its stick springs, capped at μ times the normal force at x_n:
-// implicit_friction.hpp), D the dampers' dissipation (the bars' axial dampers along their
+// implicit_friction.hpp), and contact between objects' penalty and friction (likewise:
+// implicit_object_contact.hpp), D the dampers' dissipation (the bars' axial dampers along their
 // directions at x_n, and the global damping), and F_e the forces outside the potential: the
-// fields at t_{n+1} (they depend on the time alone) and the wind at (x_n, v_n). The ground's damper
-// is left out (an impact at these steps is inelastic whatever its damping_ratio says: backward
-// Euler damps the contact's vibration). The minimum is found by Newton's method and a line search
-// on E. Each Newton step is solved by conjugate gradients with the Hessian's products taken from
-// differences of the gradient, preconditioned with a factorised sparse Hessian
-// (stiffness_matrix.hpp) that is kept over iterations and steps until the solve stops converging
-// in a few iterations; then v_{n+1} = (x_{n+1} − x_n)/h. With
-// `integrator: implicit_bdf2` (ImplicitScheme:: kBdf2) a step of h after one of the same h is
-// BDF2's, which is backward Euler's of 2h/3 from x_b = (4 x_n − x_{n−1})/3 and v_b = (4 v_n −
-// v_{n−1})/3 in the place of x_n and v_n (the first step, and the first after a change of h, is
-// backward Euler's). Either is L-stable: a step is never limited by the stiffest bar. It is split
-// in halves where Newton does not converge or where its local error, h²/2 |a_{n+1} − a_n| at some
-// node, passes kImplicitErrorShare of the median bar (but for a step in which a node meets or
-// leaves the ground).
+// fields at t_{n+1} (they depend on the time alone) and the wind at (x_n, v_n). The ground's and
+// the contact's dampers are left out (an impact at these steps is inelastic whatever their
+// damping_ratio says: backward Euler damps the contact's vibration). The minimum is found by
+// Newton's method and a line search on E. Each Newton step is solved by conjugate gradients with
+// the Hessian's products taken from differences of the gradient, preconditioned with a factorised
+// sparse Hessian (stiffness_matrix.hpp) that is kept over iterations and steps until the solve
+// stops converging in a few iterations; then v_{n+1} = (x_{n+1} − x_n)/h. With `integrator:
+// implicit_bdf2` (ImplicitScheme:: kBdf2) a step of h after one of the same h is BDF2's, which is
+// backward Euler's of 2h/3 from x_b = (4 x_n − x_{n−1})/3 and v_b = (4 v_n − v_{n−1})/3 in the
+// place of x_n and v_n (the first step, and the first after a change of h, is backward Euler's).
+// Either is L-stable: a step is never limited by the stiffest bar. It is split in halves where
+// Newton does not converge or where its local error, h²/2 |a_{n+1} − a_n| at some node, passes
+// kImplicitErrorShare of the median bar (but for a step in which a node meets or leaves the
+// ground).
 //
 // Springs that yield: the plastic sets are held at the step's start while Newton minimises the
 // stored energy plus the work of the flow from them (SpringEnergy::kWithFlow, whose gradient is
 // the flattened force: a return mapping at every iterate), and kept at the step's end.
 // Bars past their breaking limit at x_n break at the step's start, as in central differences.
-// Not yet: contact between objects is refused at the scene (model/model_builder.cpp); the
-// state's velocities are v_n, not leapfrog's v_{n−½}.
+// Contact between objects and within one: its penalty a potential and its friction lagged
+// (implicit_object_contact.hpp), the step split where a node of it would pass its speed envelope.
+// The state's velocities are v_n, not leapfrog's v_{n−½}.
 #include <memory>
 
 #include "dynamics/integrator.hpp"

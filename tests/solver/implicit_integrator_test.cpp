@@ -270,25 +270,5 @@ objects:
 
 INSTANTIATE_TEST_SUITE_P(Schemes, ImplicitThreads, ::testing::Values("implicit", "implicit_bdf2"));
 
-// What the implicit integrator does not handle yet is refused at the key, naming it.
-TEST(ImplicitIntegrator, WhatItCannotDoYetIsRefusedNamingIt) {
-  try {
-    build_model(test::scene_from_yaml(R"(version: 1
-duration: 1
-integrator: implicit
-objects:
-  - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}
-    material: {density: 1000, youngs_modulus: 1.0e8, radius: 0.005}
-    pinned: {indices: [0]}
-contact: {self: true}
-)"));
-    ADD_FAILURE() << "contact within an object was taken";
-  } catch (const UserError& e) {
-    test::expect_contains(
-        e.message(), {"integrator: implicit", "contact between objects", "central_difference"});
-    EXPECT_EQ(e.loc().line, 3);
-  }
-}
-
 }  // namespace
 }  // namespace dinam

@@ -1,0 +1,439 @@
+#include "solver/implicit_object_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "dynamics/contact_closest.hpp"
+#include "dynamics/contact_geometry.hpp"
+#include "dynamics/contact_pairs.hpp"
+#include "dynamics/object_contact.hpp"
+#include "model/model.hpp"
+#include "solver/stiffness_matrix.hpp"
+
+namespace dinam {
+namespace {
+
+// The pairs' kinds, by their keys: the search's node–triangle pairs (bit 63) and bar–bar pairs
+// (neither top bit), and the node–bar pairs of bars' ends made here (both: node ids stay below
+// 2³⁰, so bit 62 is free in the others).
+constexpr std::uint64_t kNodeBarBits = (std::uint64_t{1} << 63) | (std::uint64_t{1} << 62);
+enum class PairKind { kNodeTriangle, kBarBar, kNodeBar };
+
+PairKind kind_of(std::uint64_t key) {
+  if ((key & kNodeBarBits) == kNodeBarBits) {
+    return PairKind::kNodeBar;
+  }
+  return (key >> 63) == kBarBarContact ? PairKind::kBarBar : PairKind::kNodeTriangle;
+}
+
+std::uint64_t node_bar_key(Index node, Index bar) {
+  return kNodeBarBits | static_cast<std::uint64_t>(node) << 32 | static_cast<std::uint64_t>(bar);
+}
+
+// The element of `sorted` (by key) with `key`, or null.
+template <class Element>
+const Element* find_key(const std::vector<Element>& sorted, std::uint64_t key) {
+  const auto at = std::lower_bound(sorted.begin(), sorted.end(), key,
+                                   [](const Element& e, std::uint64_t k) { return e.key < k; });
+  return at != sorted.end() && at->key == key ? &*at : nullptr;
+}
+
+template <class Element>
+void sort_by_key(std::vector<Element>& list) {
+  std::sort(list.begin(), list.end(),
+            [](const Element& a, const Element& b) { return a.key < b.key; });
+}
+
+// IPC's edge–edge mollifier of s = |e_A × e_B|² against ε = 1e-3 |ē_A|² |ē_B|² (the rest
+// lengths'): (2 − s/ε) s/ε below ε, 1 from there (sin² of the angle between the bars 1e-3, 1.8°),
+// once differentiable; and its gradient on the bars' four nodes.
+struct Mollifier {
+  double value = 1.0;
+  std::array<Vec3, 4> gradient{Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+};
+
+constexpr double kParallelShare = 1e-3;
+
+Mollifier mollifier(const std::array<Vec3, 4>& at, double threshold) {
+  const Vec3 ea = at[1] - at[0];
+  const Vec3 eb = at[3] - at[2];
+  const Vec3 across = ea.cross(eb);
+  const double s = across.squaredNorm();
+  Mollifier m;
+  if (s >= threshold) {
+    return m;
+  }
+  const double r = s / threshold;
+  m.value = (2.0 - r) * r;
+  const double slope = (2.0 - 2.0 * r) / threshold;     // dm/ds
+  const Vec3 along_a = 2.0 * slope * eb.cross(across);  // dm/de_A
+  const Vec3 along_b = 2.0 * slope * across.cross(ea);  // dm/de_B
+  m.gradient = {-along_a, along_a, -along_b, along_b};
+  return m;
+}
+
+// A touching pair's push at x: its energy, the forces on its nodes, the normal along which it
+// pushes side A and how hard (N, for friction's cap), the slope of that push with the penetration
+// (N/m, for the preconditioner), and the stiffness friction's stick spring takes.
+struct PairPush {
+  double energy = 0.0;
+  std::array<Vec3, 4> force{Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  Vec3 normal = Vec3::UnitZ();
+  double push = 0.0;
+  double slope = 0.0;
+  double stick_stiffness = 0.0;
+};
+
+PairPush evaluate(const Model& model, const ContactPoint& point, const std::vector<Vec3>& x) {
+  PairPush result;
+  const ObjectContact& contact = model.contact;
+  ContactPenalty penalty;
+  double penetration = 0.0;
+  double scale = 1.0;  // the mollifier, for two bars
+  if (kind_of(point.key) == PairKind::kNodeBar) {
+    const Index node = point.nodes[0];
+    const Index bar = contact_side_b(point.key);
+    const double reach = contact.point_radius[node] + contact.bar_radius[bar];
+    penalty = contact_penalty_between(
+        model, model.node_inv_mass[node],
+        std::max(model.node_inv_mass[point.nodes[1]], model.node_inv_mass[point.nodes[2]]), reach);
+    const double distance = point.separation.norm();
+    if (distance > 1e-12 * reach) {
+      result.normal = point.separation / distance;
+    } else {  // on the bar's axis: across it
+      const Vec3 along = x[point.nodes[2]] - x[point.nodes[1]];
+      result.normal = along.cross(kWorldUp).squaredNorm() > 0.0 ? along.cross(kWorldUp).normalized()
+                                                                : Vec3::UnitX();
+    }
+    penetration = reach - distance;
+  } else {
+    const ContactPush push = contact_push(model, point, x);
+    penalty = push.penalty;
+    penetration = push.penetration;
+    result.normal = push.normal;
+  }
+  Mollifier m;
+  if (kind_of(point.key) == PairKind::kBarBar) {
+    const Index a = contact_side_a(point.key);
+    const Index b = contact_side_b(point.key);
+    const double la = model.bar_rest_length[a];
+    const double lb = model.bar_rest_length[b];
+    m = mollifier({x[point.nodes[0]], x[point.nodes[1]], x[point.nodes[2]], x[point.nodes[3]]},
+                  kParallelShare * la * la * lb * lb);
+    scale = m.value;
+  }
+  const double energy = penalty.energy(penetration);
+  const double force = penalty.force(penetration);
+  result.energy = scale * energy;
+  result.push = scale * force;
+  result.slope = scale * penalty.slope(penetration);
+  result.stick_stiffness = penalty.soft;
+  for (int j = 0; j < 4; ++j) {
+    result.force[j] = (point.weights[j] * result.push) * result.normal - energy * m.gradient[j];
+  }
+  return result;
+}
+
+// The capped quadratic's energy and gradient at stretch u (implicit_friction.hpp's).
+double capped_energy(double k, double cap, double r) {
+  const double reach = cap / k;
+  return r <= reach ? 0.5 * k * r * r : cap * (r - reach) + 0.5 * k * reach * reach;
+}
+
+Vec3 capped_gradient(double k, double cap, const Vec3& u) {
+  const double r = u.norm();
+  return r * k <= cap ? Vec3(k * u) : Vec3((cap / r) * u);
+}
+
+void add_block(const FreeDofs& dofs, const std::array<Index, 4>& nodes,
+               const std::array<double, 4>& weights, const Mat3& block,
+               std::vector<Eigen::Triplet<double>>& triplets) {
+  for (int i = 0; i < 4; ++i) {
+    const Index di = dofs.first_dof[nodes[i]];
+    for (int j = 0; j < 4; ++j) {
+      const Index dj = dofs.first_dof[nodes[j]];
+      const double weight = weights[i] * weights[j];
+      if (di < 0 || dj < 0 || weight == 0.0) {
+        continue;
+      }
+      for (int row = 0; row < 3; ++row) {
+        for (int col = 0; col < 3; ++col) {
+          triplets.emplace_back(di + row, dj + col, weight * block(row, col));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double contact_envelope(const Model& model) {
+  const ObjectContact& contact = model.contact;
+  double smallest = std::numeric_limits<double>::infinity();
+  if (!contact.enabled) {
+    return smallest;
+  }
+  for (const Index b : contact.bars) {
+    smallest = std::min(smallest, contact.bar_radius[b]);
+  }
+  for (const Index p : contact.points) {
+    smallest = std::min(smallest, contact.point_radius[p]);
+  }
+  for (const double r : contact.triangle_radius) {
+    smallest = std::min(smallest, r);
+  }
+  return 0.5 * smallest;
+}
+
+double contact_envelope_steps(const Model& model, double duration) {
+  const double envelope = contact_envelope(model);
+  if (!std::isfinite(envelope) || envelope <= 0.0 || model.node_count() == 0) {
+    return 0.0;
+  }
+  const double g = model.gravity.norm();
+  const Vec3 down = g > 0.0 ? Vec3(model.gravity / g) : Vec3::Zero();
+  double fastest = 0.0;
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    fastest = std::max(fastest, model.node_initial_v[i].norm());
+    const double depth = down.dot(model.node_initial_x[i]);
+    low = std::min(low, depth);
+    high = std::max(high, depth);
+  }
+  return duration * (fastest + std::sqrt(2.0 * g * (high - low))) / envelope;
+}
+
+void ImplicitObjectContact::find_pairs(const Model& model, State& state,
+                                       const std::vector<ContactPoint>& sides_from,
+                                       const std::vector<Vec3>& side_positions) {
+  const ObjectContact& contact = model.contact;
+  ObjectContactWorkspace& work = state.object_contact;
+  const std::vector<Vec3>& x = state.x;
+  find_touching_pairs(model, state, PairMerging::kEveryPair);
+  pairs_.assign(work.touching.begin(), work.touching.end());
+  for (ContactPoint& point : pairs_) {
+    if (kind_of(point.key) != PairKind::kNodeTriangle) {
+      continue;
+    }
+    if (const ContactPoint* known = find_key(sides_from, point.key)) {
+      point.side = known->side;
+      continue;
+    }
+    std::array<Vec3, 4> at;
+    for (int j = 0; j < 4; ++j) {
+      at[j] = side_positions[point.nodes[j]];
+    }
+    point.side = triangle_side(at);
+  }
+  // Each end of a bar against the other bar of every pair of bars the search found near.
+  node_bar_keys_.clear();
+  for (const ContactCandidate& pair : work.candidates) {
+    if ((pair.key >> 63) != kBarBarContact) {
+      continue;
+    }
+    const Index a = contact_side_a(pair.key);
+    const Index b = contact_side_b(pair.key);
+    if (bar_broken(state, a) || bar_broken(state, b)) {
+      continue;
+    }
+    node_bar_keys_.insert(node_bar_keys_.end(),
+                          {node_bar_key(pair.nodes[0], b), node_bar_key(pair.nodes[1], b),
+                           node_bar_key(pair.nodes[2], a), node_bar_key(pair.nodes[3], a)});
+  }
+  std::sort(node_bar_keys_.begin(), node_bar_keys_.end());
+  node_bar_keys_.erase(std::unique(node_bar_keys_.begin(), node_bar_keys_.end()),
+                       node_bar_keys_.end());
+  for (const std::uint64_t key : node_bar_keys_) {
+    const Index node = contact_side_a(key & ~kNodeBarBits);
+    const Index bar = contact_side_b(key);
+    const Index b0 = model.bar_nodes[2 * bar];
+    const Index b1 = model.bar_nodes[2 * bar + 1];
+    if (model.pinned(node) && model.pinned(b0) && model.pinned(b1)) {
+      continue;
+    }
+    const double t = closest_points_of_segments(x[node], x[node], x[b0], x[b1]).t;
+    const Vec3 separation = x[node] - ((1.0 - t) * x[b0] + t * x[b1]);
+    const double reach = contact.point_radius[node] + contact.bar_radius[bar];
+    if (separation.squaredNorm() >= reach * reach) {
+      continue;
+    }
+    ContactPoint& point = pairs_.emplace_back();
+    point.key = key;
+    point.features = {ContactFeatures::kNodeEdge, node, std::min(b0, b1), std::max(b0, b1)};
+    point.nodes = {node, b0, b1, b1};
+    point.weights = {1.0, t - 1.0, -t, 0.0};
+    point.separation = separation;
+  }
+  sort_by_key(pairs_);
+}
+
+void ImplicitObjectContact::start_step(const Model& model, State& state) {
+  const ObjectContact& contact = model.contact;
+  springs_.clear();
+  at_start_.clear();
+  if (!contact.enabled) {
+    return;
+  }
+  if (contact_nodes_.empty()) {
+    for (const Index b : contact.bars) {
+      contact_nodes_.push_back(model.bar_nodes[2 * b]);
+      contact_nodes_.push_back(model.bar_nodes[2 * b + 1]);
+    }
+    contact_nodes_.insert(contact_nodes_.end(), contact.points.begin(), contact.points.end());
+    std::sort(contact_nodes_.begin(), contact_nodes_.end());
+    contact_nodes_.erase(std::unique(contact_nodes_.begin(), contact_nodes_.end()),
+                         contact_nodes_.end());
+  }
+  x_start_ = state.x;
+  // The history's pairs (touching at x_n when the last step ended, by key) keep their sides;
+  // others (the first step, or a state made otherwise) take the side they are on now.
+  const std::vector<ContactPoint>& history = state.object_contact.previous;
+  find_pairs(model, state, history, state.x);
+  for (const ContactPoint& point : pairs_) {
+    const PairPush push = evaluate(model, point, state.x);
+    if (push.push <= 0.0) {
+      continue;
+    }
+    const ContactPoint* before = find_key(history, point.key);
+    Spring spring;
+    spring.key = point.key;
+    spring.nodes = point.nodes;
+    spring.weights = point.weights;
+    spring.normal = push.normal;
+    spring.stiffness = push.stick_stiffness;
+    const bool sliding = before != nullptr && before->sliding;
+    spring.cap = (sliding ? contact.kinetic_friction : contact.static_friction) * push.push;
+    if (before != nullptr) {
+      spring.carried = before->slip - before->slip.dot(push.normal) * push.normal;
+    }
+    springs_.push_back(spring);
+  }
+  at_start_ = pairs_;
+}
+
+Vec3 ImplicitObjectContact::stretch(const Spring& spring, const std::vector<Vec3>& x) const {
+  Vec3 moved = Vec3::Zero();
+  for (int j = 0; j < 4; ++j) {
+    const Index node = spring.nodes[j];
+    moved += spring.weights[j] * (x[node] - x_start_[node]);
+  }
+  return spring.carried + moved - moved.dot(spring.normal) * spring.normal;
+}
+
+void ImplicitObjectContact::add_forces(const Model& model, State& state) {
+  if (!model.contact.enabled) {
+    return;
+  }
+  find_pairs(model, state, at_start_, x_start_);
+  for (const ContactPoint& point : pairs_) {
+    const PairPush push = evaluate(model, point, state.x);
+    for (int j = 0; j < 4; ++j) {
+      state.force[point.nodes[j]] += push.force[j];
+    }
+  }
+  for (const Spring& spring : springs_) {
+    const Vec3 on_a = -capped_gradient(spring.stiffness, spring.cap, stretch(spring, state.x));
+    for (int j = 0; j < 4; ++j) {
+      state.force[spring.nodes[j]] += spring.weights[j] * on_a;
+    }
+  }
+}
+
+double ImplicitObjectContact::energy(const Model& model, State& state) {
+  if (!model.contact.enabled) {
+    return 0.0;
+  }
+  find_pairs(model, state, at_start_, x_start_);
+  double energy = 0.0;
+  for (const ContactPoint& point : pairs_) {
+    energy += evaluate(model, point, state.x).energy;
+  }
+  for (const Spring& spring : springs_) {
+    energy += capped_energy(spring.stiffness, spring.cap, stretch(spring, state.x).norm());
+  }
+  return energy;
+}
+
+void ImplicitObjectContact::add_hessian(const Model& model, State& state, const FreeDofs& dofs,
+                                        std::vector<Eigen::Triplet<double>>& triplets) {
+  if (!model.contact.enabled) {
+    return;
+  }
+  find_pairs(model, state, at_start_, x_start_);
+  for (const ContactPoint& point : pairs_) {
+    const PairPush push = evaluate(model, point, state.x);
+    add_block(dofs, point.nodes, point.weights, push.slope * push.normal * push.normal.transpose(),
+              triplets);
+  }
+  for (const Spring& spring : springs_) {
+    // ∂u/∂x_j = w_j P, so the block (i, j) is w_i w_j P H_u P: sticking H_u = k, sliding the
+    // cap's force turning with u, (μN/r)(I − û ûᵀ) (u lies in the plane, so P commutes).
+    const Mat3 across = Mat3::Identity() - spring.normal * spring.normal.transpose();
+    const Vec3 u = stretch(spring, state.x);
+    const double r = u.norm();
+    Mat3 block = spring.stiffness * across;
+    if (r * spring.stiffness > spring.cap) {
+      const Vec3 along = u / r;
+      block = (spring.cap / r) * (across - along * along.transpose());
+    }
+    add_block(dofs, spring.nodes, spring.weights, block, triplets);
+  }
+}
+
+double ImplicitObjectContact::longest_move(const Model& model, const std::vector<Vec3>& x) const {
+  double longest = 0.0;
+  if (!model.contact.enabled) {
+    return longest;
+  }
+  for (const Index node : contact_nodes_) {
+    longest = std::max(longest, (x[node] - x_start_[node]).norm());
+  }
+  return longest;
+}
+
+bool ImplicitObjectContact::touching_changed(const Model& model, State& state) {
+  if (!model.contact.enabled) {
+    return false;
+  }
+  find_pairs(model, state, at_start_, x_start_);
+  return !std::equal(pairs_.begin(), pairs_.end(), at_start_.begin(), at_start_.end(),
+                     [](const ContactPoint& a, const ContactPoint& b) { return a.key == b.key; });
+}
+
+void ImplicitObjectContact::finish_step(const Model& model, State& state) {
+  const ObjectContact& contact = model.contact;
+  if (!contact.enabled) {
+    return;
+  }
+  ObjectContactWorkspace& work = state.object_contact;
+  find_pairs(model, state, at_start_, x_start_);
+  work.energy = 0.0;
+  for (ContactPoint& point : pairs_) {
+    const PairPush push = evaluate(model, point, state.x);
+    point.energy = push.energy;
+    work.energy += point.energy;
+    point.slip = Vec3::Zero();
+    point.sliding = false;
+    const Spring* spring = find_key(springs_, point.key);
+    if (spring == nullptr) {
+      continue;
+    }
+    // The stretch kept: at most this step's cap's reach, and at most the next step's (μ of what
+    // it did times the pair's push at x_{n+1}), in the plane at x_{n+1}, as at the ground.
+    Vec3 u = stretch(*spring, state.x);
+    u -= u.dot(push.normal) * push.normal;
+    const double r = u.norm();
+    const bool slid = r * spring->stiffness > spring->cap;
+    const double next_mu = slid ? contact.kinetic_friction : contact.static_friction;
+    const double kept = std::min({r, spring->cap / spring->stiffness,
+                                  next_mu * std::max(push.push, 0.0) / push.stick_stiffness});
+    point.slip = r > 0.0 ? Vec3((kept / r) * u) : Vec3::Zero();
+    point.sliding = slid && push.push > 0.0;
+  }
+  // The history, by key: what start_step looks pairs up by.
+  work.previous = pairs_;
+}
+
+}  // namespace dinam
