@@ -101,12 +101,17 @@ void print_integrator_choice(const IntegratorChoice& choice) {
   }
   const ImplicitStepCost& step = choice.implicit.implicit;
   fmt::print(
-      "integrators      central_difference: {} steps, about {}; implicit: {} steps (more where "
-      "a step is split), about {} at {:g} Newton iterations, {:g} iterations of their solves "
+      "integrators      central_difference: {} steps, about {}; implicit: {} steps ({}), about {} "
+      "at {:g} Newton iterations, {:g} iterations of their solves "
       "and {:g} factorisation a step ({:.3g} ms each, of a factor of {:.3g} nonzeros for {:.0f} "
       "unknowns; a swing takes fewer, an impact on the ground more: docs/performance.md)\n",
       choice.central_difference.steps, duration_text(choice.central_difference.seconds),
-      choice.implicit.steps, duration_text(choice.implicit.seconds), kAssumedIterationsPerStep,
+      choice.implicit.steps,
+      choice.contact_envelope
+          ? "at most: contact between objects moves no node more than half its smallest radius "
+            "a step, and this counts a fall through the scene's height for the whole run"
+          : "more where a step is split",
+      duration_text(choice.implicit.seconds), kAssumedIterationsPerStep,
       kAssumedSolveIterationsPerStep, kAssumedFactorizationsPerStep,
       1e3 * step.factorization_seconds, step.factor.nonzeros, step.factor.unknowns);
   fmt::print("recommended      integrator: {} ({})\n", integrator_key(choice.recommended),

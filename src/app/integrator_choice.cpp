@@ -39,6 +39,7 @@ IntegratorChoice compare_integrators(const SceneDescription& scene, const Model&
   }
   choice.central_difference = implicit ? run(other_scene, *other) : run(scene, model);
   choice.implicit = implicit ? run(scene, model) : run(other_scene, *other);
+  choice.contact_envelope = model.contact.enabled;
   choice.recommended = choice.implicit.seconds < 0.5 * choice.central_difference.seconds
                            ? IntegratorKind::kImplicit
                            : IntegratorKind::kCentralDifference;

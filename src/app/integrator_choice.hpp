@@ -18,6 +18,7 @@ struct IntegratorChoice {
   RunEstimate implicit;            // at the scene's `timestep` or a quarter of a frame (its
                                    // `implicit` says what a step is made of)
   std::string implicit_refused;    // why the scene cannot take it; empty where it can
+  bool contact_envelope = false;   // the implicit steps count contact's speed envelope
   IntegratorKind recommended = IntegratorKind::kCentralDifference;
 };
 

@@ -11,6 +11,7 @@
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/implicit_object_contact.hpp"
 #include "solver/initial_state.hpp"
 
 namespace dinam {
@@ -39,7 +40,20 @@ RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
   if (model.integrator == IntegratorKind::kImplicit) {
     // A Newton solve a step (solver/implicit_cost.hpp), on one thread: the factorisation is.
     estimate.implicit = estimate_implicit_step(model, estimate_step_cost(model, 1));
-    const double seconds = estimate.implicit.seconds;
+    double seconds = estimate.implicit.seconds;
+    // Contact between objects splits the steps where a node would pass its speed envelope; the
+    // steps split off are short, and cost what a short step does.
+    const double frames_seconds = static_cast<double>(scene.frame_count()) / scene.fps;
+    const auto envelope_steps =
+        static_cast<long long>(std::ceil(contact_envelope_steps(model, frames_seconds)));
+    const long long split_off = envelope_steps + estimate.settle_steps - estimate.steps;
+    if (split_off > 0) {
+      const auto steps = static_cast<double>(estimate.steps);
+      seconds = (steps * seconds +
+                 static_cast<double>(split_off) * estimate.implicit.short_step_seconds) /
+                (steps + static_cast<double>(split_off));
+      estimate.steps += split_off;
+    }
     estimate.step = {
         {{"Newton iterations and factorisations", 1.0, 1e9 * seconds}}, 1e9 * seconds, 1, seconds};
   }

@@ -49,13 +49,16 @@ TEST(Info, KeepsCentralDifferencesForThePapersFlag) {
   EXPECT_EQ(recommendation(info), "central_difference") << info.output;
 }
 
-// Contact between objects is not the implicit integrator's yet: info says so instead of failing.
-TEST(Info, SaysWhyAScenesCannotTakeTheImplicitIntegrator) {
+// The paper's ball thrown into the trampoline's net, contact between objects: the implicit
+// integrator's steps count its speed envelope (thrown at 3.2 m/s, then a fall of 1.6 m: 8.8 m/s
+// at most, where no node may move more than 2 mm a step: 17 668 steps at most, 5 844 taken in
+// 17.5 s, against central differences' 6 s), so central differences are kept.
+TEST(Info, CountsTheContactsSpeedEnvelopeInTheImplicitEstimate) {
   const test::CommandResult info =
       test::run_dinam({"info", std::string(DINAM_SOURCE_DIR) + "/scenes/ball_in_net.yaml"});
   ASSERT_EQ(info.exit_code, 0) << info.output;
   EXPECT_EQ(recommendation(info), "central_difference") << info.output;
-  test::expect_contains(info.output, {"implicit: not for this scene", "contact between objects"});
+  test::expect_contains(info.output, {"contact between objects moves no node more than half"});
 }
 
 }  // namespace
