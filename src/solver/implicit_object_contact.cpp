@@ -205,27 +205,19 @@ double contact_envelope_steps(const Model& model, double duration) {
   return duration * (fastest + std::sqrt(2.0 * g * (high - low))) / envelope;
 }
 
-void ImplicitObjectContact::find_pairs(const Model& model, State& state,
-                                       const std::vector<ContactPoint>& sides_from,
-                                       const std::vector<Vec3>& side_positions) {
+void ImplicitObjectContact::find_pairs(const Model& model, State& state) {
   const ObjectContact& contact = model.contact;
   ObjectContactWorkspace& work = state.object_contact;
   const std::vector<Vec3>& x = state.x;
   find_touching_pairs(model, state, PairMerging::kEveryPair);
   pairs_.assign(work.touching.begin(), work.touching.end());
+  // A node is pushed off a triangle on the side it is on (no crossing to remember: the speed
+  // envelope keeps a step from carrying it through the middle).
   for (ContactPoint& point : pairs_) {
-    if (kind_of(point.key) != PairKind::kNodeTriangle) {
-      continue;
+    if (kind_of(point.key) == PairKind::kNodeTriangle) {
+      point.side = triangle_side(
+          {x[point.nodes[0]], x[point.nodes[1]], x[point.nodes[2]], x[point.nodes[3]]});
     }
-    if (const ContactPoint* known = find_key(sides_from, point.key)) {
-      point.side = known->side;
-      continue;
-    }
-    std::array<Vec3, 4> at;
-    for (int j = 0; j < 4; ++j) {
-      at[j] = side_positions[point.nodes[j]];
-    }
-    point.side = triangle_side(at);
   }
   // Each end of a bar against the other bar of every pair of bars the search found near.
   node_bar_keys_.clear();
@@ -287,10 +279,9 @@ void ImplicitObjectContact::start_step(const Model& model, State& state) {
                          contact_nodes_.end());
   }
   x_start_ = state.x;
-  // The history's pairs (touching at x_n when the last step ended, by key) keep their sides;
-  // others (the first step, or a state made otherwise) take the side they are on now.
+  // The history: the pairs touching at x_n when the last step ended, by key.
   const std::vector<ContactPoint>& history = state.object_contact.previous;
-  find_pairs(model, state, history, state.x);
+  find_pairs(model, state);
   for (const ContactPoint& point : pairs_) {
     const PairPush push = evaluate(model, point, state.x);
     if (push.push <= 0.0) {
@@ -326,7 +317,7 @@ void ImplicitObjectContact::add_forces(const Model& model, State& state) {
   if (!model.contact.enabled) {
     return;
   }
-  find_pairs(model, state, at_start_, x_start_);
+  find_pairs(model, state);
   for (const ContactPoint& point : pairs_) {
     const PairPush push = evaluate(model, point, state.x);
     for (int j = 0; j < 4; ++j) {
@@ -345,7 +336,7 @@ double ImplicitObjectContact::energy(const Model& model, State& state) {
   if (!model.contact.enabled) {
     return 0.0;
   }
-  find_pairs(model, state, at_start_, x_start_);
+  find_pairs(model, state);
   double energy = 0.0;
   for (const ContactPoint& point : pairs_) {
     energy += evaluate(model, point, state.x).energy;
@@ -361,7 +352,7 @@ void ImplicitObjectContact::add_hessian(const Model& model, State& state, const 
   if (!model.contact.enabled) {
     return;
   }
-  find_pairs(model, state, at_start_, x_start_);
+  find_pairs(model, state);
   for (const ContactPoint& point : pairs_) {
     const PairPush push = evaluate(model, point, state.x);
     add_block(dofs, point.nodes, point.weights, push.slope * push.normal * push.normal.transpose(),
@@ -397,7 +388,7 @@ bool ImplicitObjectContact::touching_changed(const Model& model, State& state) {
   if (!model.contact.enabled) {
     return false;
   }
-  find_pairs(model, state, at_start_, x_start_);
+  find_pairs(model, state);
   return !std::equal(pairs_.begin(), pairs_.end(), at_start_.begin(), at_start_.end(),
                      [](const ContactPoint& a, const ContactPoint& b) { return a.key == b.key; });
 }
@@ -408,7 +399,7 @@ void ImplicitObjectContact::finish_step(const Model& model, State& state) {
     return;
   }
   ObjectContactWorkspace& work = state.object_contact;
-  find_pairs(model, state, at_start_, x_start_);
+  find_pairs(model, state);
   work.energy = 0.0;
   for (ContactPoint& point : pairs_) {
     const PairPush push = evaluate(model, point, state.x);

@@ -17,13 +17,15 @@
 //    distance smooth), which holds parallel wires apart.
 // A node over a vertex or an edge, or a bar's end on another bar, is therefore pushed by each
 // primitive there, and sinks less under a load (the penalty's sag, micrometres, divided by their
-// number); friction, μ times each pair's own push, is the same in sum. A node–triangle pair
-// pushes its node back to the side of the triangle it was on at the step's start x_n (a pair
-// touching there keeps the side from when it first touched), so that an iterate that carries a
-// node through a triangle's middle is pushed back, not on through. The contact's damper is not
-// used: an impact at long steps is inelastic whatever `damping_ratio` says, as at the ground (at
-// the short steps of the speed envelope, below, backward Euler damps it less: a wire thrown at
-// 10 m/s at another rebounds at 4 to 5 m/s).
+// number); friction, μ times each pair's own push, is the same in sum. A node is pushed off a
+// triangle on the side it is on: central differences remember the side a node came from, for a
+// node that crosses a shell's middle within a step beyond their speed envelope, but here no step
+// may pass the envelope (below), and a side remembered from the step's start flipped for a node
+// that came round a triangle's edge, which made its energy jump by a whole reach's penalty (the
+// draped chair's cloth at 0.39 s). The contact's damper is not used: an impact at long steps is
+// inelastic whatever `damping_ratio` says, as at the ground (at the short steps of the speed
+// envelope, below, backward Euler damps it less: a wire thrown at 10 m/s at another rebounds at 4
+// to 5 m/s).
 //
 // Friction, lagged: the pairs touching at x_n, with their closest points' weights w_j and normal
 // n at x_n, each hold by a stick spring on the pair's tangential motion within the step,
@@ -66,7 +68,7 @@ double contact_envelope_steps(const Model& model, double duration);
 
 class ImplicitObjectContact {
  public:
-  // The pairs touching at state.x (x_n): their sides and friction springs, from the history.
+  // The pairs touching at state.x (x_n) and their friction springs, from the history.
   void start_step(const Model& model, State& state);
 
   // The normal penalty's and the friction's forces at state.x, added to state.force.
@@ -91,10 +93,8 @@ class ImplicitObjectContact {
 
  private:
   // The pairs touching at state.x, by key, into pairs_: the search's node–triangle and bar–bar
-  // pairs and the node–bar pairs of the bars' ends. A node–triangle pair takes its side from
-  // `sides_from` (by key), else the side its node is on at `side_positions`.
-  void find_pairs(const Model& model, State& state, const std::vector<ContactPoint>& sides_from,
-                  const std::vector<Vec3>& side_positions);
+  // pairs and the node–bar pairs of the bars' ends.
+  void find_pairs(const Model& model, State& state);
 
   // One friction spring: a pair touching at x_n.
   struct Spring {
@@ -110,7 +110,7 @@ class ImplicitObjectContact {
   Vec3 stretch(const Spring& spring, const std::vector<Vec3>& x) const;
 
   std::vector<ContactPoint> pairs_;           // touching at the last find_pairs, by key
-  std::vector<ContactPoint> at_start_;        // the pairs touching at x_n, by key, with sides
+  std::vector<ContactPoint> at_start_;        // the pairs touching at x_n, by key
   std::vector<Spring> springs_;               // by key
   std::vector<std::uint64_t> node_bar_keys_;  // scratch: the node–bar pairs to check
   std::vector<Vec3> x_start_;                 // m, x_n
