@@ -61,5 +61,30 @@ TEST(Info, CountsTheContactsSpeedEnvelopeInTheImplicitEstimate) {
   test::expect_contains(info.output, {"contact between objects moves no node more than half"});
 }
 
+// And a 1 mm steel cable let fall onto a pinned steel bar, contact between objects too: central
+// differences need some 814 700 steps of 1.2 µs (2.1 s measured), the implicit integrator 779 (0.24
+// s; docs/performance.md), so it is recommended.
+TEST(Info, RecommendsTheImplicitIntegratorForASteelCableOnABar) {
+  test::TemporaryFolder folder("info");
+  const auto scene = folder.path() / "drape.yaml";
+  std::ofstream(scene) << R"(version: 1
+duration: 1
+contact: {objects: true}
+ground: {contact: false}
+objects:
+  - name: bar
+    mesh: {polyline: {points: [[0, -0.3, 0.5], [0, 0.3, 0.5]], segments: 6}}
+    material: {density: 7850, youngs_modulus: 2.0e11, radius: 0.005}
+    pinned: {all: true}
+  - name: cable
+    mesh: {polyline: {points: [[-0.5, 0, 0.511], [0.5, 0, 0.511]], segments: 100}}
+    material: {density: 7850, youngs_modulus: 2.0e11, radius: 0.001}
+)";
+  const test::CommandResult info = test::run_dinam({"info", scene.string()});
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_EQ(recommendation(info), "implicit") << info.output;
+  test::expect_contains(info.output, {"central_difference: 814728 steps"});
+}
+
 }  // namespace
 }  // namespace dinam
