@@ -12,6 +12,7 @@
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/tearing.hpp"
 #include "model/model.hpp"
+#include "solver/ground_restitution.hpp"
 #include "solver/implicit_friction.hpp"
 #include "solver/implicit_object_contact.hpp"
 #include "solver/positive_definite_solver.hpp"
@@ -566,6 +567,9 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     return false;
   }
   state.contact_touching = w.touching_start;
+  // The nodes that landed leave with the ground's restitution (ground_restitution.hpp); BDF2's
+  // history then starts again, its velocity before the impact being no longer the motion's.
+  const bool rebounded = rebound_landing_nodes(model, w.x_start, w.v_start, state);
   w.friction.finish_step(model, state);
   w.objects.finish_step(model, state);
   if (w.any_yield) {
@@ -581,7 +585,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   if (model.implicit_scheme == ImplicitScheme::kBdf2) {
     w.x_before = w.x_start;
     w.v_before = w.v_start;
-    w.before_h = h;
+    w.before_h = rebounded ? 0.0 : h;
   }
   state.time = t_next;
   state.step += 1;

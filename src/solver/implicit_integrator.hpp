@@ -8,8 +8,10 @@
 // implicit_object_contact.hpp), D the dampers' dissipation (the bars' axial dampers along their
 // directions at x_n, and the global damping), and F_e the forces outside the potential: the
 // fields at t_{n+1} (they depend on the time alone) and the wind at (x_n, v_n). The ground's and
-// the contact's dampers are left out (an impact at these steps is inelastic whatever their
-// damping_ratio says: backward Euler damps the contact's vibration). The minimum is found by
+// the contact's dampers are left out: backward Euler's long step into a penalty ends an impact
+// at rest, whatever their damping_ratio says; so a node that lands on the ground within a step
+// leaves it with the damper's restitution (ground_restitution.hpp), while contact between
+// objects' short steps bounce by themselves. The minimum is found by
 // Newton's method and a line search on E. Each Newton step is solved by conjugate gradients with
 // the Hessian's products taken from differences of the gradient, preconditioned with a factorised
 // sparse Hessian (stiffness_matrix.hpp) that is kept over iterations and steps until the solve
