@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "model/model.hpp"
+#include "solver/capped_stick_spring.hpp"
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
@@ -98,20 +99,16 @@ Vec3 stretch(const Vec3& normal, const Vec3& x, const Vec3& anchor) {
 double ImplicitFriction::energy(const std::vector<Vec3>& x) const {
   double energy = 0.0;
   for (std::size_t s = 0; s < nodes_.size(); ++s) {
-    const double r = stretch(normal_, x[nodes_[s]], anchor_[s]).norm();
-    const double k = stiffness_[s];
-    const double reach = cap_[s] / k;  // r_c
-    energy += r <= reach ? 0.5 * k * r * r : cap_[s] * (r - reach) + 0.5 * k * reach * reach;
+    energy += capped_spring_energy(stiffness_[s], cap_[s],
+                                   stretch(normal_, x[nodes_[s]], anchor_[s]).norm());
   }
   return energy;
 }
 
 void ImplicitFriction::add_forces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const {
   for (std::size_t s = 0; s < nodes_.size(); ++s) {
-    const Vec3 u = stretch(normal_, x[nodes_[s]], anchor_[s]);
-    const double r = u.norm();
-    const double k = stiffness_[s];
-    force[nodes_[s]] -= r * k <= cap_[s] ? Vec3(k * u) : Vec3((cap_[s] / r) * u);
+    force[nodes_[s]] -=
+        capped_spring_gradient(stiffness_[s], cap_[s], stretch(normal_, x[nodes_[s]], anchor_[s]));
   }
 }
 
@@ -123,16 +120,8 @@ void ImplicitFriction::add_hessian(const FreeDofs& dofs, const std::vector<Vec3>
     if (d < 0) {
       continue;
     }
-    const Vec3 u = stretch(normal_, x[nodes_[s]], anchor_[s]);
-    const double r = u.norm();
-    const double k = stiffness_[s];
-    // Sticking: k P. Sliding: the cap's force turns with u, (μN/r)(P − û ûᵀ), positive
-    // semi-definite (nothing along û: the force's size does not change with r).
-    Mat3 block = k * across;
-    if (r * k > cap_[s]) {
-      const Vec3 along = u / r;
-      block = (cap_[s] / r) * (across - along * along.transpose());
-    }
+    const Mat3 block = capped_spring_hessian(stiffness_[s], cap_[s],
+                                             stretch(normal_, x[nodes_[s]], anchor_[s]), across);
     for (int row = 0; row < 3; ++row) {
       for (int col = 0; col < 3; ++col) {
         triplets.emplace_back(d + row, d + col, block(row, col));

@@ -4,8 +4,7 @@
 // minimises with the rest. Each node below the plane at x_n keeps its anchor a on the plane and
 // is held by the tangential spring k u, u = P (x − a) (P the projection onto the plane, k the
 // ground's penalty stiffness), up to the cap μ N (μs while it sticks, μk while it slides; N =
-// k × its depth at x_n, lagged), beyond which it slides at the cap:
-//   E(u) = ½ k |u|²  for |u| ≤ r_c = μN/k,   μN (|u| − r_c) + ½ k r_c²  beyond,
+// k × its depth at x_n, lagged), beyond which it slides at the cap (capped_stick_spring.hpp):
 // convex and once differentiable, so the step stays a minimisation. A node that sticks moves
 // only by the spring's give, μN/k at most, however long the step: it does not creep. After the
 // step a node that slid drags its anchor to r_c behind its foot, as central differences do; one

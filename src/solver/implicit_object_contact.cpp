@@ -9,6 +9,7 @@
 #include "dynamics/contact_pairs.hpp"
 #include "dynamics/object_contact.hpp"
 #include "model/model.hpp"
+#include "solver/capped_stick_spring.hpp"
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
@@ -133,17 +134,6 @@ PairPush evaluate(const Model& model, const ContactPoint& point, const std::vect
     result.force[j] = (point.weights[j] * result.push) * result.normal - energy * m.gradient[j];
   }
   return result;
-}
-
-// The capped quadratic's energy and gradient at stretch u (implicit_friction.hpp's).
-double capped_energy(double k, double cap, double r) {
-  const double reach = cap / k;
-  return r <= reach ? 0.5 * k * r * r : cap * (r - reach) + 0.5 * k * reach * reach;
-}
-
-Vec3 capped_gradient(double k, double cap, const Vec3& u) {
-  const double r = u.norm();
-  return r * k <= cap ? Vec3(k * u) : Vec3((cap / r) * u);
 }
 
 void add_block(const FreeDofs& dofs, const std::array<Index, 4>& nodes,
@@ -325,7 +315,8 @@ void ImplicitObjectContact::add_forces(const Model& model, State& state) {
     }
   }
   for (const Spring& spring : springs_) {
-    const Vec3 on_a = -capped_gradient(spring.stiffness, spring.cap, stretch(spring, state.x));
+    const Vec3 on_a =
+        -capped_spring_gradient(spring.stiffness, spring.cap, stretch(spring, state.x));
     for (int j = 0; j < 4; ++j) {
       state.force[spring.nodes[j]] += spring.weights[j] * on_a;
     }
@@ -342,7 +333,7 @@ double ImplicitObjectContact::energy(const Model& model, State& state) {
     energy += evaluate(model, point, state.x).energy;
   }
   for (const Spring& spring : springs_) {
-    energy += capped_energy(spring.stiffness, spring.cap, stretch(spring, state.x).norm());
+    energy += capped_spring_energy(spring.stiffness, spring.cap, stretch(spring, state.x).norm());
   }
   return energy;
 }
@@ -359,17 +350,11 @@ void ImplicitObjectContact::add_hessian(const Model& model, State& state, const 
               triplets);
   }
   for (const Spring& spring : springs_) {
-    // ∂u/∂x_j = w_j P, so the block (i, j) is w_i w_j P H_u P: sticking H_u = k, sliding the
-    // cap's force turning with u, (μN/r)(I − û ûᵀ) (u lies in the plane, so P commutes).
+    // ∂u/∂x_j = w_j P, so the block (i, j) is w_i w_j P H_u P (u lies in the plane).
     const Mat3 across = Mat3::Identity() - spring.normal * spring.normal.transpose();
-    const Vec3 u = stretch(spring, state.x);
-    const double r = u.norm();
-    Mat3 block = spring.stiffness * across;
-    if (r * spring.stiffness > spring.cap) {
-      const Vec3 along = u / r;
-      block = (spring.cap / r) * (across - along * along.transpose());
-    }
-    add_block(dofs, spring.nodes, spring.weights, block, triplets);
+    add_block(dofs, spring.nodes, spring.weights,
+              capped_spring_hessian(spring.stiffness, spring.cap, stretch(spring, state.x), across),
+              triplets);
   }
 }
 

@@ -31,7 +31,7 @@
 //   u = u_0 + P Σ w_j (x_j − x_n,j),   P = I − n nᵀ,
 // u_0 the stretch carried from the steps before, up to the cap μ N (N the pair's push at x_n; μs
 // while it sticks, μk while it slides) beyond which it slides at the cap: the ground's capped
-// quadratic (implicit_friction.hpp), convex and once differentiable. A pair that first touches
+// quadratic (capped_stick_spring.hpp), convex and once differentiable. A pair that first touches
 // within a step holds by friction from the next step on. After the step each pair's stretch is
 // kept for the next, at most its cap's reach, in the state (ObjectContactWorkspace::previous).
 //
