@@ -177,8 +177,11 @@ void ImplicitIntegrator::step_or_split(State& state, double h, int depth) {
   if (depth >= kMostSplits) {
     throw RuntimeError(fmt::format(
         "the implicit integrator found no step at t = {:.6g} s even of {:.3g} s (Newton's method "
-        "does not converge there); try 'integrator: central_difference'",
-        state.time, h));
+        "does not converge there{}); try 'integrator: central_difference'",
+        state.time, h,
+        model_.contact.enabled ? ", or a node of the contact between objects moves more than "
+                                 "half its smallest radius even in so short a step"
+                               : ""));
   }
   stats_.splits += 1;
   step_or_split(state, 0.5 * h, depth + 1);
