@@ -108,6 +108,19 @@ struct CommandResult {
   std::string output;  // stdout and stderr together
 };
 
+// A path quoted for a shell command line (it holds no quote itself).
+inline std::string shell_quoted(const std::filesystem::path& path) {
+  std::string text = "'";  // built in steps: "'" + … trips GCC 12's false -Wrestrict (PR 105329)
+  text += path.string();
+  text += '\'';
+  return text;
+}
+
+// The shell command line that runs the dinam program with `arguments`.
+inline std::string dinam_command(const std::string& arguments) {
+  return shell_quoted(DINAM_PROGRAM) + " " + arguments;
+}
+
 // Runs a shell command line and collects what it prints.
 inline CommandResult run_command(const std::string& command) {
   CommandResult result;

@@ -13,11 +13,7 @@
 #include "scene/yaml_map.hpp"
 
 namespace dinam {
-namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-}  // namespace
+namespace {}  // namespace
 
 void require_positive(double value, const FileLoc& loc, const std::string& what, const char* unit) {
   if (!(value > 0.0)) {
@@ -64,15 +60,16 @@ MaterialDesc read_material(YamlMap map) {
     require_positive(r, map.loc("radius"), map.path("radius"), "m");
     require_in_range(r, 1e-7, 100.0, map.loc("radius"), map.path("radius"), "m");
     material.wire_radius = r;
-    material.area = kPi * r * r;
-    material.area_moment = kPi * std::pow(r, 4) / 4.0;
-    material.polar_moment = kPi * std::pow(r, 4) / 2.0;
+    material.area = std::numbers::pi * r * r;
+    material.area_moment = std::numbers::pi * std::pow(r, 4) / 4.0;
+    material.polar_moment = std::numbers::pi * std::pow(r, 4) / 2.0;
   } else {
     material.area = map.required_number("area");
     require_positive(material.area, map.loc("area"), map.path("area"), "m²");
     require_in_range(material.area, 1e-14, 1e4, map.loc("area"), map.path("area"), "m²");
     // Without I and J, those of the circle of the same area: I = A²/(4π), J = 2I.
-    material.area_moment = map.number("area_moment", material.area * material.area / (4.0 * kPi));
+    material.area_moment =
+        map.number("area_moment", material.area * material.area / (4.0 * std::numbers::pi));
     require_positive(material.area_moment, map.loc("area_moment"), map.path("area_moment"), "m⁴");
     require_in_range(material.area_moment, 1e-30, 1e8, map.loc("area_moment"),
                      map.path("area_moment"), "m⁴");
@@ -90,10 +87,11 @@ MaterialDesc read_material(YamlMap map) {
   if (map.has("yield_stress")) {
     const double sigma = map.number("yield_stress", 0.0);
     require_positive(sigma, map.loc("yield_stress"), map.path("yield_stress"), "Pa");
-    const double r = std::sqrt(material.area / kPi);
+    const double r = std::sqrt(material.area / std::numbers::pi);
     material.yield_axial_force = sigma * material.area;
     material.yield_bending_moment = 4.0 / 3.0 * r * r * r * sigma;
-    material.yield_torsion_moment = 2.0 * kPi / 3.0 * r * r * r * sigma / std::sqrt(3.0);
+    material.yield_torsion_moment =
+        2.0 * std::numbers::pi / 3.0 * r * r * r * sigma / std::sqrt(3.0);
   }
   if (map.has("yield")) {
     YamlMap yield(map.get("yield"), map.file(), map.path("yield"));

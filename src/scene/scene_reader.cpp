@@ -26,7 +26,6 @@ namespace dinam {
 namespace {
 
 constexpr int kSceneVersion = 1;
-constexpr double kPi = std::numbers::pi;
 
 GroundDesc read_ground(YamlMap map) {
   GroundDesc ground;
@@ -89,7 +88,7 @@ TimeProfile read_profile(YamlMap map) {
     profile.start = map.number("start", 0.0);
     profile.frequency = map.required_number("frequency");
     require_positive(profile.frequency, map.loc("frequency"), map.path("frequency"), "Hz");
-    profile.phase = map.number("phase", 0.0) * kPi / 180.0;
+    profile.phase = map.number("phase", 0.0) * std::numbers::pi / 180.0;
   } else {
     throw_user_error(map.loc("type"), "'{}' must be constant, step, ramp or sine; got '{}'",
                      map.path("type"), kind);
@@ -426,7 +425,7 @@ double TimeProfile::operator()(double t) const {
     case Kind::kRamp:
       return std::clamp((t - start) / (end - start), 0.0, 1.0);
     case Kind::kSine:
-      return t >= start ? std::sin(2.0 * kPi * frequency * (t - start) + phase) : 0.0;
+      return t >= start ? std::sin(2.0 * std::numbers::pi * frequency * (t - start) + phase) : 0.0;
   }
   return 1.0;
 }

@@ -9,6 +9,7 @@
 
 #include "dynamics/relaxation.hpp"
 #include "model/model.hpp"
+#include "solver/line_search.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -16,13 +17,6 @@
 namespace dinam {
 namespace {
 
-// A step is taken once the energy falls by at least this share of what the quadratic model of the
-// energy promised (any decrease that is not vanishing).
-constexpr double kSufficientDecrease = 1e-4;
-// Energies nearer than this share of the energy's magnitude are equal within rounding (a few
-// hundred ulps of the sum): near the equilibrium every step changes the energy by less, and the
-// line search judges it by the out-of-balance force instead.
-constexpr double kEnergyRounding = 1e-13;
 // Levenberg–Marquardt's added mass-proportional stiffness μ M, as a share of the mean K_ii/M_ii:
 // the least added when K is singular, and the most before the search gives up (a direction so
 // damped it moves nothing).

@@ -15,6 +15,7 @@
 #include "solver/ground_restitution.hpp"
 #include "solver/implicit_friction.hpp"
 #include "solver/implicit_object_contact.hpp"
+#include "solver/line_search.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -42,9 +43,8 @@ constexpr int kErrorSplits = 5;
 // longer, for no difference to be seen.)
 constexpr double kConvergedShare = 1e-5;
 constexpr double kConvergedAcceleration = 1e-2;  // m/s²
-// The line search's sufficient decrease (of what the quadratic model promised) and its least
-// step length before the step is split instead.
-constexpr double kSufficientDecrease = 1e-4;
+// The line search's least step length before the step is split instead (its sufficient decrease
+// is the equilibrium's: line_search.hpp).
 constexpr double kLeastLength = 1.0 / 1024;
 // The Newton step's linear solve (conjugate gradients preconditioned with the kept factorisation):
 // the share of the gradient its residual is cut to, and the iterations it may take before the
@@ -490,7 +490,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       }
       const double trial = energy();
       if (trial <= e + kSufficientDecrease * length * slope ||
-          std::abs(trial - e) <= 1e-13 * std::abs(e)) {
+          std::abs(trial - e) <= kEnergyRounding * std::abs(e)) {
         e = trial;
         accepted = true;
         break;

@@ -15,20 +15,9 @@ namespace {
 
 using test::CommandResult;
 
-CommandResult run(const std::string& command) {
-  return test::run_command(command);
-}
-
-std::string shell_quoted(const std::filesystem::path& path) {
-  std::string text = "'";  // built in steps: "'" + … trips GCC 12's false -Wrestrict (PR 105329)
-  text += path.string();
-  text += '\'';
-  return text;
-}
-
-std::string dinam(const std::string& arguments) {
-  return shell_quoted(DINAM_PROGRAM) + " " + arguments;
-}
+using test::dinam_command;
+using test::run_command;
+using test::shell_quoted;
 
 std::string file_text(const std::filesystem::path& path) {
   std::stringstream text;
@@ -46,14 +35,14 @@ const std::filesystem::path kFlag = test::data_dir() / "end_to_end_flag.yaml";
 
 TEST_F(CacheEndToEnd, FlagInThreeChunksFromOneCacheIsTheWholeRenderByteForByte) {
   const CommandResult whole =
-      run(dinam("render " + shell_quoted(kFlag) + " -o " + shell_quoted(path("whole")) +
-                " --size 96x54 --movie none -q"));
+      run_command(dinam_command("render " + shell_quoted(kFlag) + " -o " +
+                                shell_quoted(path("whole")) + " --size 96x54 --movie none -q"));
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
-  const CommandResult simulate =
-      run(dinam("simulate " + shell_quoted(kFlag) + " -o " + shell_quoted(path("cache")) + " -q"));
+  const CommandResult simulate = run_command(dinam_command(
+      "simulate " + shell_quoted(kFlag) + " -o " + shell_quoted(path("cache")) + " -q"));
   ASSERT_EQ(simulate.exit_code, 0) << simulate.output;
   for (const char* chunk : {"81-120", "1-40", "41-80"}) {  // any order, as a farm finishes them
-    const CommandResult render = run(dinam(
+    const CommandResult render = run_command(dinam_command(
         "render " + shell_quoted(kFlag) + " --cache " + shell_quoted(path("cache")) + " --frames " +
         chunk + " -o " + shell_quoted(path("chunks")) + " --size 96x54 --movie none -q"));
     ASSERT_EQ(render.exit_code, 0) << chunk << ": " << render.output;
@@ -66,19 +55,20 @@ TEST_F(CacheEndToEnd, FlagInThreeChunksFromOneCacheIsTheWholeRenderByteForByte) 
     ASSERT_EQ(file_text(path("chunks") / name), expected) << name << " differs";
   }
 
-  const CommandResult movie = run(dinam("movie " + shell_quoted(path("chunks"))));
+  const CommandResult movie = run_command(dinam_command("movie " + shell_quoted(path("chunks"))));
   ASSERT_EQ(movie.exit_code, 0) << movie.output;
-  const CommandResult probe =
-      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-          "stream=codec_name,nb_read_frames,r_frame_rate -of csv=p=0 " +
-          shell_quoted(path("chunks") / "end_to_end_flag.mp4"));
+  const CommandResult probe = run_command(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,nb_read_frames,r_frame_rate -of csv=p=0 " +
+      shell_quoted(path("chunks") / "end_to_end_flag.mp4"));
   ASSERT_EQ(probe.exit_code, 0) << probe.output;
   EXPECT_EQ(probe.output, "h264,20/1,120\n");
 }
 
 TEST_F(CacheEndToEnd, MovieNamesMissingAndExtraFramesAndMakesNothing) {
-  ASSERT_EQ(run(dinam("render " + shell_quoted(kFlag) + " -o " + shell_quoted(path("frames")) +
-                      " --size 32x18 --frames 1-120 --movie none -q"))
+  ASSERT_EQ(run_command(dinam_command("render " + shell_quoted(kFlag) + " -o " +
+                                      shell_quoted(path("frames")) +
+                                      " --size 32x18 --frames 1-120 --movie none -q"))
                 .exit_code,
             0);
   std::filesystem::remove(path("frames") / "frame_0005.png");
@@ -86,14 +76,15 @@ TEST_F(CacheEndToEnd, MovieNamesMissingAndExtraFramesAndMakesNothing) {
     std::filesystem::remove(path("frames") / name);
   }
   std::filesystem::copy_file(path("frames") / "frame_0001.png", path("frames") / "frame_0121.png");
-  const CommandResult movie = run(dinam("movie " + shell_quoted(path("frames"))));
+  const CommandResult movie = run_command(dinam_command("movie " + shell_quoted(path("frames"))));
   EXPECT_EQ(movie.exit_code, 2) << movie.output;
   EXPECT_NE(movie.output.find("missing frames: 5, 41-43"), std::string::npos) << movie.output;
   EXPECT_NE(movie.output.find("frame_0121.png"), std::string::npos) << movie.output;
   EXPECT_FALSE(std::filesystem::exists(path("frames") / "end_to_end_flag.mp4"));
   EXPECT_TRUE(test::temporary_files_in(path("frames")).empty());
 
-  const CommandResult no_folder = run(dinam("movie " + shell_quoted(path("absent"))));
+  const CommandResult no_folder =
+      run_command(dinam_command("movie " + shell_quoted(path("absent"))));
   EXPECT_EQ(no_folder.exit_code, 2);
   EXPECT_NE(no_folder.output.find("frames.json"), std::string::npos) << no_folder.output;
 }
@@ -113,16 +104,16 @@ objects:
 
 TEST_F(CacheEndToEnd, AStaleCacheIsRefusedWithTheChangedKeyAndTheCommandThatMendsIt) {
   std::ofstream(path("rope.yaml")) << kRope;
-  ASSERT_EQ(run(dinam("simulate " + shell_quoted(path("rope.yaml")) + " -o " +
-                      shell_quoted(path("cache")) + " -q"))
+  ASSERT_EQ(run_command(dinam_command("simulate " + shell_quoted(path("rope.yaml")) + " -o " +
+                                      shell_quoted(path("cache")) + " -q"))
                 .exit_code,
             0);
   std::string edited = kRope;
   edited.replace(edited.find("1.0e7"), 5, "2.0e7");
   std::ofstream(path("rope.yaml")) << edited;
   const CommandResult render =
-      run(dinam("render " + shell_quoted(path("rope.yaml")) + " --cache " +
-                shell_quoted(path("cache")) + " -o " + shell_quoted(path("out"))));
+      run_command(dinam_command("render " + shell_quoted(path("rope.yaml")) + " --cache " +
+                                shell_quoted(path("cache")) + " -o " + shell_quoted(path("out"))));
   EXPECT_EQ(render.exit_code, 2) << render.output;
   EXPECT_NE(render.output.find("objects[0].material.youngs_modulus: 1.0e7 in the cache, 2.0e7 now"),
             std::string::npos)
@@ -130,8 +121,9 @@ TEST_F(CacheEndToEnd, AStaleCacheIsRefusedWithTheChangedKeyAndTheCommandThatMend
   EXPECT_NE(render.output.find("dinam simulate"), std::string::npos) << render.output;
   EXPECT_FALSE(std::filesystem::exists(path("out")));  // nothing written
 
-  const CommandResult energy = run(dinam("render " + shell_quoted(path("rope.yaml")) + " --cache " +
-                                         shell_quoted(path("cache")) + " --energy"));
+  const CommandResult energy =
+      run_command(dinam_command("render " + shell_quoted(path("rope.yaml")) + " --cache " +
+                                shell_quoted(path("cache")) + " --energy"));
   EXPECT_EQ(energy.exit_code, 2);
   EXPECT_NE(energy.output.find("simulate --energy"), std::string::npos) << energy.output;
 }
@@ -141,24 +133,25 @@ TEST_F(CacheEndToEnd, AStaleCacheIsRefusedWithTheChangedKeyAndTheCommandThatMend
 // command that makes one.
 TEST_F(CacheEndToEnd, BlurredFramesFromTheCacheAreTheWholeRunsAndACacheWithoutInstantsIsRefused) {
   std::ofstream(path("flag.yaml")) << file_text(kFlag);
-  ASSERT_EQ(run(dinam("simulate " + shell_quoted(path("flag.yaml")) + " -o " +
-                      shell_quoted(path("plain_cache")) + " -q"))
+  ASSERT_EQ(run_command(dinam_command("simulate " + shell_quoted(path("flag.yaml")) + " -o " +
+                                      shell_quoted(path("plain_cache")) + " -q"))
                 .exit_code,
             0);
   std::string blurred = file_text(kFlag);
   blurred += "image: {motion_blur: {shutter: 0.5, samples: 4}}\n";
   std::ofstream(path("flag.yaml")) << blurred;
   const std::string size = " --size 96x54 --movie none -q";
-  const CommandResult whole = run(dinam("render " + shell_quoted(path("flag.yaml")) + " -o " +
-                                        shell_quoted(path("whole")) + " --frames 30-31" + size));
+  const CommandResult whole =
+      run_command(dinam_command("render " + shell_quoted(path("flag.yaml")) + " -o " +
+                                shell_quoted(path("whole")) + " --frames 30-31" + size));
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
-  ASSERT_EQ(run(dinam("simulate " + shell_quoted(path("flag.yaml")) + " -o " +
-                      shell_quoted(path("cache")) + " -q"))
+  ASSERT_EQ(run_command(dinam_command("simulate " + shell_quoted(path("flag.yaml")) + " -o " +
+                                      shell_quoted(path("cache")) + " -q"))
                 .exit_code,
             0);
-  const CommandResult chunk = run(dinam("render " + shell_quoted(path("flag.yaml")) + " --cache " +
-                                        shell_quoted(path("cache")) + " -o " +
-                                        shell_quoted(path("chunk")) + " --frames 30-31" + size));
+  const CommandResult chunk = run_command(dinam_command(
+      "render " + shell_quoted(path("flag.yaml")) + " --cache " + shell_quoted(path("cache")) +
+      " -o " + shell_quoted(path("chunk")) + " --frames 30-31" + size));
   ASSERT_EQ(chunk.exit_code, 0) << chunk.output;
   for (const char* name : {"frame_0030.png", "frame_0031.png"}) {
     const std::string expected = file_text(path("whole") / name);
@@ -166,9 +159,9 @@ TEST_F(CacheEndToEnd, BlurredFramesFromTheCacheAreTheWholeRunsAndACacheWithoutIn
     EXPECT_EQ(file_text(path("chunk") / name), expected) << name << " differs";
   }
 
-  const CommandResult refused =
-      run(dinam("render " + shell_quoted(path("flag.yaml")) + " --cache " +
-                shell_quoted(path("plain_cache")) + " -o " + shell_quoted(path("refused")) + size));
+  const CommandResult refused = run_command(dinam_command(
+      "render " + shell_quoted(path("flag.yaml")) + " --cache " +
+      shell_quoted(path("plain_cache")) + " -o " + shell_quoted(path("refused")) + size));
   EXPECT_EQ(refused.exit_code, 2) << refused.output;
   EXPECT_NE(refused.output.find("holds no instants between frames"), std::string::npos)
       << refused.output;
@@ -179,8 +172,8 @@ TEST_F(CacheEndToEnd, BlurredFramesFromTheCacheAreTheWholeRunsAndACacheWithoutIn
 TEST_F(CacheEndToEnd, EnergyGoesIntoTheManifestAndBesideIt) {
   std::ofstream(path("rope.yaml")) << kRope;
   const CommandResult simulate =
-      run(dinam("simulate " + shell_quoted(path("rope.yaml")) + " -o " +
-                shell_quoted(path("cache")) + " --energy --format mdd -q"));
+      run_command(dinam_command("simulate " + shell_quoted(path("rope.yaml")) + " -o " +
+                                shell_quoted(path("cache")) + " --energy --format mdd -q"));
   ASSERT_EQ(simulate.exit_code, 0) << simulate.output;
   const std::string manifest = file_text(path("cache") / "manifest.json");
   EXPECT_NE(manifest.find("\"total_J\""), std::string::npos);
@@ -193,7 +186,7 @@ TEST_F(CacheEndToEnd, EnergyGoesIntoTheManifestAndBesideIt) {
   }
   EXPECT_EQ(lines, 1 + 5);  // the header and one row per frame
   // An MDD-only cache draws as well.
-  const CommandResult render = run(dinam(
+  const CommandResult render = run_command(dinam_command(
       "render " + shell_quoted(path("rope.yaml")) + " --cache " + shell_quoted(path("cache")) +
       " -o " + shell_quoted(path("out")) + " --size 32x18 --movie none -q"));
   EXPECT_EQ(render.exit_code, 0) << render.output;

@@ -19,13 +19,8 @@ namespace {
 
 using test::CommandResult;
 
-CommandResult run(const std::string& command) {
-  return test::run_command(command);
-}
-
-std::string dinam(const std::string& arguments) {
-  return std::string("'") + DINAM_PROGRAM + "' " + arguments;
-}
+using test::dinam_command;
+using test::run_command;
 
 // A green rope hanging from a pinned end in front of the camera: 3 frames at 10 fps.
 const char* const kTinyScene = R"(version: 1
@@ -61,8 +56,8 @@ bool is_green(const std::uint8_t* p) {
 
 TEST_F(EndToEnd, TinySceneGivesThreeFramesOfTheRequestedSizeAndAMovie) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  const CommandResult result =
-      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "' --size 96x64"));
+  const CommandResult result = run_command(
+      dinam_command("render '" + scene.string() + "' -o '" + out().string() + "' --size 96x64"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   for (const char* name : {"frame_0001.png", "frame_0002.png", "frame_0003.png"}) {
     const Image image = read_png(out() / name);  // throws if it is not a valid PNG
@@ -82,18 +77,19 @@ TEST_F(EndToEnd, TinySceneGivesThreeFramesOfTheRequestedSizeAndAMovie) {
   EXPECT_TRUE(test::temporary_files_in(out()).empty());
 
   // ffprobe comes with ffmpeg: the movie holds the 3 frames as H.264 in yuv420p.
-  const CommandResult probe =
-      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-          "stream=codec_name,pix_fmt,nb_read_frames -of csv=p=0 '" +
-          (out() / "tiny.mp4").string() + "'");
+  const CommandResult probe = run_command(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,pix_fmt,nb_read_frames -of csv=p=0 '" +
+      (out() / "tiny.mp4").string() + "'");
   ASSERT_EQ(probe.exit_code, 0) << probe.output;
   EXPECT_EQ(probe.output, "h264,yuv420p,3\n");
 }
 
 TEST_F(EndToEnd, FrameRangeWritesOnlyThoseFrames) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
-                                         "' --size 64x48 --frames 2-3 --movie none --quiet"));
+  const CommandResult result =
+      run_command(dinam_command("render '" + scene.string() + "' -o '" + out().string() +
+                                "' --size 64x48 --frames 2-3 --movie none --quiet"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_EQ(result.output, "");  // --quiet
   EXPECT_FALSE(std::filesystem::exists(out() / "frame_0001.png"));
@@ -106,14 +102,15 @@ TEST_F(EndToEnd, FrameRangeWritesOnlyThoseFrames) {
 // whole movie's name, which a player or an editor would take for the whole.
 TEST_F(EndToEnd, AFrameRangesMovieIsNamedForTheRange) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
-                                         "' --size 64x48 --frames 2-3 --quiet"));
+  const CommandResult result =
+      run_command(dinam_command("render '" + scene.string() + "' -o '" + out().string() +
+                                "' --size 64x48 --frames 2-3 --quiet"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
-  const CommandResult probe =
-      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-          "stream=nb_read_frames -of csv=p=0 '" +
-          (out() / "tiny_frames_2-3.mp4").string() + "'");
+  const CommandResult probe = run_command(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=nb_read_frames -of csv=p=0 '" +
+      (out() / "tiny_frames_2-3.mp4").string() + "'");
   ASSERT_EQ(probe.exit_code, 0) << probe.output;
   EXPECT_EQ(probe.output, "2\n");
 }
@@ -124,8 +121,8 @@ TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
   std::string text = kTinyScene;
   text.replace(text.find("duration: 0.3"), 13, "duration: 4.0");  // 40 frames: every 2nd, 20
   const auto scene = write_scene("tiny.yaml", text);
-  const CommandResult preview =
-      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "' --preview"));
+  const CommandResult preview = run_command(
+      dinam_command("render '" + scene.string() + "' -o '" + out().string() + "' --preview"));
   ASSERT_EQ(preview.exit_code, 0) << preview.output;
   EXPECT_NE(preview.output.find("preview of 20 frames (every 2nd frame)"), std::string::npos)
       << preview.output;
@@ -133,10 +130,10 @@ TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
   // 6 columns and 4 rows of 320 × 240 pictures, 2 pixels apart and around.
   EXPECT_EQ(sheet.width, 6 * 320 + 7 * 2);
   EXPECT_EQ(sheet.height, 4 * 240 + 5 * 2);
-  const CommandResult probe =
-      run("ffprobe -v error -count_frames -show_entries stream=nb_read_frames,width,height -of "
-          "csv=p=0 '" +
-          (out() / "tiny_preview.gif").string() + "'");
+  const CommandResult probe = run_command(
+      "ffprobe -v error -count_frames -show_entries stream=nb_read_frames,width,height -of "
+      "csv=p=0 '" +
+      (out() / "tiny_preview.gif").string() + "'");
   EXPECT_EQ(probe.output, "320,240,20\n");
   EXPECT_FALSE(std::filesystem::exists(out() / "frame_0001.png"));
   EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
@@ -147,8 +144,8 @@ TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
                 "image: {width: 320, height: 240, quality: draft}");
   const auto draft_scene = write_scene("draft.yaml", draft);
   const CommandResult full =
-      run(dinam("render '" + draft_scene.string() + "' -o '" + (out() / "full").string() +
-                "' --frames 15 --movie none -q"));
+      run_command(dinam_command("render '" + draft_scene.string() + "' -o '" +
+                                (out() / "full").string() + "' --frames 15 --movie none -q"));
   ASSERT_EQ(full.exit_code, 0) << full.output;
   const Image frame = read_png(out() / "full" / "frame_0015.png");
   int differing = 0;
@@ -165,8 +162,9 @@ TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
 
 TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  const CommandResult result = run(dinam("render '" + scene.string() + "' -o '" + out().string() +
-                                         "' --size 64x48 --no-video --energy -q"));
+  const CommandResult result =
+      run_command(dinam_command("render '" + scene.string() + "' -o '" + out().string() +
+                                "' --size 64x48 --no-video --energy -q"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::ifstream csv(out() / "energy.csv");
   std::string header;
@@ -207,9 +205,9 @@ TEST_F(EndToEnd, EnergyCsvHasARowPerFrameAndABalanceThatHolds) {
 TEST_F(EndToEnd, SameSceneRendersToByteIdenticalFramesTwice) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
   for (const char* folder : {"first", "second"}) {
-    const CommandResult result =
-        run(dinam("render '" + scene.string() + "' -o '" + (folder_.path() / folder).string() +
-                  "' --size 96x64 --movie gif -q"));
+    const CommandResult result = run_command(dinam_command("render '" + scene.string() + "' -o '" +
+                                                           (folder_.path() / folder).string() +
+                                                           "' --size 96x64 --movie gif -q"));
     ASSERT_EQ(result.exit_code, 0) << result.output;
   }
   auto bytes = [](const std::filesystem::path& path) {
@@ -222,10 +220,10 @@ TEST_F(EndToEnd, SameSceneRendersToByteIdenticalFramesTwice) {
     EXPECT_EQ(first, bytes(folder_.path() / "second" / name)) << name;
   }
   // The GIF is a real three-frame GIF.
-  const CommandResult probe =
-      run("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-          "stream=codec_name,nb_read_frames -of csv=p=0 '" +
-          (folder_.path() / "first" / "tiny.gif").string() + "'");
+  const CommandResult probe = run_command(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=codec_name,nb_read_frames -of csv=p=0 '" +
+      (folder_.path() / "first" / "tiny.gif").string() + "'");
   EXPECT_EQ(probe.output, "gif,3\n");
 }
 
@@ -235,21 +233,21 @@ TEST_F(EndToEnd, SnapshotFailsWithoutGoldenUpdatesThenCatchesAChange) {
   const std::string snapshot = "snapshot '" + scene.string() + "' --golden '" + golden +
                                "' --frames 1,3 --size 160x90 -o '" + out().string() + "'";
   // No golden yet: it fails and says how to make one.
-  CommandResult result = run(dinam(snapshot));
+  CommandResult result = run_command(dinam_command(snapshot));
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.output.find("--update"), std::string::npos) << result.output;
   // --update writes them; then the same scene matches.
-  result = run(dinam(snapshot + " --update"));
+  result = run_command(dinam_command(snapshot + " --update"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_TRUE(std::filesystem::exists(folder_.path() / "golden" / "tiny_0001.png"));
   EXPECT_TRUE(std::filesystem::exists(folder_.path() / "golden" / "tiny_0003.png"));
-  result = run(dinam(snapshot));
+  result = run_command(dinam_command(snapshot));
   EXPECT_EQ(result.exit_code, 0) << result.output;
   // A visibly changed scene (the rope's colour) fails, with the three images written.
   std::string changed = kTinyScene;
   changed.replace(changed.find("color: [0.1, 0.9, 0.1]"), 22, "color: [0.9, 0.1, 0.9]");
   write_scene("tiny.yaml", changed);
-  result = run(dinam(snapshot));
+  result = run_command(dinam_command(snapshot));
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_NE(result.output.find("DIFFERS"), std::string::npos) << result.output;
   for (const char* name :
@@ -264,7 +262,7 @@ TEST_F(EndToEnd, BadSceneExitsTwoNamingFileLineAndKeyAndWritesNothing) {
   text.replace(text.find("density: 1000"), 13, "density: -1");
   const auto scene = write_scene("bad.yaml", text);
   const CommandResult result =
-      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "'"));
+      run_command(dinam_command("render '" + scene.string() + "' -o '" + out().string() + "'"));
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.output.find(scene.string() + ":10:"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("density"), std::string::npos) << result.output;
@@ -276,7 +274,7 @@ TEST_F(EndToEnd, UnstableStepExitsTwoWithBothNumbers) {
   text.replace(text.find("fps: 10"), 7, "fps: 10\ntimestep: 0.01");
   const auto scene = write_scene("unstable.yaml", text);
   const CommandResult result =
-      run(dinam("render '" + scene.string() + "' -o '" + out().string() + "'"));
+      run_command(dinam_command("render '" + scene.string() + "' -o '" + out().string() + "'"));
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.output.find("unstable.yaml:5:"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("0.01 s is above"), std::string::npos) << result.output;
@@ -286,9 +284,9 @@ TEST_F(EndToEnd, UnstableStepExitsTwoWithBothNumbers) {
 
 TEST_F(EndToEnd, MissingFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  const CommandResult result =
-      run("PATH='" + folder_.path().string() + "' " +
-          dinam("render '" + scene.string() + "' -o '" + out().string() + "' --size 64x48"));
+  const CommandResult result = run_command(
+      "PATH='" + folder_.path().string() + "' " +
+      dinam_command("render '" + scene.string() + "' -o '" + out().string() + "' --size 64x48"));
   EXPECT_EQ(result.exit_code, 1) << result.output;
   EXPECT_NE(result.output.find("apt-get install ffmpeg"), std::string::npos) << result.output;
   EXPECT_TRUE(std::filesystem::exists(out() / "frame_0003.png"));
@@ -296,21 +294,24 @@ TEST_F(EndToEnd, MissingFfmpegKeepsTheFramesAndSaysHowToInstallIt) {
 }
 
 TEST_F(EndToEnd, UsageErrorsExitTwoAndHelpExitsZero) {
-  EXPECT_EQ(run(dinam("--help")).exit_code, 0);
-  EXPECT_EQ(run(dinam("render --help")).exit_code, 0);
-  EXPECT_EQ(run(dinam("info --help")).exit_code, 0);
-  EXPECT_EQ(run(dinam("")).exit_code, 2);
-  EXPECT_EQ(run(dinam("render")).exit_code, 2);
-  EXPECT_EQ(run(dinam("render x.yaml --bogus")).exit_code, 2);
+  EXPECT_EQ(run_command(dinam_command("--help")).exit_code, 0);
+  EXPECT_EQ(run_command(dinam_command("render --help")).exit_code, 0);
+  EXPECT_EQ(run_command(dinam_command("info --help")).exit_code, 0);
+  EXPECT_EQ(run_command(dinam_command("")).exit_code, 2);
+  EXPECT_EQ(run_command(dinam_command("render")).exit_code, 2);
+  EXPECT_EQ(run_command(dinam_command("render x.yaml --bogus")).exit_code, 2);
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  EXPECT_EQ(run(dinam("render '" + scene.string() + "' --frames 2-9")).exit_code, 2);
-  EXPECT_EQ(run(dinam("render '" + scene.string() + "' --size 10")).exit_code, 2);
-  EXPECT_EQ(run(dinam("info '" + (folder_.path() / "missing.yaml").string() + "'")).exit_code, 2);
+  EXPECT_EQ(run_command(dinam_command("render '" + scene.string() + "' --frames 2-9")).exit_code,
+            2);
+  EXPECT_EQ(run_command(dinam_command("render '" + scene.string() + "' --size 10")).exit_code, 2);
+  EXPECT_EQ(run_command(dinam_command("info '" + (folder_.path() / "missing.yaml").string() + "'"))
+                .exit_code,
+            2);
 }
 
 TEST_F(EndToEnd, InfoPrintsTheModelSummary) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  const CommandResult result = run(dinam("info '" + scene.string() + "'"));
+  const CommandResult result = run_command(dinam_command("info '" + scene.string() + "'"));
   ASSERT_EQ(result.exit_code, 0) << result.output;
   for (const char* line :
        {"nodes            9 (1 pinned)", "bars             8", "axial 8, bending 7, torsion 0",
@@ -325,11 +326,11 @@ TEST_F(EndToEnd, InfoPrintsTheModelSummary) {
 // offers for 0.1 % is smaller by √(0.1 % / the expected share), since the error grows as Δt².
 TEST_F(EndToEnd, InfoSaysWhatEnergyBalanceTheStepGives) {
   const auto scene = write_scene("tiny.yaml", kTinyScene);
-  const CommandResult text = run(dinam("info --energy '" + scene.string() + "'"));
+  const CommandResult text = run_command(dinam_command("info --energy '" + scene.string() + "'"));
   ASSERT_EQ(text.exit_code, 0) << text.output;
   EXPECT_NE(text.output.find("energy balance   ω_max·Δt = "), std::string::npos) << text.output;
   EXPECT_NE(text.output.find("brings that to about 0.1 %"), std::string::npos) << text.output;
-  const CommandResult json = run(dinam("info --json '" + scene.string() + "'"));
+  const CommandResult json = run_command(dinam_command("info --json '" + scene.string() + "'"));
   ASSERT_EQ(json.exit_code, 0) << json.output;
   const auto number = [&](const std::string& key) {
     const std::size_t at = json.output.find("\"" + key + "\": ");

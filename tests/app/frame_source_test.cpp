@@ -67,12 +67,12 @@ Pipeline run_scene(const std::string& text) {
   return p;
 }
 
-Pipeline run(const std::string& camera) {
+Pipeline run_pipeline(const std::string& camera) {
   return run_scene(scene_text(camera));
 }
 
 TEST(FrameSource, DrawsEachChosenFrameOnceWithItsPositions) {
-  const Pipeline p = run("camera: auto");
+  const Pipeline p = run_pipeline("camera: auto");
   const DrawList list = make_draw_list(p.scene, p.model, motion_bounds(p.frames.positions));
   RecordingRenderer renderer;
   std::vector<int> written;
@@ -88,7 +88,7 @@ TEST(FrameSource, DrawsEachChosenFrameOnceWithItsPositions) {
 // bar's triangles (it is an edge of two) are collapsed, and the list's revision tells the
 // renderer to upload its surfaces again.
 TEST(FrameSource, TornBarsLeaveTheDrawingFromTheirFrame) {
-  Pipeline p = run("camera: auto");
+  Pipeline p = run_pipeline("camera: auto");
   const DrawList list = make_draw_list(p.scene, p.model, motion_bounds(p.frames.positions));
   Index torn = -1;  // a cloth bar inside the grid: an edge of two faces
   for (Index b = 0; b < p.model.bar_count() && torn < 0; ++b) {
@@ -120,7 +120,7 @@ TEST(FrameSource, TornBarsLeaveTheDrawingFromTheirFrame) {
 }
 
 TEST(FrameSource, AutoCameraKeepsStillAndSeesEveryPointOfEveryFrame) {
-  const Pipeline p = run("camera: auto");
+  const Pipeline p = run_pipeline("camera: auto");
   for (const RenderCamera& camera : p.cameras.frames) {
     EXPECT_EQ(camera.position, p.cameras.frames.front().position);  // the view does not jump
   }
@@ -189,7 +189,7 @@ TEST(FrameSource, AutoCameraFramesADroppedModelTightlyIgnoringAFarFragment) {
 }
 
 TEST(FrameSource, FollowCameraKeepsItsOffsetFromTheObject) {
-  const Pipeline p = run("camera: {follow: cloth, offset: [2, -3, 1]}");
+  const Pipeline p = run_pipeline("camera: {follow: cloth, offset: [2, -3, 1]}");
   for (std::size_t k = 0; k < p.cameras.frames.size(); ++k) {
     Vec3f centroid = Vec3f::Zero();
     const ModelObject& cloth = p.model.objects[1];
@@ -232,7 +232,7 @@ objects:
 }
 
 TEST(DrawListFromModel, SurfacesReplaceBarsForClothAndColoursFollowObjects) {
-  const Pipeline p = run("camera: auto");
+  const Pipeline p = run_pipeline("camera: auto");
   const DrawList list = make_draw_list(p.scene, p.model, motion_bounds(p.frames.positions));
   // The pole is drawn as wires (2 bars); the cloth (12 quads) as one surface of 24 triangles.
   EXPECT_EQ(list.segment_radius.size(), 2u);

@@ -23,12 +23,7 @@ extern char** environ;
 namespace dinam {
 namespace {
 
-std::string shell_quoted(const std::filesystem::path& path) {
-  std::string text = "'";
-  text += path.string();
-  text += '\'';
-  return text;
-}
+using test::shell_quoted;
 
 bool any_entry(const std::filesystem::path& folder,
                const std::function<bool(const std::string&)>& matches) {

@@ -18,11 +18,11 @@
 namespace dinam {
 namespace {
 
-constexpr double kSide = 0.4;       // m, the seat's side and the legs' height
-constexpr int kSegments = 4;        // bars per member
-constexpr double kRadius = 0.003;   // m, of the wire
-constexpr double kDensity = 7850;   // kg/m³
-constexpr double kYoungs = 2.0e11;  // Pa
+constexpr double kSide = 0.4;           // m, the seat's side and the legs' height
+constexpr int kSegments = 4;            // bars per member
+constexpr double kRadius = 0.003;       // m, of the wire
+constexpr double kSteelDensity = 7850;  // kg/m³
+constexpr double kYoungs = 2.0e11;      // Pa
 
 // Straight members cut into kSegments bars each and welded where they meet, as OBJ lines written
 // to six decimals. Every member is parallel to an axis unless `turn` turns the table: then its
@@ -70,7 +70,7 @@ Eigen::VectorXd squared_frequencies_of_table(const std::string& object_keys,
       "version: 1\nduration: 1\ngravity: [0, 0, 0]\nground: {contact: false}\nobjects:\n"
       "  - mesh: {file: table.obj}\n"
       "    material: {density: " +
-      std::to_string(kDensity) + ", youngs_modulus: " + std::to_string(kYoungs) +
+      std::to_string(kSteelDensity) + ", youngs_modulus: " + std::to_string(kYoungs) +
       ", radius: " + std::to_string(kRadius) + "}\n" + object_keys;
   const Model model = build_model(read_scene_text(scene, folder.path() / "table.yaml"));
   const test::FreeDofs dofs = test::free_dofs(model);
@@ -91,7 +91,8 @@ int zero_modes(const Eigen::VectorXd& squared) {
 double cantilever_leg_omega() {
   const double area = M_PI * kRadius * kRadius;
   const double moment = area * kRadius * kRadius / 4.0;
-  return 1.8751 * 1.8751 * std::sqrt(kYoungs * moment / (kDensity * area * std::pow(kSide, 4)));
+  return 1.8751 * 1.8751 *
+         std::sqrt(kYoungs * moment / (kSteelDensity * area * std::pow(kSide, 4)));
 }
 
 class TableFrame : public ::testing::TestWithParam<std::string> {};

@@ -8,16 +8,13 @@
 
 #include "render/camera.hpp"
 #include "render/osmesa_renderer.hpp"
+#include "render_test_support.hpp"
 
 namespace dinam {
 namespace {
 
 constexpr int kWidth = 640;
 constexpr int kHeight = 360;
-
-double brightness(const std::uint8_t* p) {
-  return (p[0] + p[1] + p[2]) / 3.0;
-}
 
 // A camera 3 m above the ground looking straight down, +y up in the picture: 1 m is
 // kHeight / (2 · 3 tan 20°) pixels.
@@ -74,7 +71,7 @@ double edge_width(float height, float sun_degrees) {
   for (int x = first_column; x <= last_column; ++x) {
     double sum = 0.0;
     for (int y = kHeight / 2 - 50; y < kHeight / 2 + 50; ++y) {
-      sum += brightness(image.pixel(x, y));
+      sum += test::brightness(image.pixel(x, y));
     }
     profile.push_back(sum / 100.0);
   }
@@ -134,7 +131,7 @@ TEST(Look, AmbientOcclusionDarkensTheGroundBesideABarLyingOnIt) {
     Image image;
     renderer.render(list, positions, camera, image);
     const Eigen::Vector2f p = pixel_from_world(camera, kWidth, kHeight, Vec3f(0, y, 0));
-    return brightness(image.pixel(static_cast<int>(p.x()), static_cast<int>(p.y())));
+    return test::brightness(image.pixel(static_cast<int>(p.x()), static_cast<int>(p.y())));
   };
   EXPECT_LT(ground_at(true, 0.07f), 0.9 * ground_at(false, 0.07f)) << "beside the bar";
   EXPECT_NEAR(ground_at(true, 0.6f), ground_at(false, 0.6f), 2.0) << "far from it";

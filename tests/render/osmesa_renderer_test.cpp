@@ -12,15 +12,13 @@
 
 #include "core/error.hpp"
 #include "render/camera.hpp"
+#include "render_test_support.hpp"
 
 namespace dinam {
 namespace {
 
 bool is_red(const std::uint8_t* p) {
   return p[0] > 120 && p[1] < 90 && p[2] < 90;
-}
-double brightness(const std::uint8_t* p) {
-  return (p[0] + p[1] + p[2]) / 3.0;
 }
 
 // One red bar along x, 2 m long, radius 0.05 m, 4 m in front of the camera, no ground.
@@ -121,8 +119,8 @@ TEST(OsmesaRenderer, BarNarrowerThanAPixelShowsAlongItsWholeLength) {
     EXPECT_EQ(marked, columns) << "shadow map " << shadow_resolution;
     // Two rows away, nothing changed.
     for (const int y : {row - 2, row + 2}) {
-      EXPECT_EQ(brightness(with_bar.pixel(width / 2, y)),
-                brightness(without_bar.pixel(width / 2, y)));
+      EXPECT_EQ(test::brightness(with_bar.pixel(width / 2, y)),
+                test::brightness(without_bar.pixel(width / 2, y)));
     }
   }
 }
@@ -312,7 +310,7 @@ TEST(OsmesaRenderer, BarCastsAShadowOnTheGround) {
     OsmesaRenderer renderer({width, height, 1, shadows ? 1024 : 0, {}});
     Image image;
     renderer.render(list, positions, camera, image);
-    return brightness(image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y())));
+    return test::brightness(image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y())));
   };
   EXPECT_LT(ground_brightness(true, under), 0.8 * ground_brightness(false, under));
   EXPECT_NEAR(ground_brightness(true, beside), ground_brightness(false, beside), 2.0);
@@ -340,7 +338,7 @@ TEST(OsmesaRenderer, ShadowFallsAwayFromTheLight) {
     Image image;
     renderer.render(list, positions, camera, image);
     const Eigen::Vector2f at = pixel_from_world(camera, width, height, world);
-    return brightness(image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y())));
+    return test::brightness(image.pixel(static_cast<int>(at.x()), static_cast<int>(at.y())));
   };
   const Vec3f away(-0.5f, 0, 0);
   const Vec3f towards(0.5f, 0, 0);

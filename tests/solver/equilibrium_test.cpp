@@ -23,10 +23,6 @@ namespace {
 
 constexpr double kGravity = 9.81;
 
-ForceSwitches quiet() {
-  return test::static_forces();
-}
-
 State settled(const Model& model, double dt = 1e-4) {
   State state = make_state(model, false);
   settle_under_gravity(model, dt, {}, state);
@@ -56,7 +52,8 @@ objects:
     pinned: {indices: [0]}
 )"));
   State state = make_state(model, false);
-  const EquilibriumOutcome outcome = find_equilibrium(model, quiet(), {1e-12, 100, false}, state);
+  const EquilibriumOutcome outcome =
+      find_equilibrium(model, test::static_forces(), {1e-12, 100, false}, state);
   ASSERT_TRUE(outcome.converged) << outcome.failure;
   const double mass = 1000.0 * 1e-4 * 1.0 / 2.0;
   const double stiffness = 1.0e5 * 1e-4 / 1.0;

@@ -21,8 +21,6 @@
 namespace dinam {
 namespace {
 
-constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
-
 // The first mode's coordinates u = q − i q̇/ω, q = φᵀ M (x − x0) and q̇ = φᵀ M v, φ mass-normalised.
 std::complex<double> modal(const Model& model, const NaturalMode& mode, double omega,
                            const State& state) {
@@ -53,7 +51,7 @@ Vibration vibrate(const std::string& integrator, int steps_per_period, int perio
   if (omega_out != nullptr) {
     *omega_out = omega;
   }
-  const double h = kTwoPi / (omega * steps_per_period);
+  const double h = test::kTwoPi / (omega * steps_per_period);
   // Central differences' bound is 7.7 µs here: these steps are 18 (64 a period) to 290 (8 a
   // period) times longer.
   EXPECT_GT(h, 15.0 * critical_timestep(model));
@@ -97,7 +95,7 @@ TEST(ImplicitDamping, TheCantileverLosesPerPeriodWhatEachSchemesClosedFormSays) 
   double euler_period_error_before = 0.0;
   double bdf2_period_error_before = 0.0;
   for (const int steps : {8, 16, 32, 64}) {
-    const double omega_h = kTwoPi / steps;
+    const double omega_h = test::kTwoPi / steps;
     const Vibration euler = vibrate("implicit", steps, 2, &omega);
     const Vibration bdf2 = vibrate("implicit_bdf2", steps, 3);
     const std::complex<double> re = backward_euler_root(omega_h);

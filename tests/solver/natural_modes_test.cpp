@@ -18,22 +18,16 @@
 namespace dinam {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-ForceSwitches quiet() {
-  return test::static_forces();
-}
-
 // A cantilever of 1 m in `segments` bars, clamped at x = 0, without gravity: E I = 8000 N·m²,
 // ρ A = 0.785 kg/m. Modes come in pairs, bending in y and in z alike.
 std::vector<NaturalMode> cantilever_modes(int segments, int count) {
   const Model model = test::clamped_cantilever(segments, "gravity: [0, 0, 0]");
   const State state = make_state(model, false);  // at rest, unloaded: an equilibrium
-  return natural_modes(model, state, quiet(), count);
+  return natural_modes(model, state, test::static_forces(), count);
 }
 
 TEST(NaturalModes, CantileverBendsAtEulerBernoullisFrequencies) {
-  const double scale = std::sqrt(8000.0 / 0.785) / kTwoPi;  // Hz per (βL)²
+  const double scale = std::sqrt(8000.0 / 0.785) / test::kTwoPi;  // Hz per (βL)²
   const std::array<double, 3> beta_l = {1.875104, 4.694091, 7.854757};
   std::array<double, 3> coarse_error{};
   for (const int segments : {20, 80}) {
@@ -86,12 +80,13 @@ objects:
   const double tension = 1.0e6 * 1.0e-6 * kStretch;
   const double mass = 1000.0 * 1.0e-6 * a0;
   ASSERT_NEAR(model.node_mass[1], mass, 1e-15);
-  const std::vector<NaturalMode> modes = natural_modes(model, state, quiet(), 3 * kBeads);
+  const std::vector<NaturalMode> modes =
+      natural_modes(model, state, test::static_forces(), 3 * kBeads);
   ASSERT_EQ(modes.size(), 3u * kBeads);
   for (int k = 1; k <= kBeads; ++k) {
     const double sine = std::sin(k * std::numbers::pi / (2.0 * (kBeads + 1)));
-    const double across = 2.0 * std::sqrt(tension / (mass * a)) * sine / kTwoPi;
-    const double along = 2.0 * std::sqrt(1.0e6 * 1.0e-6 / (a0 * mass)) * sine / kTwoPi;
+    const double across = 2.0 * std::sqrt(tension / (mass * a)) * sine / test::kTwoPi;
+    const double along = 2.0 * std::sqrt(1.0e6 * 1.0e-6 / (a0 * mass)) * sine / test::kTwoPi;
     // Across: each a pair (y and z), the lowest 2N modes; along: the rest, far above.
     EXPECT_NEAR(modes[2 * (k - 1)].frequency, across, 1e-9 * across) << k;
     EXPECT_NEAR(modes[2 * (k - 1) + 1].frequency, across, 1e-9 * across) << k;
@@ -120,10 +115,10 @@ objects:
   ASSERT_TRUE(state.settled.by_newton);
   const double length = (state.x[1] - state.x[0]).norm();
   const double mass = model.node_mass[1];
-  const std::vector<NaturalMode> modes = natural_modes(model, state, quiet(), 3);
+  const std::vector<NaturalMode> modes = natural_modes(model, state, test::static_forces(), 3);
   ASSERT_EQ(modes.size(), 3u);
-  const double swing = std::sqrt(9.81 / length) / kTwoPi;
-  const double bounce = std::sqrt(1.0e6 * 1.0e-4 / 0.5 / mass) / kTwoPi;
+  const double swing = std::sqrt(9.81 / length) / test::kTwoPi;
+  const double bounce = std::sqrt(1.0e6 * 1.0e-4 / 0.5 / mass) / test::kTwoPi;
   EXPECT_NEAR(modes[0].frequency, swing, 1e-9 * swing);
   EXPECT_NEAR(modes[1].frequency, swing, 1e-9 * swing);
   EXPECT_NEAR(modes[2].frequency, bounce, 1e-9 * bounce);
@@ -160,10 +155,10 @@ objects:
   const State state = make_state(model, false);
   const FreeDofs dofs = free_dofs(model);
   ASSERT_GT(dofs.count, 600);
-  const std::vector<NaturalMode> modes = natural_modes(model, state, quiet(), 8);
+  const std::vector<NaturalMode> modes = natural_modes(model, state, test::static_forces(), 8);
   StiffnessAssembly assembly;
-  const Eigen::MatrixXd k =
-      Eigen::MatrixXd(assembly.assemble(model, state, quiet(), dofs, Definiteness::kExact));
+  const Eigen::MatrixXd k = Eigen::MatrixXd(
+      assembly.assemble(model, state, test::static_forces(), dofs, Definiteness::kExact));
   const Eigen::VectorXd root = free_masses(model, dofs).cwiseSqrt().cwiseInverse();
   const Eigen::VectorXd dense =
       Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(root.asDiagonal() * k * root.asDiagonal(),

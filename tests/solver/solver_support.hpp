@@ -2,6 +2,7 @@
 // What the solver's tests share: the forces of a static problem, and a clamped steel cantilever.
 #include <fmt/format.h>
 
+#include <numbers>
 #include <string>
 
 #include "dynamics/integrator.hpp"
@@ -9,6 +10,8 @@
 #include "test_support.hpp"
 
 namespace dinam::test {
+
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // Gravity, the springs and the ground: what a settle leaves on.
 inline ForceSwitches static_forces() {
