@@ -13,6 +13,7 @@
 #include "dynamics/tearing.hpp"
 #include "model/model.hpp"
 #include "solver/ground_restitution.hpp"
+#include "solver/implicit_dampers.hpp"
 #include "solver/implicit_friction.hpp"
 #include "solver/implicit_object_contact.hpp"
 #include "solver/line_search.hpp"
@@ -250,35 +251,11 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   }
   place_driven_nodes(model, t_next, state);
 
-  // The dampers' Hessian, with the bars' directions at x_n: (c/h) e eᵀ on each bar's blocks, and
-  // α m / h on the diagonal.
+  // The dampers' Hessian, with the bars' directions at x_n (implicit_dampers.hpp), and α m / h
+  // on the diagonal.
   const bool global = model.global_damping > 0.0;
   w.damper_triplets.clear();
-  if (model.any_bar_damping) {
-    for (Index b = 0; b < model.bar_count(); ++b) {
-      const double c = model.bar_damping[b];
-      if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
-        continue;
-      }
-      const Index a = model.bar_nodes[2 * b];
-      const Index bb = model.bar_nodes[2 * b + 1];
-      const Vec3 e = (w.x_start[bb] - w.x_start[a]).normalized();
-      const Eigen::Matrix3d block = (c / hs) * e * e.transpose();
-      for (const auto& [p, q, sign] : {std::tuple{a, a, 1.0}, std::tuple{bb, bb, 1.0},
-                                       std::tuple{a, bb, -1.0}, std::tuple{bb, a, -1.0}}) {
-        const Index dp = dofs.first_dof[p];
-        const Index dq = dofs.first_dof[q];
-        if (dp < 0 || dq < 0) {
-          continue;
-        }
-        for (int r = 0; r < 3; ++r) {
-          for (int s = 0; s < 3; ++s) {
-            w.damper_triplets.emplace_back(dp + r, dq + s, sign * block(r, s));
-          }
-        }
-      }
-    }
-  }
+  add_damper_hessian(model, state, dofs, w.x_start, hs, w.damper_triplets);
   SparseMatrix damping(dofs.count, dofs.count);
   damping.setFromTriplets(w.damper_triplets.begin(), w.damper_triplets.end());
 

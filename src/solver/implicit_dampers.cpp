@@ -1,0 +1,42 @@
+#include "solver/implicit_dampers.hpp"
+
+#include <tuple>
+
+#include "dynamics/state.hpp"
+#include "model/model.hpp"
+#include "solver/stiffness_matrix.hpp"
+
+namespace dinam {
+
+void add_damper_hessian(const Model& model, const State& state, const FreeDofs& dofs,
+                        const std::vector<Vec3>& x_start, double h,
+                        std::vector<Eigen::Triplet<double>>& triplets) {
+  if (!model.any_bar_damping) {
+    return;
+  }
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const double c = model.bar_damping[b];
+    if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
+      continue;
+    }
+    const Index a = model.bar_nodes[2 * b];
+    const Index bb = model.bar_nodes[2 * b + 1];
+    const Vec3 e = (x_start[bb] - x_start[a]).normalized();
+    const Eigen::Matrix3d block = (c / h) * e * e.transpose();
+    for (const auto& [p, q, sign] : {std::tuple{a, a, 1.0}, std::tuple{bb, bb, 1.0},
+                                     std::tuple{a, bb, -1.0}, std::tuple{bb, a, -1.0}}) {
+      const Index dp = dofs.first_dof[p];
+      const Index dq = dofs.first_dof[q];
+      if (dp < 0 || dq < 0) {
+        continue;
+      }
+      for (int r = 0; r < 3; ++r) {
+        for (int s = 0; s < 3; ++s) {
+          triplets.emplace_back(dp + r, dq + s, sign * block(r, s));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace dinam
