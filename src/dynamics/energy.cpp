@@ -38,8 +38,9 @@ EnergyReport energy_report(const Model& model, const State& state,
   report.accounts = state.energy;
   const EnergyAccounts& a = report.accounts;
   report.total = report.kinetic + report.axial + report.bending + report.torsion +
-                 report.gravitational + report.contact + a.plastic_dissipation - a.damping_work -
-                 a.friction_work - a.contact_damping_work - a.wind_work - a.field_work;
+                 report.gravitational + report.contact + a.plastic_dissipation +
+                 a.numerical_dissipation - a.damping_work - a.friction_work -
+                 a.contact_damping_work - a.wind_work - a.field_work;
   return report;
 }
 

@@ -19,6 +19,9 @@ struct EnergyAccounts {
   double contact_damping_work = 0.0;  // contact normal damping (≤ 0)
   double wind_work = 0.0;             // aerodynamic drag
   double field_work = 0.0;            // field forces other than gravity
+  // What the implicit integrator's scheme took out (solver/implicit_energy.hpp); central
+  // differences book none, their error staying in the total.
+  double numerical_dissipation = 0.0;
 
   // Adds `fraction` of every work in `works` (the dissipation is booked elsewhere).
   void add_works(const EnergyAccounts& works, double fraction) {
@@ -32,7 +35,7 @@ struct EnergyAccounts {
 
 // The energy of the system at one whole step, and what has come in and gone out since t = 0.
 // The balance `total` stays constant up to the integrator's error: potential and kinetic energy
-// plus what the dissipative forces took, minus what driving forces gave.
+// plus what the dissipative forces and the implicit scheme took, minus what driving forces gave.
 struct EnergyReport {
   double time = 0.0;           // s
   double kinetic = 0.0;        // J, Σ ½ m |v_n|², v_n = ½ (v_{n−½} + v_{n+½})
@@ -42,7 +45,7 @@ struct EnergyReport {
   double gravitational = 0.0;  // J, Σ −m g·x
   double contact = 0.0;        // J, elastic energy of the normal penalties (ground, objects)
   EnergyAccounts accounts;
-  double total = 0.0;  // kinetic + elastic + gravitational + contact − works + dissipation
+  double total = 0.0;  // kinetic + elastic + gravitational + contact − works + dissipations
 };
 
 // The dissipative and driving forces by kind and the energy report, while the energy is tracked

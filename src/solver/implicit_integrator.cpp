@@ -5,15 +5,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 #include <vector>
 
 #include "core/error.hpp"
+#include "dynamics/energy.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/tearing.hpp"
 #include "model/model.hpp"
 #include "solver/ground_restitution.hpp"
 #include "solver/implicit_dampers.hpp"
+#include "solver/implicit_energy.hpp"
 #include "solver/implicit_friction.hpp"
 #include "solver/implicit_object_contact.hpp"
 #include "solver/line_search.hpp"
@@ -106,6 +109,7 @@ struct ImplicitIntegrator::Workspace {
   double envelope = 0.0;   // m, the most a node of contact between objects may move in a step
   bool any_yield = false;  // some spring can flow
   std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before, x_iterate;
+  std::vector<Vec3> field_force, wind_force;  // the parts of explicit_force, for the energy ledger
   bool have_accel = false;
   // BDF2's history: x_{n−1} and v_{n−1}, from the last step taken, of `before_h` (0: none).
   std::vector<Vec3> x_before, v_before;
@@ -162,6 +166,16 @@ ImplicitIntegrator::ImplicitIntegrator(const Model& model)
 }
 
 ImplicitIntegrator::~ImplicitIntegrator() = default;
+
+void ImplicitIntegrator::report_energy(State& state) {
+  if (!state.energy_workspace.enabled) {
+    return;
+  }
+  // The objects' penalty where they touch at the start (before a step there are no friction
+  // springs), where the report reads it.
+  state.object_contact.energy = work_->objects.energy(model_, state);
+  state.energy_workspace.last = energy_report(model_, state, state.v_half);
+}
 
 void ImplicitIntegrator::advance(State& state, double h, std::int64_t steps) {
   for (std::int64_t k = 0; k < steps; ++k) {
@@ -229,10 +243,18 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   compute_forces(model, only_fields(), state);
   state.time = t_start;
   w.explicit_force = state.force;
+  const bool ledger = state.energy_workspace.enabled;
+  if (ledger) {
+    w.field_force = state.force;
+    w.wind_force.assign(n, Vec3::Zero());
+  }
   if (!model.wind.faces.empty() || !model.wind.bars.empty()) {
     compute_forces(model, only_wind(), state);
     for (std::size_t i = 0; i < n; ++i) {
       w.explicit_force[i] += state.force[i];
+    }
+    if (ledger) {
+      w.wind_force = state.force;
     }
   }
   w.friction.start_step(model, state);
@@ -519,6 +541,38 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     return false;
   }
 
+  // The step's ends for the energy ledger (implicit_energy.hpp): P, with the friction springs
+  // the step ended with, at x_{n+1} and at x_n, and its forces at x_{n+1}.
+  std::optional<ImplicitStepEnds> ends;
+  if (ledger) {
+    ImplicitStepEnds& measured = ends.emplace();
+    auto step_potential = [&] {
+      const double friction = w.friction.energy(state.x) + w.objects.friction_energy(state.x);
+      return std::pair{
+          potential_energy(model, state, switches, w.x_start, SpringEnergy::kWithFlow).energy +
+              w.friction.energy(state.x) + w.objects.energy(model, state),
+          friction};
+    };
+    gradient(g);
+    measured.potential_force = free_part(dofs, state.force);
+    std::tie(measured.potential_end, measured.friction_end) = step_potential();
+    const std::vector<Vec3> x_end = state.x;
+    state.x = w.x_start;
+    std::tie(measured.potential_start, measured.friction_start) = step_potential();
+    state.x = x_end;
+    measured.mass = w.mass;
+    measured.x_start = free_part(dofs, w.x_start);
+    measured.v_start = free_part(dofs, w.v_start);
+    measured.x_base = start;
+    measured.v_base = free_part(dofs, w.v_base);
+    measured.x_end = free_part(dofs, state.x);
+    const Vector moved = measured.x_end - start;
+    measured.v_end = moved / hs;
+    measured.damper_force = -(alpha / hs) * w.mass.cwiseProduct(moved) - damping * moved;
+    measured.field_force = free_part(dofs, w.field_force);
+    measured.wind_force = free_part(dofs, w.wind_force);
+  }
+
   // v_{n+1} = (x_{n+1} − x_b)/h; the local error h²/2 |a_{n+1} − a_n|, a_n = (v_{n+1} − v_n)/h
   // over the whole step.
   // A step in which a node meets or leaves the ground has a jump in acceleration that no shorter
@@ -547,9 +601,19 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     return false;
   }
   state.contact_touching = w.touching_start;
+  if (ends) {
+    const EnergyAccounts step = implicit_step_accounts(*ends);
+    state.energy.add_works(step, 1.0);
+    state.energy.numerical_dissipation += step.numerical_dissipation;
+  }
   // The nodes that landed leave with the ground's restitution (ground_restitution.hpp); BDF2's
-  // history then starts again, its velocity before the impact being no longer the motion's.
+  // history then starts again, its velocity before the impact being no longer the motion's. The
+  // energy the rebound gives back is the scheme's: backward Euler's step into the penalty took it.
+  const double kinetic_before = ends ? kinetic_energy(model, state.v_half) : 0.0;
   const bool rebounded = rebound_landing_nodes(model, w.x_start, w.v_start, state);
+  if (ends) {
+    state.energy.numerical_dissipation -= kinetic_energy(model, state.v_half) - kinetic_before;
+  }
   w.friction.finish_step(model, state);
   w.objects.finish_step(model, state);
   if (w.any_yield) {
@@ -570,6 +634,9 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   state.time = t_next;
   state.step += 1;
   stats_.steps += 1;
+  if (ends) {
+    state.energy_workspace.last = energy_report(model, state, state.v_half);
+  }
   for (std::size_t i = 0; i < n; ++i) {
     if (!state.x[i].allFinite() || !state.v_half[i].allFinite()) {
       throw RuntimeError(

@@ -63,6 +63,10 @@ class ImplicitIntegrator {
   // of h/2¹⁰ does not converge.
   void advance(State& state, double h, std::int64_t steps);
 
+  // While the energy is tracked (State::energy_workspace), its report at the state as it is, the
+  // start of the run; each step books its own (implicit_energy.hpp).
+  void report_energy(State& state);
+
   const ImplicitStats& stats() const { return stats_; }
 
  private:

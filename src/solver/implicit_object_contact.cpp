@@ -328,12 +328,17 @@ double ImplicitObjectContact::energy(const Model& model, State& state) {
     return 0.0;
   }
   find_pairs(model, state);
-  double energy = 0.0;
+  double energy = friction_energy(state.x);
   for (const ContactPoint& point : pairs_) {
     energy += evaluate(model, point, state.x).energy;
   }
+  return energy;
+}
+
+double ImplicitObjectContact::friction_energy(const std::vector<Vec3>& x) const {
+  double energy = 0.0;
   for (const Spring& spring : springs_) {
-    energy += capped_spring_energy(spring.stiffness, spring.cap, stretch(spring, state.x).norm());
+    energy += capped_spring_energy(spring.stiffness, spring.cap, stretch(spring, x).norm());
   }
   return energy;
 }

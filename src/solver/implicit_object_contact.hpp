@@ -74,6 +74,8 @@ class ImplicitObjectContact {
   void add_forces(const Model& model, State& state);
   // Their energy at state.x, J.
   double energy(const Model& model, State& state);
+  // The friction springs' share of it at x, J.
+  double friction_energy(const std::vector<Vec3>& x) const;
   // A positive semi-definite approximation of their Hessian at state.x, for the preconditioner:
   // each touching pair's penalty slope along its normal, w_i w_j k n nᵀ, and each friction
   // spring's exact Hessian; 3 × 3 blocks over each pair's nodes.
