@@ -13,15 +13,15 @@
 #include "model/model.hpp"
 #include "solver/implicit_integrator.hpp"
 #include "solver/initial_state.hpp"
+#include "solver_support.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
 namespace {
 
-// The integrator's convergence: no node is left out of balance by more than this (m/s²,
-// implicit_integrator.cpp's kConvergedAcceleration). A step's balance is off by the residual's
-// work, at most this times the mass times how far the node moved.
-constexpr double kResidualAcceleration = 1e-2;
+// A step's balance is off by the residual's work: at most test::kResidualAcceleration times the
+// mass times how far the node moved.
+using test::kResidualAcceleration;
 
 State tracked_start(const Model& model, double h, ImplicitIntegrator& integrator) {
   State state = initial_state(model, h, {}, true);

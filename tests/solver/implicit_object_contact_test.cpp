@@ -21,15 +21,14 @@
 #include "solver/implicit_integrator.hpp"
 #include "solver/implicit_object_contact.hpp"
 #include "solver/initial_state.hpp"
+#include "solver_support.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
 namespace {
 
 constexpr double kG = 9.81;
-// The integrator's convergence: no node is left out of balance by more than this (m/s²,
-// implicit_integrator.cpp's kConvergedAcceleration), which bounds what each step may get wrong.
-constexpr double kResidualAcceleration = 1e-2;
+using test::kResidualAcceleration;
 
 Model implicit_scene(const std::string& keys, const std::string& objects) {
   return build_model(test::scene_from_yaml(fmt::format(
