@@ -2,10 +2,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
@@ -17,6 +20,7 @@
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/implicit_damping.hpp"
 
 namespace dinam {
 namespace {
@@ -121,6 +125,27 @@ void print_integrator_choice(const IntegratorChoice& choice) {
                    "differences', which are exact and cheap per step");
 }
 
+// The implicit integrator's numerical damping at the scene's step, for modes resolved by these
+// many steps a period (a frequency each, at that step).
+constexpr std::array<int, 3> kStepsPerPeriod = {8, 16, 32};
+
+struct ModeDamping {
+  int steps_per_period = 0;
+  double frequency = 0.0;       // Hz
+  double backward_euler = 0.0;  // share of the amplitude kept over a period
+  double bdf2 = 0.0;
+};
+
+std::vector<ModeDamping> implicit_mode_damping(const TimeStep& timestep) {
+  std::vector<ModeDamping> modes;
+  for (const int steps : kStepsPerPeriod) {
+    modes.push_back({steps, 1.0 / (steps * timestep.dt),
+                     amplitude_kept_per_period(ImplicitScheme::kBackwardEuler, steps),
+                     amplitude_kept_per_period(ImplicitScheme::kBdf2, steps)});
+  }
+  return modes;
+}
+
 void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
                 Index pinned, const RunFigures& run) {
   const MemoryFigures memory = memory_figures(scene, model);
@@ -137,7 +162,7 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
                        {"mesh_materials", element_names(mesh, MeshNameKind::kMaterial)},
                        {"mesh_groups", element_names(mesh, MeshNameKind::kGroup)}});
   }
-  const nlohmann::ordered_json json = {
+  nlohmann::ordered_json json = {
       {"scene", scene.source.string()},
       {"name", scene.name},
       {"objects", objects},
@@ -185,6 +210,16 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"output", scene.output.string()},
       {"movie", movie_format_name(scene.movie)},
   };
+  if (model.integrator == IntegratorKind::kImplicit) {
+    nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+    for (const ModeDamping& mode : implicit_mode_damping(timestep)) {
+      modes.push_back({{"steps_per_period", mode.steps_per_period},
+                       {"frequency_hz", mode.frequency},
+                       {"backward_euler", mode.backward_euler},
+                       {"bdf2", mode.bdf2}});
+    }
+    json["implicit_amplitude_kept_per_period"] = modes;
+  }
   // A mesh file's material and group names are bytes in any encoding: what is not UTF-8 is shown
   // as U+FFFD rather than failing the whole summary.
   fmt::print("{}\n", json.dump(1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
@@ -219,6 +254,24 @@ void print_step_limits(const Model& model) {
 }
 
 void print_energy_balance(const Model& model, const TimeStep& timestep) {
+  if (model.integrator == IntegratorKind::kImplicit) {
+    const bool bdf2 = model.implicit_scheme == ImplicitScheme::kBdf2;
+    std::vector<std::string> kept;
+    std::vector<std::string> other;
+    for (const ModeDamping& mode : implicit_mode_damping(timestep)) {
+      kept.push_back(fmt::format("{:.3g} Hz ({} steps) {:.0f} %", mode.frequency,
+                                 mode.steps_per_period,
+                                 100.0 * (bdf2 ? mode.bdf2 : mode.backward_euler)));
+      other.push_back(fmt::format("{:.0f} %", 100.0 * (bdf2 ? mode.backward_euler : mode.bdf2)));
+    }
+    fmt::print(
+        "energy balance   the implicit integrator books what its scheme takes out as energy.csv's "
+        "numerical_dissipation_J, and total_J holds to what Newton's method leaves out of "
+        "balance; at steps of {:.3g} s {} keeps of a mode's amplitude a period: {} ('{}': {})\n",
+        timestep.dt, bdf2 ? "BDF2" : "backward Euler", fmt::join(kept, ", "),
+        bdf2 ? "integrator: implicit" : "integrator: implicit_bdf2", fmt::join(other, ", "));
+    return;
+  }
   const EnergyBalanceGuide guide = energy_balance_guide(model, timestep);
   fmt::print(
       "energy balance   ω_max·Δt = {:.2f}; central differences' energy error grows as (ω·Δt)²: "

@@ -9,8 +9,10 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <fstream>
+#include <numbers>
 
 #include "io/png_file.hpp"
 #include "test_support.hpp"
@@ -387,6 +389,47 @@ TEST_F(EndToEnd, InfoSaysWhatEnergyBalanceTheStepGives) {
   const double balance = number("expected_energy_balance");
   EXPECT_NEAR(number("timestep_for_0_1_percent_balance_s") / step, std::sqrt(0.001 / balance),
               1e-9);
+}
+
+// With the implicit integrator, `info --energy` says where its loss is booked and how much of a
+// mode's amplitude each scheme keeps a period at the scene's step (a quarter frame here, 25 ms):
+// backward Euler's root 1/(1 − iωh) has modulus (1 + ω²h²)^−½, so over a period of N steps
+// (ωh = 2π/N) it keeps (1 + (2π/N)²)^−N/2; BDF2's characteristic equation (3 − 2iωh) z² − 4z + 1
+// = 0 has the principal root (2 + √(1 + 2iωh))/(3 − 2iωh).
+TEST_F(EndToEnd, InfoSaysHowMuchTheImplicitSchemesDampAMode) {
+  const auto scene = write_scene("tiny.yaml", std::string(kTinyScene) + "integrator: implicit\n");
+  const CommandResult text = run_command(dinam_command("info --energy '" + scene.string() + "'"));
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("numerical_dissipation_J"), std::string::npos) << text.output;
+  EXPECT_EQ(text.output.find("ω_max·Δt"), std::string::npos) << text.output;
+  const CommandResult json = run_command(dinam_command("info --json '" + scene.string() + "'"));
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const auto numbers = [&](const std::string& key) {
+    std::vector<double> found;
+    for (std::size_t at = json.output.find("\"" + key + "\": "); at != std::string::npos;
+         at = json.output.find("\"" + key + "\": ", at + 1)) {
+      found.push_back(std::stod(json.output.substr(at + key.size() + 4)));
+    }
+    return found;
+  };
+  const std::vector<double> steps = numbers("steps_per_period");
+  const std::vector<double> frequency = numbers("frequency_hz");
+  const std::vector<double> euler = numbers("backward_euler");
+  const std::vector<double> bdf2 = numbers("bdf2");
+  ASSERT_EQ(steps.size(), 3u);
+  ASSERT_EQ(euler.size(), 3u);
+  ASSERT_EQ(bdf2.size(), 3u);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const double n = steps[k];
+    const double omega_h = 2.0 * std::numbers::pi / n;
+    EXPECT_NEAR(frequency[k], 1.0 / (n * 0.025), 1e-9);
+    EXPECT_NEAR(euler[k], std::pow(1.0 + omega_h * omega_h, -n / 2.0), 1e-12);
+    const std::complex<double> z(0.0, omega_h);
+    const std::complex<double> root = (2.0 + std::sqrt(1.0 + 2.0 * z)) / (3.0 - 2.0 * z);
+    EXPECT_NEAR(bdf2[k], std::pow(std::abs(root), n), 1e-12);
+  }
+  EXPECT_NEAR(euler[1], 0.32, 0.005);  // 16 steps: 68 % lost a period (docs/scene-format.md)
+  EXPECT_NEAR(bdf2[1], 0.933, 0.001);  // and BDF2 6.7 %
 }
 
 }  // namespace
