@@ -10,6 +10,7 @@
 #include "model/derived_checks.hpp"
 #include "model/edge_collapse.hpp"
 #include "model/frequency_bound.hpp"
+#include "model/loose_pieces.hpp"
 #include "model/mass_scaling.hpp"
 #include "model/mesh_cleaning.hpp"
 #include "model/model.hpp"
@@ -497,6 +498,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   add_object_contact(scene, model);
   note_yielding_kinds(model);
   note_implausible_values(scene, model);
+  note_loose_pieces(scene, model);
   release_spare_capacity(model);
   check_derived_quantities(model, scene);
   return model;

@@ -309,5 +309,30 @@ objects:
   EXPECT_TRUE(with_radius("0.001").warnings.empty());
 }
 
+// A mesh of three pieces that share no vertex (a square, a triangle beside its corner, a loose
+// segment: tests/data/pieces.obj) is three structures: a note at the mesh says how many, how
+// large the largest, and how many no pin holds; none where every piece holds a pinned node.
+TEST(ModelBuilder, AMeshOfSeparatePiecesIsNotedAtItsMesh) {
+  auto with_pins = [](const std::string& pins) {
+    return build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - name: body
+    mesh: {file: pieces.obj}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.001}
+)" + pins));
+  };
+  const Model loose = with_pins("");
+  ASSERT_EQ(loose.warnings.size(), 1U);
+  test::expect_contains(loose.warnings[0],
+                        {":5:11: note: object 'body': its mesh is 3 separate pieces",
+                         "the largest has 4 of its 9 nodes", "3 of them held by no pin",
+                         "contact: {objects: true, self: true}"});
+  const Model body_pinned = with_pins("    pinned: {indices: [0]}\n");
+  ASSERT_EQ(body_pinned.warnings.size(), 1U);
+  test::expect_contains(body_pinned.warnings[0], {"2 of them held by no pin"});
+  EXPECT_TRUE(with_pins("    pinned: {indices: [0, 4, 7]}\n").warnings.empty());
+}
+
 }  // namespace
 }  // namespace dinam
