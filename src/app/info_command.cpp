@@ -138,6 +138,7 @@ struct ModeDamping {
 
 std::vector<ModeDamping> implicit_mode_damping(const TimeStep& timestep) {
   std::vector<ModeDamping> modes;
+  modes.reserve(kStepsPerPeriod.size());
   for (const int steps : kStepsPerPeriod) {
     modes.push_back({steps, 1.0 / (steps * timestep.dt),
                      amplitude_kept_per_period(ImplicitScheme::kBackwardEuler, steps),
