@@ -546,12 +546,12 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   std::optional<ImplicitStepEnds> ends;
   if (ledger) {
     ImplicitStepEnds& measured = ends.emplace();
-    auto step_potential = [&] {
-      const double friction = w.friction.energy(state.x) + w.objects.friction_energy(state.x);
+    auto step_potential = [&] {  // P and its friction springs' share, at state.x
+      const double ground_friction = w.friction.energy(state.x);
       return std::pair{
           potential_energy(model, state, switches, w.x_start, SpringEnergy::kWithFlow).energy +
-              w.friction.energy(state.x) + w.objects.energy(model, state),
-          friction};
+              ground_friction + w.objects.energy(model, state),
+          ground_friction + w.objects.friction_energy(state.x)};
     };
     gradient(g);
     measured.potential_force = free_part(dofs, state.force);
