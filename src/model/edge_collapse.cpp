@@ -1,7 +1,8 @@
 #include "model/edge_collapse.hpp"
 
 #include <algorithm>
-#include <numeric>
+
+#include "model/disjoint_sets.hpp"
 
 namespace dinam {
 
@@ -21,20 +22,12 @@ std::pair<std::vector<Index>, Index> merge_pass(const std::vector<Vec3>& nodes,
     }
   }
   std::sort(short_edges.begin(), short_edges.end());
-  std::vector<Index> parent(nodes.size());
-  std::iota(parent.begin(), parent.end(), Index{0});
+  DisjointSets groups(nodes.size());
   std::vector<double> reach(nodes.size(), 0.0);
-  auto find = [&](Index v) {
-    while (parent[v] != v) {
-      parent[v] = parent[parent[v]];
-      v = parent[v];
-    }
-    return v;
-  };
   Index merges = 0;
   for (const auto& [length, e] : short_edges) {
-    Index a = find(edges[e].first);
-    Index b = find(edges[e].second);
+    Index a = groups.find(edges[e].first);
+    Index b = groups.find(edges[e].second);
     if (a == b) {
       continue;  // both ends already merged through other short bars
     }
@@ -45,14 +38,11 @@ std::pair<std::vector<Index>, Index> merge_pass(const std::vector<Vec3>& nodes,
     if (joined > tolerance) {
       continue;  // left for the next pass, where each group is one node
     }
-    parent[b] = a;
+    groups.join(b, a);
     reach[a] = joined;
     ++merges;
   }
-  for (std::size_t v = 0; v < nodes.size(); ++v) {
-    parent[v] = find(static_cast<Index>(v));
-  }
-  return {parent, merges};
+  return {groups.roots(), merges};
 }
 
 }  // namespace

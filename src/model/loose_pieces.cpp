@@ -3,48 +3,38 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <numeric>
 #include <vector>
 
+#include "model/disjoint_sets.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
-namespace {
-
-// The root of `node`'s piece, halving the path on the way (union–find).
-Index root_of(std::vector<Index>& parent, Index node) {
-  while (parent[node] != node) {
-    parent[node] = parent[parent[node]];
-    node = parent[node];
-  }
-  return node;
-}
-
-}  // namespace
 
 void note_loose_pieces(const SceneDescription& scene, Model& model) {
   for (std::size_t o = 0; o < model.objects.size(); ++o) {
     const ModelObject& object = model.objects[o];
     const Index first = object.first_node;
-    std::vector<Index> parent(static_cast<std::size_t>(object.node_count));
-    std::iota(parent.begin(), parent.end(), 0);
+    const auto count = static_cast<std::size_t>(object.node_count);
+    DisjointSets pieces_of(count);
     for (Index b = object.first_bar; b < object.first_bar + object.bar_count; ++b) {
-      const Index a = root_of(parent, model.bar_nodes[2 * b] - first);
-      const Index c = root_of(parent, model.bar_nodes[2 * b + 1] - first);
-      parent[std::max(a, c)] = std::min(a, c);
+      const Index a = pieces_of.find(model.bar_nodes[2 * b] - first);
+      const Index c = pieces_of.find(model.bar_nodes[2 * b + 1] - first);
+      if (a != c) {
+        pieces_of.join(std::max(a, c), std::min(a, c));
+      }
     }
     // Each piece's size and whether it holds a pinned node, by root.
-    std::vector<Index> size(parent.size(), 0);
-    std::vector<char> held(parent.size(), 0);
+    std::vector<Index> size(count, 0);
+    std::vector<char> held(count, 0);
     for (Index i = 0; i < object.node_count; ++i) {
-      const Index root = root_of(parent, i);
+      const Index root = pieces_of.find(i);
       size[root] += 1;
       held[root] = static_cast<char>(held[root] != 0 || model.pinned(first + i));
     }
     Index pieces = 0;
     Index free = 0;
     Index largest = 0;
-    for (std::size_t r = 0; r < parent.size(); ++r) {
+    for (std::size_t r = 0; r < count; ++r) {
       if (size[r] > 0) {
         pieces += 1;
         free += held[r] == 0 ? 1 : 0;
