@@ -63,7 +63,6 @@ struct SpringBlock {
 
   Vec3 node_position(int node, Index k) const { return position[node].get(k); }
   void set_force(int node, Index k, const Vec3& f) { force[node].set(k, f); }
-  Vec3 node_force(int node, Index k) const { return force[node].get(k); }
 };
 
 // Pass 2: kernel(block, k, rest, stiffness, plastic_set, yield) for the block's springs k in
@@ -89,6 +88,33 @@ void compute_spring_block(SpringBlock<kNodes>& block, const SpringArrays& spring
 #pragma omp simd
     for (Index k = 0; k < count; ++k) {
       kernel(block, k, rest[k], stiffness[k], 0.0, kElastic);
+    }
+  }
+}
+
+// Pass 3's forces: each spring's force on each node, added to the nodes in [own_first, own_end)
+// in spring order (a torn spring is computed with the block, but it acts no more). The pointers
+// are the loop's own locals, so the compiler keeps them in registers across the stores to the
+// forces.
+template <int kNodes>
+[[gnu::always_inline]] inline void scatter_spring_forces(const SpringBlock<kNodes>& block,
+                                                         const Index* spring_nodes,
+                                                         const std::uint8_t* broken, Index first,
+                                                         Index count, Vec3* force, Index own_first,
+                                                         Index own_end) {
+  const Index* nodes = spring_nodes + static_cast<std::size_t>(kNodes) * first;
+  for (Index k = 0; k < count; ++k, nodes += kNodes) {
+    if (broken != nullptr && broken[first + k] != 0) {
+      continue;
+    }
+    for (int j = 0; j < kNodes; ++j) {
+      const Index node = nodes[j];
+      if (node >= own_first && node < own_end) {
+        double* f = force[node].data();
+        f[0] += block.force[j].coordinate[0][k];
+        f[1] += block.force[j].coordinate[1][k];
+        f[2] += block.force[j].coordinate[2][k];
+      }
     }
   }
 }
@@ -119,20 +145,8 @@ void add_spring_forces(ForceContext& context, const SpringArrays& springs, const
           }
         }
         compute_spring_block(block, springs, first, count, kernel);
-        // The forces, each to a node of this worker's own.
-        for (Index k = 0; k < count; ++k) {
-          const Index s = first + k;
-          // A torn spring is computed with the block, but it acts no more.
-          if (springs.broken != nullptr && springs.broken[s] != 0) {
-            continue;
-          }
-          const Index* nodes = &springs.nodes[static_cast<std::size_t>(kNodes) * s];
-          for (int j = 0; j < kNodes; ++j) {
-            if (whole || owns(nodes[j])) {
-              force[nodes[j]] += block.node_force(j, k);
-            }
-          }
-        }
+        scatter_spring_forces(block, springs.nodes.data(), springs.broken, first, count, force,
+                              own_first, own_end);
         if (!may_yield || !context.update_history) {
           return;
         }
