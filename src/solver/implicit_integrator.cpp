@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -18,8 +17,8 @@
 #include "solver/implicit_dampers.hpp"
 #include "solver/implicit_energy.hpp"
 #include "solver/implicit_friction.hpp"
+#include "solver/implicit_newton.hpp"
 #include "solver/implicit_object_contact.hpp"
-#include "solver/line_search.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -29,37 +28,9 @@ namespace {
 
 using Vector = Eigen::VectorXd;
 
-// Newton iterations a step may take before it is split.
-constexpr int kMostIterations = 25;
 // Halvings of a step before the run gives up, and of them those the error criterion may ask for.
 constexpr int kMostSplits = 10;
 constexpr int kErrorSplits = 5;
-// A step is found once a Newton step has been taken and either the out-of-balance force left
-// would move no node by more than this share of the median bar within the step (|g_i| h²/m_i), or
-// a whole Newton step moved none by more: far below what can be seen, far above rounding. (The
-// second test is the one a node pressed on the ground meets: the ground's stiffness, not its
-// mass, sets how far its residual force moves it.) Neither share may stand for an out-of-balance
-// acceleration above kConvergedAcceleration: the error each step leaves is a velocity error of
-// |g|h/m, and the motion's over a second is their sum, so on short steps (a pendulum of one
-// 1 m bar at 2.5 ms steps allowed 1.6 m/s² and lost half its swing in two periods) the bar's
-// share would allow too much. (1e-3 of g: over 3 s at most 3 cm/s of drift; the pendulum then
-// keeps its swing to 0.5 mm at 2.5 ms. 1e-4 of g made the Wuson's first 0.5 s take a third
-// longer, for no difference to be seen.)
-constexpr double kConvergedShare = 1e-5;
-constexpr double kConvergedAcceleration = 1e-2;  // m/s²
-// The line search's least step length before the step is split instead (its sufficient decrease
-// is the equilibrium's: line_search.hpp).
-constexpr double kLeastLength = 1.0 / 1024;
-// The Newton step's linear solve (conjugate gradients preconditioned with the kept factorisation):
-// the share of the gradient its residual is cut to, and the iterations it may take before the
-// Hessian is factorised again. (An iteration costs a solve with the factor and a force
-// evaluation, about 1.3 ms on the Wuson; a factorisation 60 to 130 ms.)
-constexpr double kForcing = 0.01;
-constexpr int kMostSolveIterations = 30;
-// Times a step's solve goes on with the friction of nodes that landed within it
-// (ImplicitFriction::add_new_touches): a node that lands where the last round had it above the
-// plane needs another.
-constexpr int kMostLandingRounds = 3;
 
 // The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
 // anchors are not updated (compute_static_forces), and no node is marked touching, so no stick
@@ -108,7 +79,7 @@ struct ImplicitIntegrator::Workspace {
   double bar = 1.0;        // m, the median bar
   double envelope = 0.0;   // m, the most a node of contact between objects may move in a step
   bool any_yield = false;  // some spring can flow
-  std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before, x_iterate;
+  std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before;
   std::vector<Vec3> field_force, wind_force;  // the parts of explicit_force, for the energy ledger
   bool have_accel = false;
   // BDF2's history: x_{n−1} and v_{n−1}, from the last step taken, of `before_h` (0: none).
@@ -326,211 +297,22 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       state.x[i] = w.predicted[i];
     }
   }
-  const double converged =  // m/s², a node's |g|/m
-      std::min(kConvergedShare * w.bar / (hs * hs), kConvergedAcceleration);
-  const double small_step = converged * hs * hs;  // m
-  Vector g;
-  gradient(g);
-  double e = energy();
-  bool done = false;
-  // The largest out-of-balance acceleration of a residual, m/s²: what convergence is judged by.
-  auto worst_of = [&](const Vector& r) {
-    double worst = 0.0;
-    for (Index d = 0; d < dofs.count; ++d) {
-      worst = std::max(worst, std::abs(r[d]) / w.mass[d]);
-    }
-    return worst;
-  };
-  // H v, the incremental potential's Hessian at state.x along v, from the gradient there (`g`)
-  // and at state.x + ε v: exact for the inertia and dampers, and to about 1e-7 for the springs
-  // (the difference step, √(rounding × extent × bar), balances the gradient's rounding against
-  // the springs' curvature over the step).
-  double extent = 1.0;
-  for (const Vec3& x : state.x) {
-    extent = std::max(extent, x.lpNorm<Eigen::Infinity>());
-  }
-  const double difference_step =
-      std::sqrt(std::numeric_limits<double>::epsilon() * extent * w.bar);  // m
-  Vector g_moved;
-  auto hessian_times = [&](const Vector& v, Vector& product) {
-    double furthest = 0.0;
-    for (Index d = 0; d < dofs.count; d += 3) {
-      furthest = std::max(furthest, v.segment<3>(d).norm());
-    }
-    if (furthest == 0.0) {
-      product.setZero(dofs.count);
-      return;
-    }
-    const double epsilon = difference_step / furthest;
-    w.x_iterate = state.x;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Index d = dofs.first_dof[i];
-      if (d >= 0) {
-        state.x[i] += epsilon * Vec3(v.segment<3>(d));
-      }
-    }
-    gradient(g_moved);
-    state.x = w.x_iterate;
-    product = (g_moved - g) / epsilon;
-  };
-  // The Newton step s, H s = −g, by conjugate gradients preconditioned with the kept factorised
-  // Hessian P (an earlier iterate's or step's; exactly H for a linear problem, where the first
-  // iteration is the whole step). A node that met the ground or a spring that turned since P was
-  // factorised is an eigenvalue of P⁻¹H away from 1, which costs the solve an iteration or two,
-  // where factorising again costs dozens. Stops once the residual is kForcing of g's (an inexact
-  // Newton step, which still converges fast) or below half the convergence tolerance; at a
-  // direction of negative curvature (the structure is unstable there: the step so far still goes
-  // downhill, and the first iteration's P⁻¹(−g) does, P being positive definite); or after
-  // kMostSolveIterations, where P no longer describes H and is factorised again at the next
-  // iterate. `solved`: the step is Newton's to the tolerance.
-  struct NewtonStep {
-    Vector step;
-    bool solved = false;
-    bool exhausted = false;  // stopped at kMostSolveIterations
-  };
-  Vector residual, preconditioned, direction, product;
-  auto newton_step = [&]() {
-    NewtonStep result;
-    result.step.setZero(dofs.count);
-    residual = -g;
-    const double target = std::max(kForcing * worst_of(g), 0.5 * converged);
-    // Nothing out of balance at all (a body in free flight without gravity, where x̂ is exact):
-    // the step is zero, and solved. (A residual however small is solved for: a slow motion would
-    // otherwise stop where x̂ put it.)
-    if (worst_of(residual) == 0.0) {
-      result.solved = true;
-      return result;
-    }
-    preconditioned = w.solver.solve(residual);
-    direction = preconditioned;
-    double along = residual.dot(preconditioned);
-    for (int k = 0; k < kMostSolveIterations; ++k) {
-      stats_.solve_iterations += 1;
-      hessian_times(direction, product);
-      const double curvature = direction.dot(product);
-      if (!(curvature > 0.0)) {
-        if (k == 0) {
-          result.step = direction;
-        }
-        return result;
-      }
-      const double length = along / curvature;
-      result.step += length * direction;
-      residual -= length * product;
-      if (worst_of(residual) <= target) {
-        result.solved = true;
-        return result;
-      }
-      preconditioned = w.solver.solve(residual);
-      const double along_next = residual.dot(preconditioned);
-      direction = preconditioned + (along_next / along) * direction;
-      along = along_next;
-    }
-    result.exhausted = true;
-    return result;
-  };
-  // The factorised Hessian is kept from iterate to iterate and from step to step (assembling and
-  // factorising it costs far more than a force), and factorised again where the solve above
-  // exhausts its iterations, where a step with it finds no descent, and where h changes.
-  // `fresh`: it was factorised at this iterate.
-  bool fresh = false;
-  auto factor_here = [&] {
-    stats_.factorizations += 1;
-    fresh = true;
-    return w.factor(model, state, hs, damping, inertia);
-  };
   if (w.factored_h != hs) {
     w.factored = false;
   }
-  // Found, unless a node landed within the step: then its friction joins and the step goes on.
-  int landings = 0;
-  auto found = [&] {
-    if (landings < kMostLandingRounds && w.friction.add_new_touches(model, w.x_start, state.x)) {
-      landings += 1;
-      gradient(g);
-      e = energy();
-      return false;
-    }
-    return true;
+  const StepPotential potential{
+      .gradient = gradient,
+      .energy = energy,
+      .factor = [&] { return w.factor(model, state, hs, damping, inertia); },
+      .precondition = [&](const Vector& r) { return w.solver.solve(r); },
+      .join_new_touches = [&] { return w.friction.join_new_touches(model, w.x_start, state.x); },
+      .add_new_touches = [&] { return w.friction.add_new_touches(model, w.x_start, state.x); },
   };
-  for (int iteration = 0; iteration < kMostIterations && !done; ++iteration) {
-    // At least one Newton step: from x̂ alone a slow motion would pass the test unsolved (a
-    // linear step is exact after one).
-    if (iteration > 0 && worst_of(g) <= converged && found()) {
-      done = true;
-      break;
-    }
-    stats_.iterations += 1;
-    if (!w.factored && !factor_here()) {
-      break;
-    }
-    const NewtonStep newton = newton_step();
-    const Vector& step = newton.step;
-    double largest = 0.0;  // m, the step's longest move of a node
-    for (Index d = 0; d < dofs.count; d += 3) {
-      largest = std::max(largest, step.segment<3>(d).norm());
-    }
-    const double slope = g.dot(step);  // < 0 for a descent direction
-    // No descent left to take, and none needed (a structure at rest with nothing moving it: the
-    // gradient is zero and so is the step).
-    if (slope >= 0.0 && newton.solved && largest <= small_step && found()) {
-      done = true;
-      break;
-    }
-    const std::vector<Vec3> from = state.x;
-    double length = 1.0;
-    bool accepted = false;
-    while (slope < 0.0 && length >= kLeastLength) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const Index d = dofs.first_dof[i];
-        if (d >= 0) {
-          state.x[i] = from[i] + length * Vec3(step.segment<3>(d));
-        }
-      }
-      const double trial = energy();
-      if (trial <= e + kSufficientDecrease * length * slope ||
-          std::abs(trial - e) <= kEnergyRounding * std::abs(e)) {
-        e = trial;
-        accepted = true;
-        break;
-      }
-      length *= 0.5;
-    }
-    if (!accepted) {
-      state.x = from;
-      // A step this short that lowers no energy the rounding can see: the residual left is
-      // rounding's (a stiff bar's axial force, to a fraction of a picometre), not an unsolved step.
-      if (newton.solved && largest <= small_step) {
-        done = found();
-        if (done) {
-          break;
-        }
-        continue;  // a node landed: solve on with its friction
-      }
-      if (fresh) {
-        break;  // not even the Hessian of this iterate gives a step: split it
-      }
-      w.factored = false;  // a kept Hessian: factorise it here and try again
-      continue;
-    }
-    // Nodes that went below the plane with this step hold by friction from the next iterate on,
-    // rather than only once the step has converged without them (which restarted the
-    // convergence, once for every round of landings).
-    if (w.friction.join_new_touches(model, w.x_start, state.x)) {
-      e = energy();
-    }
-    gradient(g);
-    // A whole Newton step that moved no node further than `small_step`: the next would move them
-    // far less.
-    if (length == 1.0 && largest <= small_step && newton.solved && found()) {
-      done = true;
-      break;
-    }
-    fresh = false;
-    if (newton.exhausted) {
-      w.factored = false;
-    }
-  }
+  NewtonCounts counts;
+  const bool done = minimise_step(state.x, dofs, w.mass, hs, w.bar, potential, w.factored, counts);
+  stats_.iterations += counts.iterations;
+  stats_.solve_iterations += counts.solve_iterations;
+  stats_.factorizations += counts.factorizations;
   if (!done) {
     restore();
     return false;
@@ -553,7 +335,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
               ground_friction + w.objects.energy(model, state),
           ground_friction + w.objects.friction_energy(state.x)};
     };
-    gradient(g);
+    Vector g_end;
+    gradient(g_end);  // leaves the potential's forces at x_{n+1} in state.force
     measured.potential_force = free_part(dofs, state.force);
     std::tie(measured.potential_end, measured.friction_end) = step_potential();
     const std::vector<Vec3> x_end = state.x;

@@ -12,7 +12,7 @@
 // at rest, whatever their damping_ratio says; so a node that lands on the ground within a step
 // leaves it with the damper's restitution (ground_restitution.hpp), while contact between
 // objects' short steps bounce by themselves. The minimum is found by
-// Newton's method and a line search on E. Each Newton step is solved by conjugate gradients with
+// Newton's method and a line search on E (implicit_newton.hpp). Each Newton step is solved by conjugate gradients with
 // the Hessian's products taken from differences of the gradient, preconditioned with a factorised
 // sparse Hessian (stiffness_matrix.hpp) that is kept over iterations and steps until the solve
 // stops converging in a few iterations; then v_{n+1} = (x_{n+1} − x_n)/h. With `integrator:

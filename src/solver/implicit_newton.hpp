@@ -1,0 +1,69 @@
+#pragma once
+// The minimisation of one implicit step's incremental potential E (implicit_integrator.hpp) by
+// Newton's method, from wherever the integrator put state.x (the prediction x̂): each Newton step
+// solved by conjugate gradients on the Hessian's products, taken from differences of the
+// gradient and preconditioned with a factorised Hessian kept over iterations and steps; then a
+// line search on E. The integrator defines E for the step (its gradient, its value, the
+// Hessian's factorisation, the friction of nodes that land); this file holds how a minimum is
+// found and when it is found.
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace dinam {
+
+struct FreeDofs;
+
+// A step is found once a Newton step has been taken and either the out-of-balance force left
+// would move no node by more than this share of the median bar within the step (|g_i| h²/m_i), or
+// a whole Newton step moved none by more: far below what can be seen, far above rounding. (The
+// second test is the one a node pressed on the ground meets: the ground's stiffness, not its
+// mass, sets how far its residual force moves it.) Neither share may stand for an out-of-balance
+// acceleration above kConvergedAcceleration: the error each step leaves is a velocity error of
+// |g|h/m, and the motion's over a second is their sum, so on short steps (a pendulum of one
+// 1 m bar at 2.5 ms steps allowed 1.6 m/s² and lost half its swing in two periods) the bar's
+// share would allow too much. (1e-3 of g: over 3 s at most 3 cm/s of drift; the pendulum then
+// keeps its swing to 0.5 mm at 2.5 ms. 1e-4 of g made the Wuson's first 0.5 s take a third
+// longer, for no difference to be seen.)
+inline constexpr double kConvergedShare = 1e-5;
+inline constexpr double kConvergedAcceleration = 1e-2;  // m/s²
+
+// One step's incremental potential, as the integrator defines it for the step. Each function
+// works at state.x, the iterate.
+struct StepPotential {
+  std::function<void(Eigen::VectorXd& g)> gradient;  // ∇E, over the free degrees of freedom
+  std::function<double()> energy;                    // E
+  // Assembles and factorises the Hessian here into the kept factorisation; false where even its
+  // definite projection is not positive definite.
+  std::function<bool()> factor;
+  // The kept factorisation's solve, P⁻¹ r.
+  std::function<Eigen::VectorXd(const Eigen::VectorXd& r)> precondition;
+  // Nodes that went below the ground at this iterate since the step's start join its friction
+  // (ImplicitFriction::join_new_touches): true where E has changed with them.
+  std::function<bool()> join_new_touches;
+  // At what would be the step's solution: true where nodes that landed within the step join its
+  // friction (ImplicitFriction::add_new_touches), so that the step must be solved on.
+  std::function<bool()> add_new_touches;
+};
+
+// What a minimisation did, to be added to the run's counts (ImplicitStats).
+struct NewtonCounts {
+  std::int64_t iterations = 0;        // Newton iterations
+  std::int64_t solve_iterations = 0;  // of their conjugate gradients
+  std::int64_t factorizations = 0;    // Hessians assembled and factorised
+};
+
+// Minimises `potential` over the free nodes of state.x (dofs), starting from state.x, for a step
+// of `h` (the one the minimisation takes: BDF2's 2h/3) on a model of these free masses (one per
+// degree of freedom) and median bar. `factored` says whether the kept factorisation may be used
+// (the caller clears it where h changed); it is cleared where the kept one stopped describing
+// the Hessian. True with state.x at the minimum; false where Newton's method found no step (the
+// caller splits the step).
+bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Eigen::VectorXd& mass,
+                   double h, double bar, const StepPotential& potential, bool& factored,
+                   NewtonCounts& counts);
+
+}  // namespace dinam
