@@ -22,6 +22,7 @@ std::array<double, kEnergyColumns.size()> energy_row(const EnergyReport& r) {
           a.contact_damping_work,
           a.wind_work,
           a.field_work,
+          a.support_work,
           a.numerical_dissipation,
           r.total};
 }

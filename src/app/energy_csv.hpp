@@ -12,7 +12,7 @@
 namespace dinam {
 
 // The report's columns, each a name with its unit, and one frame's values in that order.
-inline constexpr std::array<const char*, 15> kEnergyColumns = {"time_s",
+inline constexpr std::array<const char*, 16> kEnergyColumns = {"time_s",
                                                                "kinetic_J",
                                                                "axial_J",
                                                                "bending_J",
@@ -25,6 +25,7 @@ inline constexpr std::array<const char*, 15> kEnergyColumns = {"time_s",
                                                                "contact_damping_work_J",
                                                                "wind_work_J",
                                                                "field_work_J",
+                                                               "support_work_J",
                                                                "numerical_dissipation_J",
                                                                "total_J"};
 std::array<double, kEnergyColumns.size()> energy_row(const EnergyReport& report);

@@ -21,7 +21,7 @@ constexpr double kBottom = 50.0;
 // A colour for each account after the time (kEnergyColumns' order), the total in black.
 constexpr std::array<const char*, kEnergyColumns.size()> kColors = {
     "",        "#d62728", "#1f77b4", "#2ca02c", "#17becf", "#8c564b", "#9467bd", "#ff7f0e",
-    "#e377c2", "#bcbd22", "#7f7f7f", "#aec7e8", "#98df8a", "#ffbb78", "#000000"};
+    "#e377c2", "#bcbd22", "#7f7f7f", "#aec7e8", "#98df8a", "#c5b0d5", "#ffbb78", "#000000"};
 
 // "kinetic_J" → "kinetic".
 std::string_view label_of(std::string_view column) {

@@ -40,7 +40,7 @@ EnergyReport energy_report(const Model& model, const State& state,
   report.total = report.kinetic + report.axial + report.bending + report.torsion +
                  report.gravitational + report.contact + a.plastic_dissipation +
                  a.numerical_dissipation - a.damping_work - a.friction_work -
-                 a.contact_damping_work - a.wind_work - a.field_work;
+                 a.contact_damping_work - a.wind_work - a.field_work - a.support_work;
   return report;
 }
 

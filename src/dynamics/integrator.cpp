@@ -92,6 +92,22 @@ double work(const std::vector<Vec3>& force, const std::vector<Vec3>& v_whole, do
   return w * dt;
 }
 
+// The work of the supports over a step around t_n: a pinned node moves by no force of the model
+// (its inverse mass is 0), so its support supplies whatever the structure's force on the node
+// (`force`, every kind's) resists, −F·v; a pin that holds still does none. The dissipative and
+// driving kinds' shares of F at the pinned node are booked as their own works too, so the
+// support's work against a damper is that damper's loss.
+double support_work(const Model& model, const std::vector<Vec3>& force,
+                    const std::vector<Vec3>& v_whole, double dt) {
+  double w = 0.0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    if (model.pinned(i)) {
+      w -= force[i].dot(v_whole[i]);
+    }
+  }
+  return w * dt;
+}
+
 // Writes the plastic sets of shared springs that the workers put aside (spring_block.hpp), once
 // every worker has read the old ones.
 void write_plastic_sets_put_aside(State& state) {
@@ -224,6 +240,7 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
       step_work.friction_work = work(ledger.friction, ledger.v_whole, dt);
       step_work.wind_work = work(ledger.wind, ledger.v_whole, dt);
       step_work.field_work = work(ledger.field, ledger.v_whole, dt);
+      step_work.support_work = support_work(model, state.force, ledger.v_whole, dt);
       state.energy.add_works(step_work, 0.5);
       ledger.last = energy_report(model, state, ledger.v_whole);
       state.energy.add_works(step_work, 0.5);

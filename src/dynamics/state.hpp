@@ -19,6 +19,9 @@ struct EnergyAccounts {
   double contact_damping_work = 0.0;  // contact normal damping (≤ 0)
   double wind_work = 0.0;             // aerodynamic drag
   double field_work = 0.0;            // field forces other than gravity
+  // What supports that move (pin_motion) did to the structure: −Σ F·v at the pinned nodes, F
+  // the structure's force on its node there. Zero while every pin holds still.
+  double support_work = 0.0;
   // What the implicit integrator's scheme took out (solver/implicit_energy.hpp); central
   // differences book none, their error staying in the total.
   double numerical_dissipation = 0.0;
@@ -30,6 +33,7 @@ struct EnergyAccounts {
     friction_work += fraction * works.friction_work;
     wind_work += fraction * works.wind_work;
     field_work += fraction * works.field_work;
+    support_work += fraction * works.support_work;
   }
 };
 

@@ -17,11 +17,13 @@ EnergyAccounts implicit_step_accounts(const ImplicitStepEnds& ends) {
   // The friction springs are part of P within the step and start afresh at the next: what they
   // gained over the step is what friction took.
   step.friction_work = ends.friction_start - ends.friction_end;
+  step.support_work = ends.support_work;
   const Eigen::VectorXd outside = ends.damper_force + ends.field_force + ends.wind_force;
-  step.numerical_dissipation =
-      free_kinetic_energy(ends.mass, ends.v_start) - free_kinetic_energy(ends.mass, ends.v_base) +
-      free_kinetic_energy(ends.mass, jump) + ends.potential_start - ends.potential_end -
-      ends.potential_force.dot(from_base) + outside.dot(ends.x_base - ends.x_start);
+  step.numerical_dissipation = free_kinetic_energy(ends.mass, ends.v_start) -
+                               free_kinetic_energy(ends.mass, ends.v_base) +
+                               free_kinetic_energy(ends.mass, jump) + ends.potential_start -
+                               ends.potential_end - ends.potential_force.dot(from_base) +
+                               outside.dot(ends.x_base - ends.x_start) + ends.support_work;
   return step;
 }
 

@@ -20,6 +20,10 @@
 // For backward Euler N = ½ |Δv|²_M + P(x_n) − P(x_{n+1}) − ∇P(x_{n+1})·(x_n − x_{n+1}), the
 // kinetic energy of the velocity's jump plus the Bregman divergence of P, never negative where P
 // is convex: the scheme only ever takes energy out. BDF2's N has no sign from step to step.
+// Supports that move (pin_motion) are placed at t_{n+1} before the step, so P's change holds
+// their move too: the support's work S = F_P,pin(x_{n+1})·(x_{n,pin} − x_{n+1,pin}), the same
+// quadrature, is booked as support work, and N takes the dot product over the pinned nodes as
+// well as the free ones (backward Euler's N is then still the whole Bregman divergence of P).
 #include <Eigen/Dense>
 
 #include "dynamics/state.hpp"
@@ -40,6 +44,7 @@ struct ImplicitStepEnds {
   double potential_end = 0.0;               // J, P(x_{n+1})
   double friction_start = 0.0;              // J, the friction springs' share of P(x_n)
   double friction_end = 0.0;                // J, and of P(x_{n+1})
+  double support_work = 0.0;                // J, S: the moving supports' (0 where none moves)
 };
 
 // The works and the numerical dissipation of the step (the plastic flow's is booked with the new

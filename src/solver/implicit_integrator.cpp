@@ -338,6 +338,11 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     Vector g_end;
     gradient(g_end);  // leaves the potential's forces at x_{n+1} in state.force
     measured.potential_force = free_part(dofs, state.force);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (dofs.first_dof[i] < 0) {  // a pinned node: its support's work
+        measured.support_work += state.force[i].dot(w.x_start[i] - state.x[i]);
+      }
+    }
     std::tie(measured.potential_end, measured.friction_end) = step_potential();
     const std::vector<Vec3> x_end = state.x;
     state.x = w.x_start;
