@@ -1,6 +1,7 @@
 #include "solver/implicit_dampers.hpp"
 
 #include <tuple>
+#include <utility>
 
 #include "dynamics/state.hpp"
 #include "model/model.hpp"
@@ -37,6 +38,33 @@ void add_damper_hessian(const Model& model, const State& state, const FreeDofs& 
       }
     }
   }
+}
+
+Eigen::VectorXd pinned_damper_forces(const Model& model, const State& state, const FreeDofs& dofs,
+                                     const std::vector<Vec3>& x_start,
+                                     const std::vector<Vec3>& x_base, double h) {
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(dofs.count);
+  if (!model.any_bar_damping || model.pin_motions.empty()) {
+    return force;
+  }
+  for (Index b = 0; b < model.bar_count(); ++b) {
+    const double c = model.bar_damping[b];
+    if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
+      continue;
+    }
+    const Index a = model.bar_nodes[2 * b];
+    const Index bb = model.bar_nodes[2 * b + 1];
+    const Vec3 e = (x_start[bb] - x_start[a]).normalized();
+    for (const auto& [free, pinned] : {std::pair{a, bb}, std::pair{bb, a}}) {
+      const Index d = dofs.first_dof[free];
+      if (d < 0 || dofs.first_dof[pinned] >= 0) {
+        continue;
+      }
+      // −c ((v_free − v_pinned)·e) e: the pinned end's share, with v_pinned = Δx_p / h.
+      force.segment<3>(d) += ((c / h) * e.dot(state.x[pinned] - x_base[pinned])) * e;
+    }
+  }
+  return force;
 }
 
 }  // namespace dinam

@@ -251,6 +251,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   add_damper_hessian(model, state, dofs, w.x_start, hs, w.damper_triplets);
   SparseMatrix damping(dofs.count, dofs.count);
   damping.setFromTriplets(w.damper_triplets.begin(), w.damper_triplets.end());
+  // The dampers' pull from supports that move, their ends placed at t_{n+1} above.
+  const Vector pinned_damping = pinned_damper_forces(model, state, dofs, w.x_start, w.x_base, hs);
 
   // The incremental potential's gradient g = M(x − x̂)/h² − F(x) + ∇hD, and the energy E, with
   // the dampers' velocities (x − x_b)/h.
@@ -266,7 +268,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     const Vector x = free_part(dofs, state.x);
     const Vector moved = x - start;
     g = (w.mass / (hs * hs)).cwiseProduct(x - predicted) +
-        (alpha / hs) * w.mass.cwiseProduct(moved) - free_part(dofs, state.force) + damping * moved;
+        (alpha / hs) * w.mass.cwiseProduct(moved) - free_part(dofs, state.force) + damping * moved -
+        pinned_damping;
   };
   auto energy = [&]() {
     const Vector x = free_part(dofs, state.x);
@@ -276,7 +279,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
            w.friction.energy(state.x) + w.objects.energy(model, state) +
            (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
            (0.5 * alpha / hs) * w.mass.dot(moved.cwiseProduct(moved)) +
-           0.5 * moved.dot(damping * moved);
+           0.5 * moved.dot(damping * moved) - pinned_damping.dot(moved);
   };
   auto restore = [&] {
     state.contact_touching = w.touching_start;
@@ -356,7 +359,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     measured.x_end = free_part(dofs, state.x);
     const Vector moved = measured.x_end - start;
     measured.v_end = moved / hs;
-    measured.damper_force = -(alpha / hs) * w.mass.cwiseProduct(moved) - damping * moved;
+    measured.damper_force =
+        -(alpha / hs) * w.mass.cwiseProduct(moved) - damping * moved + pinned_damping;
     measured.field_force = free_part(dofs, w.field_force);
     measured.wind_force = free_part(dofs, w.wind_force);
   }
