@@ -8,6 +8,25 @@
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
+namespace {
+
+// body(a, b, c, e) for every bar that damps (not broken, c > 0): its nodes, its damper's
+// coefficient and its direction at x_n.
+template <class Body>
+void for_each_damped_bar(const Model& model, const State& state, const std::vector<Vec3>& x_start,
+                         const Body& body) {
+  for (Index bar = 0; bar < model.bar_count(); ++bar) {
+    const double c = model.bar_damping[bar];
+    if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[bar] != 0)) {
+      continue;
+    }
+    const Index a = model.bar_nodes[2 * bar];
+    const Index b = model.bar_nodes[2 * bar + 1];
+    body(a, b, c, Vec3((x_start[b] - x_start[a]).normalized()));
+  }
+}
+
+}  // namespace
 
 void add_damper_hessian(const Model& model, const State& state, const FreeDofs& dofs,
                         const std::vector<Vec3>& x_start, double h,
@@ -15,17 +34,10 @@ void add_damper_hessian(const Model& model, const State& state, const FreeDofs& 
   if (!model.any_bar_damping) {
     return;
   }
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    const double c = model.bar_damping[b];
-    if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
-      continue;
-    }
-    const Index a = model.bar_nodes[2 * b];
-    const Index bb = model.bar_nodes[2 * b + 1];
-    const Vec3 e = (x_start[bb] - x_start[a]).normalized();
+  for_each_damped_bar(model, state, x_start, [&](Index a, Index b, double c, const Vec3& e) {
     const Eigen::Matrix3d block = (c / h) * e * e.transpose();
-    for (const auto& [p, q, sign] : {std::tuple{a, a, 1.0}, std::tuple{bb, bb, 1.0},
-                                     std::tuple{a, bb, -1.0}, std::tuple{bb, a, -1.0}}) {
+    for (const auto& [p, q, sign] : {std::tuple{a, a, 1.0}, std::tuple{b, b, 1.0},
+                                     std::tuple{a, b, -1.0}, std::tuple{b, a, -1.0}}) {
       const Index dp = dofs.first_dof[p];
       const Index dq = dofs.first_dof[q];
       if (dp < 0 || dq < 0) {
@@ -37,7 +49,7 @@ void add_damper_hessian(const Model& model, const State& state, const FreeDofs& 
         }
       }
     }
-  }
+  });
 }
 
 Eigen::VectorXd pinned_damper_forces(const Model& model, const State& state, const FreeDofs& dofs,
@@ -47,15 +59,8 @@ Eigen::VectorXd pinned_damper_forces(const Model& model, const State& state, con
   if (!model.any_bar_damping || model.pin_motions.empty()) {
     return force;
   }
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    const double c = model.bar_damping[b];
-    if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
-      continue;
-    }
-    const Index a = model.bar_nodes[2 * b];
-    const Index bb = model.bar_nodes[2 * b + 1];
-    const Vec3 e = (x_start[bb] - x_start[a]).normalized();
-    for (const auto& [free, pinned] : {std::pair{a, bb}, std::pair{bb, a}}) {
+  for_each_damped_bar(model, state, x_start, [&](Index a, Index b, double c, const Vec3& e) {
+    for (const auto& [free, pinned] : {std::pair{a, b}, std::pair{b, a}}) {
       const Index d = dofs.first_dof[free];
       if (d < 0 || dofs.first_dof[pinned] >= 0) {
         continue;
@@ -63,7 +68,7 @@ Eigen::VectorXd pinned_damper_forces(const Model& model, const State& state, con
       // −c ((v_free − v_pinned)·e) e: the pinned end's share, with v_pinned = Δx_p / h.
       force.segment<3>(d) += ((c / h) * e.dot(state.x[pinned] - x_base[pinned])) * e;
     }
-  }
+  });
   return force;
 }
 

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "dynamics/energy.hpp"
 #include "model/model.hpp"
@@ -29,6 +30,24 @@ State tracked_start(const Model& model, double h, ImplicitIntegrator& integrator
   return state;
 }
 
+// A mass on a spring: one bar along x, pinned at one end, without gravity, for backward Euler;
+// `motion` sets it going (an object key). Its free node has m = ρ A L / 2 and the bar k = E A / L.
+Model mass_on_a_spring(const std::string& motion) {
+  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+fps: 20
+integrator: implicit
+gravity: [0, 0, 0]
+ground: {{contact: false}}
+objects:
+  - mesh: {{polyline: {{points: [[0, 0, 1], [1, 0, 1]]}}}}
+    material: {{density: 1000, youngs_modulus: 1.0e6, radius: 0.01}}
+    pinned: {{indices: [0]}}
+    {}
+)",
+                                                       motion)));
+}
+
 // A mass on a spring: one bar along x, pinned at one end, its other end thrown along it at
 // v0 = 1 m/s, without gravity. Its free node has m = ρ A L / 2 and the bar k = E A / L, so
 // ω² = 2E/(ρL²) = 2000 s⁻², whatever the radius. Backward Euler maps (ωx, v) by a rotation
@@ -36,18 +55,7 @@ State tracked_start(const Model& model, double h, ImplicitIntegrator& integrator
 // ½ m v0² 2^−N is left, and the rest is the scheme's (numerical_dissipation). Each step may be
 // off by the residual's work, at most m × kResidualAcceleration × h v0 (the speed never grows).
 TEST(ImplicitEnergy, BackwardEulerTakesOutOfAnOscillatorWhatItsClosedFormSays) {
-  const Model model = build_model(test::scene_from_yaml(R"(version: 1
-duration: 1
-fps: 20
-integrator: implicit
-gravity: [0, 0, 0]
-ground: {contact: false}
-objects:
-  - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}
-    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
-    pinned: {indices: [0]}
-    initial_velocity: [1, 0, 0]
-)"));
+  const Model model = mass_on_a_spring("initial_velocity: [1, 0, 0]");
   const double omega = std::sqrt(2.0 * 1.0e6 / 1000.0);
   const double h = 1.0 / omega;
   const double mass = model.node_mass[1];
@@ -76,18 +84,8 @@ objects:
 // and the support, placed at t_{n+1}, does F_P(x_{n+1})·(x₀,ₙ − x₀,ₙ₊₁) = k uₙ₊₁ (x₀,ₙ − x₀,ₙ₊₁)
 // on it. Both against those closed forms, each step off by at most the residual's work.
 TEST(ImplicitEnergy, BackwardEulerBooksAShakenSupportsWorkAsItsClosedFormSays) {
-  const Model model = build_model(test::scene_from_yaml(R"(version: 1
-duration: 1
-fps: 20
-integrator: implicit
-gravity: [0, 0, 0]
-ground: {contact: false}
-objects:
-  - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}
-    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
-    pinned: {indices: [0]}
-    pin_motion: {displacement: [0.01, 0, 0], profile: {type: sine, frequency: 2}}
-)"));
+  const Model model = mass_on_a_spring(
+      "pin_motion: {displacement: [0.01, 0, 0], profile: {type: sine, frequency: 2}}");
   const double h = 1.0 / 80.0;
   const double mass = model.node_mass[1];
   const double k = model.bar_axial_stiffness[0];
