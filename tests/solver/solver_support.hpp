@@ -13,7 +13,7 @@ namespace dinam::test {
 
 inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // The implicit integrator's convergence: no node is left out of balance by more than this (m/s²,
-// implicit_integrator.cpp's kConvergedAcceleration), which bounds what each step may get wrong.
+// implicit_newton.hpp's kConvergedAcceleration), which bounds what each step may get wrong.
 inline constexpr double kResidualAcceleration = 1e-2;
 
 // Gravity, the springs and the ground: what a settle leaves on.
