@@ -8,8 +8,9 @@ packages=(
   libeigen3-dev libassimp-dev libosmesa6-dev libgl-dev libpng-dev
   libyaml-cpp-dev libcli11-dev libfmt-dev nlohmann-json3-dev libssl-dev
   # Newton's method and the natural modes: Spectra's Lanczos on Eigen's sparse matrices, and
-  # SuiteSparse's CHOLMOD for large models' factorisations.
-  libspectra-dev libsuitesparse-dev
+  # SuiteSparse's CHOLMOD for large models' factorisations, its dense blocks through the
+  # single-threaded OpenBLAS (src/solver/CMakeLists.txt).
+  libspectra-dev libsuitesparse-dev libopenblas0-serial
   libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
   # Real components the tests use where users meet them: Blender opens the motion cache

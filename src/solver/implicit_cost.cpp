@@ -10,19 +10,21 @@ namespace dinam {
 namespace {
 
 // Measured by `bench_implicit --costs` (bench/implicit_benchmark.cpp) on the Wuson, the paper's
-// flag and the end-to-end flag, one thread, 2026-11-26:
-// - a factorisation 0.47 to 0.56 ns a flop of CHOLMOD's count;
-// - an assembly 1.2 µs a spring with the exact Hessians (the Wuson), 2.6 to 4.6 µs with each
+// flag and the end-to-end flag, one thread, 2026-11-26, with CHOLMOD's supernodal factor through
+// the single-threaded OpenBLAS (positive_definite_solver.hpp):
+// - a factorisation 0.27, 0.34 and 0.65 ns a flop of CHOLMOD's count (the larger the model, the
+//   larger its dense blocks and the less a flop costs);
+// - an assembly 0.9 to 1.3 µs a spring with the exact Hessians, 2.7 to 5.2 µs with each
 //   element's projected; a factorisation whose exact Hessian is indefinite takes both, so about
 //   3 µs is taken;
-// - a solve 0.81 to 0.85 ns a nonzero of the factor, forward and back each;
+// - a solve 0.35, 0.47 and 0.61 ns a nonzero of the factor, forward and back each;
 // - a Newton iteration evaluates the forces once and the energy once or twice (the line
 //   search), each about a step of central differences' forces: 3 in all; each iteration of its
 //   linear solve, a solve with the factor and one force evaluation (the Hessian's product).
-constexpr double kNsPerFlop = 0.5;
+constexpr double kNsPerFlop = 0.3;
 constexpr double kAssemblyNsPerSpring = 3000.0;
 constexpr double kForceEvaluationsPerIteration = 3.0;
-constexpr double kNsPerFactorNonzero = 0.8;
+constexpr double kNsPerFactorNonzero = 0.4;
 
 }  // namespace
 

@@ -74,7 +74,7 @@ struct ImplicitIntegrator::Workspace {
   FreeDofs dofs;
   Vector mass;  // (dofs)
   StiffnessAssembly assembly;
-  PositiveDefiniteSolver solver;
+  PositiveDefiniteSolver solver{kFastestSupernodalFrom};
   std::vector<Eigen::Triplet<double>> damper_triplets;
   double bar = 1.0;        // m, the median bar
   double envelope = 0.0;   // m, the most a node of contact between objects may move in a step

@@ -1,5 +1,6 @@
 #include "solver/positive_definite_solver.hpp"
 
+#include <omp.h>
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -16,12 +17,26 @@ struct PositiveDefiniteSolver::Backend {
   Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> cholmod;
 };
 
-PositiveDefiniteSolver::PositiveDefiniteSolver() : backend_(std::make_unique<Backend>()) {
+PositiveDefiniteSolver::PositiveDefiniteSolver(Eigen::Index supernodal_from)
+    : supernodal_from_(supernodal_from), backend_(std::make_unique<Backend>()) {
   // A matrix that is not positive definite is an answer here, not an error to print.
   backend_->cholmod.cholmod().print = 0;
 }
 
 PositiveDefiniteSolver::~PositiveDefiniteSolver() = default;
+
+namespace {
+
+// Debian's CHOLMOD opens OpenMP parallel regions of four threads in its supernodal factorisation,
+// whatever share of the machine the process has, and libgomp's threads spin before they sleep:
+// the collapse on a shared machine that the thread team replaced (docs/threads.md). With no
+// active level allowed, every region runs on the thread that opens it. The setting is the calling
+// thread's (OpenMP's max-active-levels-var), so it is made before each call into CHOLMOD.
+void keep_cholmod_on_this_thread() {
+  omp_set_max_active_levels(0);
+}
+
+}  // namespace
 
 bool PositiveDefiniteSolver::factorize(const SparseMatrix& matrix) {
   Backend& b = *backend_;
@@ -41,8 +56,9 @@ bool PositiveDefiniteSolver::factorize(const SparseMatrix& matrix) {
       b.outer.assign(outer, outer + columns);
       b.inner.assign(inner, inner + entries);
     }
-    b.supernodal = matrix.rows() >= kSupernodalFrom;
+    b.supernodal = matrix.rows() >= supernodal_from_;
     if (b.supernodal) {
+      keep_cholmod_on_this_thread();
       b.cholmod.analyzePattern(matrix);
     } else {
       b.simplicial.analyzePattern(matrix);
@@ -50,6 +66,7 @@ bool PositiveDefiniteSolver::factorize(const SparseMatrix& matrix) {
     b.analysed = true;
   }
   if (b.supernodal) {
+    keep_cholmod_on_this_thread();
     b.cholmod.factorize(matrix);
     return b.cholmod.info() == Eigen::Success;
   }

@@ -1,11 +1,11 @@
 #pragma once
 // Solves with a sparse symmetric positive-definite matrix (a stiffness, shifted): Eigen's
-// simplicial Cholesky for small models, SuiteSparse's supernodal CHOLMOD from kSupernodalFrom
-// unknowns on, where its dense blocks make it several times faster (a 100 000-bar cloth: 6.7 s a
-// factorisation against 23 s; docs/performance.md, "Settling and modes"). Both give the same
-// bits on any machine and thread count: CHOLMOD's blocks go through the BLAS, and Debian's
-// reference BLAS is single-threaded and uses no fused multiply-add. (An optimised BLAS installed
-// as the system's libblas would be faster and make the last bits depend on the machine.)
+// simplicial Cholesky for small models, SuiteSparse's supernodal CHOLMOD from a number of
+// unknowns on, where its dense blocks, through the single-threaded OpenBLAS, make it faster to
+// factorise and to solve with. Both run on the calling thread alone (CHOLMOD's own OpenMP threads
+// kept off), so both give the same bits for any thread count. They differ across machines:
+// Eigen's simplicial factor gives the same bits on every machine built at the same vector width,
+// CHOLMOD's depends on the OpenBLAS kernels chosen for the CPU.
 #include <Eigen/Core>
 #include <memory>
 
@@ -13,11 +13,21 @@
 
 namespace dinam {
 
+// Where the results start every render (the settled shape, Newton's equilibrium, and the natural
+// modes), so that a scene's motion and its snapshots are the same on every machine: simplicial
+// below 16 000 unknowns (every shipped scene), CHOLMOD above, several times faster at that size
+// (a 100 000-bar cloth: 6.7 s a factorisation against 23 s with the reference BLAS;
+// docs/performance.md, "Settling and modes").
 inline constexpr Eigen::Index kSupernodalFrom = 16000;
+// Where speed is all that counts (the implicit integrator's steps): CHOLMOD through OpenBLAS
+// factorises and solves faster from a couple of hundred unknowns on (docs/performance.md,
+// "CHOLMOD through OpenBLAS").
+inline constexpr Eigen::Index kFastestSupernodalFrom = 100;
 
 class PositiveDefiniteSolver {
  public:
-  PositiveDefiniteSolver();
+  // Factorises with CHOLMOD from `supernodal_from` unknowns on.
+  explicit PositiveDefiniteSolver(Eigen::Index supernodal_from = kSupernodalFrom);
   ~PositiveDefiniteSolver();
   PositiveDefiniteSolver(const PositiveDefiniteSolver&) = delete;
   PositiveDefiniteSolver& operator=(const PositiveDefiniteSolver&) = delete;
@@ -32,6 +42,7 @@ class PositiveDefiniteSolver {
 
  private:
   struct Backend;
+  Eigen::Index supernodal_from_;
   std::unique_ptr<Backend> backend_;
 };
 
