@@ -52,13 +52,13 @@ void element_matrix(const double* stiffness, int node_count, Definiteness defini
   }
 }
 
-// Calls column(row_dof, col_dof, values) for each column of each 3 × 3 block of an element's
-// matrix (`matrix`, 3 node_count square, column-major) between two free nodes: `values` are the
-// column's three rows, row_dof's x, y and z; stops where it returns false.
-template <class Column>
-void for_each_block_column(const FreeDofs& dofs, const Index* nodes, int node_count,
-                           const std::vector<double>& matrix, const Column& column) {
-  const int size = 3 * node_count;
+// Calls block(row_dof, col_dof, columns, stride) for each 3 × 3 block of an element's matrix
+// (`matrix`, 3 node_count square, column-major) between two free nodes: the block's column b
+// holds row_dof's x, y and z at columns + b stride, for col_dof + b. Stops where it returns false.
+template <class Block>
+void for_each_block(const FreeDofs& dofs, const Index* nodes, int node_count,
+                    const std::vector<double>& matrix, const Block& block) {
+  const auto size = static_cast<std::size_t>(3 * node_count);
   for (int col_node = 0; col_node < node_count; ++col_node) {
     const Index col_dof = dofs.first_dof[nodes[col_node]];
     if (col_dof < 0) {
@@ -69,11 +69,9 @@ void for_each_block_column(const FreeDofs& dofs, const Index* nodes, int node_co
       if (row_dof < 0) {
         continue;
       }
-      for (int b = 0; b < 3; ++b) {
-        const std::size_t at = (3 * static_cast<std::size_t>(col_node) + b) * size + 3 * row_node;
-        if (!column(row_dof, col_dof + b, &matrix[at])) {
-          return;
-        }
+      const std::size_t at = 3 * static_cast<std::size_t>(col_node) * size + 3 * row_node;
+      if (!block(row_dof, col_dof, &matrix[at], size)) {
+        return;
       }
     }
   }
@@ -88,13 +86,15 @@ class TripletSink final : public StiffnessSink {
 
   void add(const Index* nodes, int node_count, const double* stiffness) override {
     element_matrix(stiffness, node_count, definiteness_, scratch_);
-    for_each_block_column(dofs_, nodes, node_count, scratch_,
-                          [&](Index row_dof, Index col_dof, const double* values) {
-                            for (int a = 0; a < 3; ++a) {
-                              triplets_.emplace_back(row_dof + a, col_dof, values[a]);
-                            }
-                            return true;
-                          });
+    for_each_block(dofs_, nodes, node_count, scratch_,
+                   [&](Index row_dof, Index col_dof, const double* columns, std::size_t stride) {
+                     for (int b = 0; b < 3; ++b) {
+                       for (int a = 0; a < 3; ++a) {
+                         triplets_.emplace_back(row_dof + a, col_dof + b, columns[b * stride + a]);
+                       }
+                     }
+                     return true;
+                   });
   }
 
  private:
@@ -122,24 +122,34 @@ class PatternSink final : public StiffnessSink {
     const int* outer = matrix_.outerIndexPtr();
     const int* inner = matrix_.innerIndexPtr();
     double* matrix_values = matrix_.valuePtr();
-    for_each_block_column(dofs_, nodes, node_count, scratch_,
-                          [&](Index row_dof, Index col_dof, const double* values) {
-                            // The block's three rows follow one another in each of its columns:
-                            // every block of the pattern came in whole (explicit zeros included).
-                            const int* first = inner + outer[col_dof];
-                            const int* last = inner + outer[col_dof + 1];
-                            const int* at =
-                                std::lower_bound(first, last, static_cast<int>(row_dof));
-                            if (last - at < 3 || *at != row_dof) {
-                              missed_ = true;
-                              return false;
-                            }
-                            double* column_values = matrix_values + (at - inner);
-                            for (int a = 0; a < 3; ++a) {
-                              column_values[a] += values[a];
-                            }
-                            return true;
-                          });
+    for_each_block(dofs_, nodes, node_count, scratch_,
+                   [&](Index row_dof, Index col_dof, const double* columns, std::size_t stride) {
+                     // The block's three rows follow one another in each of its three columns, at
+                     // the same place in each: every block of the pattern came in whole (explicit
+                     // zeros included), so a node's three columns hold the same rows. One search
+                     // finds the block.
+                     const int* first = inner + outer[col_dof];
+                     const int* last = inner + outer[col_dof + 1];
+                     const int* at = std::lower_bound(first, last, static_cast<int>(row_dof));
+                     if (last - at < 3 || *at != row_dof) {
+                       missed_ = true;
+                       return false;
+                     }
+                     const std::ptrdiff_t place = at - first;
+                     for (int b = 1; b < 3; ++b) {  // (so it is built; a check costs two loads)
+                       if (inner[outer[col_dof + b] + place] != row_dof) {
+                         missed_ = true;
+                         return false;
+                       }
+                     }
+                     for (int b = 0; b < 3; ++b) {
+                       double* column_values = matrix_values + outer[col_dof + b] + place;
+                       for (int a = 0; a < 3; ++a) {
+                         column_values[a] += columns[b * stride + a];
+                       }
+                     }
+                     return true;
+                   });
   }
 
  private:
