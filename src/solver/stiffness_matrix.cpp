@@ -58,7 +58,7 @@ void element_matrix(const double* stiffness, int node_count, Definiteness defini
 template <class Block>
 void for_each_block(const FreeDofs& dofs, const Index* nodes, int node_count,
                     const std::vector<double>& matrix, const Block& block) {
-  const auto size = static_cast<std::size_t>(3 * node_count);
+  const std::size_t size = 3 * static_cast<std::size_t>(node_count);
   for (int col_node = 0; col_node < node_count; ++col_node) {
     const Index col_dof = dofs.first_dof[nodes[col_node]];
     if (col_dof < 0) {
