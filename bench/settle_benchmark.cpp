@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -84,6 +85,9 @@ void compare(const char* name, const SceneDescription& scene, double dt, int rep
         animation_seconds, 100.0 * relaxed.seconds / animation_seconds,
         100.0 * newton.seconds / animation_seconds);
   }
+  // Out now: the large flag's comparison that follows runs for many minutes, and a run cut short
+  // would lose the figures still in the buffer.
+  std::fflush(stdout);
 }
 
 }  // namespace
