@@ -122,25 +122,24 @@ class PatternSink final : public StiffnessSink {
     const int* outer = matrix_.outerIndexPtr();
     const int* inner = matrix_.innerIndexPtr();
     double* matrix_values = matrix_.valuePtr();
+    // Whether column `column` holds `row` at its entry `place`, with the block's three rows there.
+    auto holds = [&](Index column, std::ptrdiff_t place, Index row) {
+      return place >= 0 && outer[column + 1] - outer[column] - place >= 3 &&
+             inner[outer[column] + place] == row;
+    };
     for_each_block(dofs_, nodes, node_count, scratch_,
                    [&](Index row_dof, Index col_dof, const double* columns, std::size_t stride) {
-                     // The block's three rows follow one another in each of its three columns, at
-                     // the same place in each: every block of the pattern came in whole (explicit
-                     // zeros included), so a node's three columns hold the same rows. One search
-                     // finds the block.
+                     // Every block of the pattern came in whole (explicit zeros included), so a
+                     // node's three columns hold the same rows: one search in the first finds the
+                     // block's place in all three (checked, since a miss means a new pattern).
                      const int* first = inner + outer[col_dof];
                      const int* last = inner + outer[col_dof + 1];
-                     const int* at = std::lower_bound(first, last, static_cast<int>(row_dof));
-                     if (last - at < 3 || *at != row_dof) {
+                     const std::ptrdiff_t place =
+                         std::lower_bound(first, last, static_cast<int>(row_dof)) - first;
+                     if (!holds(col_dof, place, row_dof) || !holds(col_dof + 1, place, row_dof) ||
+                         !holds(col_dof + 2, place, row_dof)) {
                        missed_ = true;
                        return false;
-                     }
-                     const std::ptrdiff_t place = at - first;
-                     for (int b = 1; b < 3; ++b) {  // (so it is built; a check costs two loads)
-                       if (inner[outer[col_dof + b] + place] != row_dof) {
-                         missed_ = true;
-                         return false;
-                       }
                      }
                      for (int b = 0; b < 3; ++b) {
                        double* column_values = matrix_values + outer[col_dof + b] + place;
