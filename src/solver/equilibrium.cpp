@@ -9,7 +9,7 @@
 
 #include "dynamics/relaxation.hpp"
 #include "model/model.hpp"
-#include "solver/line_search.hpp"
+#include "solver/sufficient_decrease.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"

@@ -31,6 +31,8 @@ using Vector = Eigen::VectorXd;
 // Halvings of a step before the run gives up, and of them those the error criterion may ask for.
 constexpr int kMostSplits = 10;
 constexpr int kErrorSplits = 5;
+// Sub-steps taken at a level of splitting before a sub-step twice as long is tried again.
+constexpr int kTakenBeforeLonger = 2;
 
 // The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
 // anchors are not updated (compute_static_forces), and no node is marked touching, so no stick
@@ -94,6 +96,8 @@ struct ImplicitIntegrator::Workspace {
   std::vector<Eigen::Triplet<double>> friction_triplets;
   bool factored = false;  // `solver` holds a factorised Hessian of a step of `factored_h`
   double factored_h = 0.0;
+  double trust_radius =
+      0.0;  // Newton's trust region, carried from step to step (implicit_newton.hpp)
 
   // Assembles and factorises the incremental potential's Hessian at state.x: the stiffness as it
   // is, which M/h² makes definite unless a step is long against a buckling structure's
@@ -149,29 +153,51 @@ void ImplicitIntegrator::report_energy(State& state) {
 }
 
 void ImplicitIntegrator::advance(State& state, double h, std::int64_t steps) {
+  if (h != split_of_h_) {  // the level of splitting found is a share of the step it was found on
+    split_of_h_ = h;
+    level_ = 0;
+    taken_at_level_ = 0;
+  }
   for (std::int64_t k = 0; k < steps; ++k) {
-    step_or_split(state, h, 0);
+    step_adaptively(state, h);
   }
 }
 
-void ImplicitIntegrator::step_or_split(State& state, double h, int depth) {
-  // Past kErrorSplits halvings only Newton's convergence splits a step: an impact's jump in
-  // acceleration is no error that a shorter step would remove.
-  if (try_step(state, h, depth < kErrorSplits)) {
-    return;
+void ImplicitIntegrator::step_adaptively(State& state, double h) {
+  // Positions within the step in units of its finest split, h/2^kMostSplits, so that the sub-steps
+  // end exactly at the step's end: a sub-step of level l is 2^(kMostSplits − l) units, and `done`
+  // is always a multiple of the present level's.
+  constexpr std::int64_t kWhole = std::int64_t{1} << kMostSplits;
+  std::int64_t done = 0;
+  while (done < kWhole) {
+    const double sub_step = std::ldexp(h, -level_);
+    // Past kErrorSplits halvings only Newton's convergence splits a step: an impact's jump in
+    // acceleration is no error that a shorter step would remove.
+    if (try_step(state, sub_step, level_ < kErrorSplits)) {
+      done += kWhole >> level_;
+      taken_at_level_ += 1;
+      // Back up a level after kTakenBeforeLonger sub-steps at this one, where the longer
+      // sub-step would start here.
+      const std::int64_t longer = kWhole >> std::max(level_ - 1, 0);
+      if (level_ > 0 && taken_at_level_ >= kTakenBeforeLonger && done % longer == 0) {
+        level_ -= 1;
+        taken_at_level_ = 0;
+      }
+      continue;
+    }
+    if (level_ >= kMostSplits) {
+      throw RuntimeError(fmt::format(
+          "the implicit integrator found no step at t = {:.6g} s even of {:.3g} s (Newton's "
+          "method does not converge there{}); try 'integrator: central_difference'",
+          state.time, sub_step,
+          model_.contact.enabled ? ", or a node of the contact between objects moves more than "
+                                   "half its smallest radius even in so short a step"
+                                 : ""));
+    }
+    stats_.splits += 1;
+    level_ += 1;
+    taken_at_level_ = 0;
   }
-  if (depth >= kMostSplits) {
-    throw RuntimeError(fmt::format(
-        "the implicit integrator found no step at t = {:.6g} s even of {:.3g} s (Newton's method "
-        "does not converge there{}); try 'integrator: central_difference'",
-        state.time, h,
-        model_.contact.enabled ? ", or a node of the contact between objects moves more than "
-                                 "half its smallest radius even in so short a step"
-                               : ""));
-  }
-  stats_.splits += 1;
-  step_or_split(state, 0.5 * h, depth + 1);
-  step_or_split(state, 0.5 * h, depth + 1);
 }
 
 bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
@@ -300,8 +326,9 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       state.x[i] = w.predicted[i];
     }
   }
-  if (w.factored_h != hs) {
+  if (w.factored_h != hs) {  // the kept Hessian, and the trust region in its norm, are of another h
     w.factored = false;
+    w.trust_radius = 0.0;
   }
   const StepPotential potential{
       .gradient = gradient,
@@ -312,7 +339,8 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
       .add_new_touches = [&] { return w.friction.add_new_touches(model, w.x_start, state.x); },
   };
   NewtonCounts counts;
-  const bool done = minimise_step(state.x, dofs, w.mass, hs, w.bar, potential, w.factored, counts);
+  const bool done = minimise_step(state.x, dofs, w.mass, hs, w.bar, potential, w.factored,
+                                  w.trust_radius, counts);
   stats_.iterations += counts.iterations;
   stats_.solve_iterations += counts.solve_iterations;
   stats_.factorizations += counts.factorizations;

@@ -11,9 +11,9 @@
 // the contact's dampers are left out: backward Euler's long step into a penalty ends an impact
 // at rest, whatever their damping_ratio says; so a node that lands on the ground within a step
 // leaves it with the damper's restitution (ground_restitution.hpp), while contact between
-// objects' short steps bounce by themselves. The minimum is found by
-// Newton's method and a line search on E (implicit_newton.hpp). Each Newton step is solved by conjugate gradients with
-// the Hessian's products taken from differences of the gradient, preconditioned with a factorised
+// objects' short steps bounce by themselves. The minimum is found by Newton's method in a trust
+// region on E (implicit_newton.hpp): each Newton step by truncated conjugate gradients with the
+// Hessian's products taken from differences of the gradient, preconditioned with a factorised
 // sparse Hessian (stiffness_matrix.hpp) that is kept over iterations and steps until the solve
 // stops converging in a few iterations; then v_{n+1} = (x_{n+1} − x_n)/h. With `integrator:
 // implicit_bdf2` (ImplicitScheme:: kBdf2) a step of h after one of the same h is BDF2's, which is
@@ -22,7 +22,9 @@
 // Either is L-stable: a step is never limited by the stiffest bar. It is split in halves where
 // Newton does not converge or where its local error, h²/2 |a_{n+1} − a_n| at some node, passes
 // kImplicitErrorShare of the median bar (but for a step in which a node meets or leaves the
-// ground).
+// ground), and the halving is kept for the steps that follow until a few of them have gone
+// through: a folding structure that needed it for one step needs it for the next, and a step
+// tried whole again only to fail costs a whole minimisation.
 //
 // Springs that yield: the plastic sets are held at the step's start while Newton minimises the
 // stored energy plus the work of the flow from them (SpringEnergy::kWithFlow, whose gradient is
@@ -74,11 +76,18 @@ class ImplicitIntegrator {
   // One step of h; false (and `state` as it was) where Newton did not converge or, with
   // `check_error`, the local error is too large.
   bool try_step(State& state, double h, bool check_error);
-  void step_or_split(State& state, double h, int depth);
+  // One step of h in sub-steps of h/2^level_, the level carried from sub-step to sub-step and
+  // from step to step: one deeper where a sub-step fails, one shallower after a few succeed.
+  void step_adaptively(State& state, double h);
 
   const Model& model_;
   std::unique_ptr<Workspace> work_;
   ImplicitStats stats_;
+  // The splitting a step of `split_of_h_` needs now: its sub-steps are h/2^level_, and
+  // taken_at_level_ of them have been taken since the level last changed.
+  double split_of_h_ = 0.0;
+  int level_ = 0;
+  int taken_at_level_ = 0;
 };
 
 }  // namespace dinam

@@ -4,8 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "solver/line_search.hpp"
 #include "solver/stiffness_matrix.hpp"
+#include "solver/sufficient_decrease.hpp"
+#include "solver/truncated_cg.hpp"
 
 namespace dinam {
 namespace {
@@ -14,31 +15,29 @@ using Vector = Eigen::VectorXd;
 
 // Newton iterations a step may take before it is split.
 constexpr int kMostIterations = 25;
-// The line search's least step length before the step is split instead (its sufficient decrease
-// is the equilibrium's: line_search.hpp).
-constexpr double kLeastLength = 1.0 / 1024;
-// The Newton step's linear solve (conjugate gradients preconditioned with the kept factorisation):
-// the share of the gradient its residual is cut to, and the iterations it may take before the
-// Hessian is factorised again. (An iteration costs a solve with the factor and a force
-// evaluation, about 1.3 ms on the Wuson; a factorisation 60 to 130 ms.)
+// The Newton step's linear solve (truncated conjugate gradients preconditioned with the kept
+// factorisation): the share of the gradient its residual is cut to, and the iterations it may
+// take before the Hessian is factorised again. (An iteration costs a solve with the factor and a
+// force evaluation, about 1.3 ms on the Wuson; a factorisation 60 to 130 ms.)
 constexpr double kForcing = 0.01;
 constexpr int kMostSolveIterations = 30;
+// The trust region (Nocedal and Wright, Algorithm 4.1): shrunk to a quarter of the step tried
+// where the energy fell by less than a quarter of what the quadratic model promised, doubled
+// where it fell by more than three quarters of it at the region's edge.
+constexpr double kPoorAgreement = 0.25;
+constexpr double kGoodAgreement = 0.75;
+// Regions tried at one iterate before the step is split (each a quarter of the last at most:
+// 16 take it below 1e-9 of the first).
+constexpr int kMostShrinks = 16;
 // Times a step's solve goes on with the friction of nodes that landed within it
 // (ImplicitFriction::add_new_touches): a node that lands where the last round had it above the
 // plane needs another.
 constexpr int kMostLandingRounds = 3;
 
-// The Newton step s, H s = −g, and how its solve ended.
-struct NewtonStep {
-  Vector step;
-  bool solved = false;     // to the tolerance
-  bool exhausted = false;  // stopped at kMostSolveIterations
-};
-
 }  // namespace
 
 bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mass, double h,
-                   double bar, const StepPotential& potential, bool& factored,
+                   double bar, const StepPotential& potential, bool& factored, double& radius,
                    NewtonCounts& counts) {
   const std::size_t n = x.size();
   const double converged =  // m/s², a node's |g|/m
@@ -55,6 +54,14 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     }
     return worst;
   };
+  // The longest move of a node in a step over the free dofs, m.
+  auto longest_move = [&](const Vector& step) {
+    double longest = 0.0;
+    for (Index d = 0; d < dofs.count; d += 3) {
+      longest = std::max(longest, step.segment<3>(d).norm());
+    }
+    return longest;
+  };
   // H v, the incremental potential's Hessian at x along v, from the gradient there (`g`) and at
   // x + ε v: exact for the inertia and dampers, and to about 1e-7 for the springs (the
   // difference step, √(rounding × extent × bar), balances the gradient's rounding against the
@@ -68,10 +75,7 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
   Vector g_moved;
   std::vector<Vec3> x_iterate;
   auto hessian_times = [&](const Vector& v, Vector& product) {
-    double furthest = 0.0;
-    for (Index d = 0; d < dofs.count; d += 3) {
-      furthest = std::max(furthest, v.segment<3>(d).norm());
-    }
+    const double furthest = longest_move(v);
     if (furthest == 0.0) {
       product.setZero(dofs.count);
       return;
@@ -88,60 +92,27 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     x = x_iterate;
     product = (g_moved - g) / epsilon;
   };
-  // The Newton step s, H s = −g, by conjugate gradients preconditioned with the kept factorised
-  // Hessian P (an earlier iterate's or step's; exactly H for a linear problem, where the first
-  // iteration is the whole step). A node that met the ground or a spring that turned since P was
+  // The Newton step's path (truncated_cg.hpp), preconditioned with the kept factorised Hessian P
+  // (an earlier iterate's or step's; exactly H for a linear problem, where the first iteration
+  // is the whole step). A node that met the ground or a spring that turned since P was
   // factorised is an eigenvalue of P⁻¹H away from 1, which costs the solve an iteration or two,
-  // where factorising again costs dozens. Stops once the residual is kForcing of g's (an inexact
-  // Newton step, which still converges fast) or below half the convergence tolerance; at a
-  // direction of negative curvature (the structure is unstable there: the step so far still goes
-  // downhill, and the first iteration's P⁻¹(−g) does, P being positive definite); or after
-  // kMostSolveIterations, where P no longer describes H and is factorised again at the next
-  // iterate.
-  Vector residual, preconditioned, direction, product;
-  auto newton_step = [&]() {
-    NewtonStep result;
-    result.step.setZero(dofs.count);
-    residual = -g;
-    const double target = std::max(kForcing * worst_of(g), 0.5 * converged);
-    // Nothing out of balance at all (a body in free flight without gravity, where x̂ is exact):
-    // the step is zero, and solved. (A residual however small is solved for: a slow motion would
-    // otherwise stop where x̂ put it.)
-    if (worst_of(residual) == 0.0) {
-      result.solved = true;
-      return result;
-    }
-    preconditioned = potential.precondition(residual);
-    direction = preconditioned;
-    double along = residual.dot(preconditioned);
-    for (int k = 0; k < kMostSolveIterations; ++k) {
-      counts.solve_iterations += 1;
-      hessian_times(direction, product);
-      const double curvature = direction.dot(product);
-      if (!(curvature > 0.0)) {
-        if (k == 0) {
-          result.step = direction;
-        }
-        return result;
-      }
-      const double length = along / curvature;
-      result.step += length * direction;
-      residual -= length * product;
-      if (worst_of(residual) <= target) {
-        result.solved = true;
-        return result;
-      }
-      preconditioned = potential.precondition(residual);
-      const double along_next = residual.dot(preconditioned);
-      direction = preconditioned + (along_next / along) * direction;
-      along = along_next;
-    }
-    result.exhausted = true;
-    return result;
+  // where factorising again costs dozens. The path ends once its residual is kForcing of g's (an
+  // inexact Newton step, which still converges fast) or below half the convergence tolerance; at
+  // a direction of negative curvature (the structure buckles there), which it follows to the
+  // region's edge; at the region's edge; or after kMostSolveIterations, where P no longer
+  // describes H and is factorised again at the next iterate.
+  TruncatedCg path;
+  const TruncatedCg::Operators operators{
+      .hessian_times = hessian_times,
+      .precondition = potential.precondition,
+      .solved =
+          [&](const Vector& r, const Vector& g0) {
+            return worst_of(r) <= std::max(kForcing * worst_of(g0), 0.5 * converged);
+          },
   };
   // The factorised Hessian is kept from iterate to iterate and from step to step (assembling and
   // factorising it costs far more than a force), and factorised again where the solve above
-  // exhausts its iterations, where a step with it finds no descent, and where h changes.
+  // exhausts its iterations, where no region at an iterate gives a step, and where h changes.
   // `fresh`: it was factorised at this iterate.
   bool fresh = false;
   auto factor_here = [&] {
@@ -160,6 +131,13 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     }
     return true;
   };
+  // The trust region's radius, in P's norm |s|_P = √(sᵀ P s) (whose square is twice the energy a
+  // step would store in the kept Hessian), carried from the step before: no smaller than the norm
+  // of the first preconditioned gradient step P⁻¹g, which is the whole Newton step where P is H,
+  // so that a step the model describes well is never cut by a region that an earlier, harder
+  // step shrank.
+  bool region_set = false;
+  std::vector<Vec3> from;
   for (int iteration = 0; iteration < kMostIterations; ++iteration) {
     // At least one Newton step: from x̂ alone a slow motion would pass the test unsolved (a
     // linear step is exact after one).
@@ -170,42 +148,47 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     if (!factored && !factor_here()) {
       return false;
     }
-    const NewtonStep newton = newton_step();
-    const Vector& step = newton.step;
-    double largest = 0.0;  // m, the step's longest move of a node
-    for (Index d = 0; d < dofs.count; d += 3) {
-      largest = std::max(largest, step.segment<3>(d).norm());
-    }
-    const double slope = g.dot(step);  // < 0 for a descent direction
-    // No descent left to take, and none needed (a structure at rest with nothing moving it: the
-    // gradient is zero and so is the step).
-    if (slope >= 0.0 && newton.solved && largest <= small_step && found()) {
-      return true;
-    }
-    const std::vector<Vec3> from = x;
-    double length = 1.0;
+    counts.solve_iterations += path.build(g, radius, !region_set, kMostSolveIterations, operators);
+    radius = path.region();
+    region_set = true;
+    // Steps within ever smaller regions, until one lowers the energy by enough of what the model
+    // promised.
+    from = x;
     bool accepted = false;
-    while (slope < 0.0 && length >= kLeastLength) {
+    TruncatedCg::Point point;
+    double longest = 0.0;
+    for (int shrink = 0; shrink < kMostShrinks && !accepted; ++shrink) {
+      point = path.at(radius);
+      longest = longest_move(point.step);
       for (std::size_t i = 0; i < n; ++i) {
         const Index d = dofs.first_dof[i];
         if (d >= 0) {
-          x[i] = from[i] + length * Vec3(step.segment<3>(d));
+          x[i] = from[i] + Vec3(point.step.segment<3>(d));
         }
       }
       const double trial = potential.energy();
-      if (trial <= e + kSufficientDecrease * length * slope ||
-          std::abs(trial - e) <= kEnergyRounding * std::abs(e)) {
+      const double promised = -point.model;
+      // Energies equal within rounding say nothing of the model: the step is taken, the region
+      // kept, and the step judged by the out-of-balance force.
+      const bool rounding = std::abs(trial - e) <= kEnergyRounding * std::abs(e);
+      const double agreement = promised > 0.0 ? (e - trial) / promised : -1.0;
+      if (!rounding && agreement < kPoorAgreement) {
+        radius = kPoorAgreement * point.norm;
+      } else if (!rounding && agreement > kGoodAgreement && point.at_edge) {
+        radius *= 2.0;
+      }
+      if (rounding || agreement > kSufficientDecrease) {
         e = trial;
         accepted = true;
-        break;
+      } else if (longest <= small_step) {
+        break;  // no step this short lowers the energy the rounding can see
       }
-      length *= 0.5;
     }
     if (!accepted) {
       x = from;
       // A step this short that lowers no energy the rounding can see: the residual left is
       // rounding's (a stiff bar's axial force, to a fraction of a picometre), not an unsolved step.
-      if (newton.solved && largest <= small_step) {
+      if (path.solved() && longest <= small_step) {
         if (found()) {
           return true;
         }
@@ -226,11 +209,11 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     potential.gradient(g);
     // A whole Newton step that moved no node further than `small_step`: the next would move them
     // far less.
-    if (length == 1.0 && largest <= small_step && newton.solved && found()) {
+    if (!point.at_edge && path.solved() && longest <= small_step && found()) {
       return true;
     }
     fresh = false;
-    if (newton.exhausted) {
+    if (path.exhausted()) {
       factored = false;
     }
   }

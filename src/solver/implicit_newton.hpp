@@ -1,11 +1,17 @@
 #pragma once
 // The minimisation of one implicit step's incremental potential E (implicit_integrator.hpp) by
-// Newton's method, from wherever the integrator put state.x (the prediction x̂): each Newton step
-// solved by conjugate gradients on the Hessian's products, taken from differences of the
-// gradient and preconditioned with a factorised Hessian kept over iterations and steps; then a
-// line search on E. The integrator defines E for the step (its gradient, its value, the
-// Hessian's factorisation, the friction of nodes that land); this file holds how a minimum is
-// found and when it is found.
+// Newton's method in a trust region, from wherever the integrator put state.x (the prediction
+// x̂): each Newton step is Steihaug's truncated conjugate gradients (truncated_cg.hpp) on the
+// Hessian's products, taken from differences of the gradient and preconditioned with a
+// factorised Hessian P kept over iterations and steps, within a region |s|_P ≤ Δ in P's norm; a
+// step is taken where E falls by enough of what the quadratic model promised, and Δ grows or
+// shrinks with how well they agreed. A structure that buckles has directions of negative
+// curvature, which the region lets a step follow as far as the model holds, and a folding
+// structure's energy is far from quadratic over a bar's length: the region keeps the solves
+// from computing Newton steps that a line search would then cut to a fraction (docs/
+// performance.md, "A trust region"). The integrator defines E for the step (its gradient, its
+// value, the Hessian's factorisation, the friction of nodes that land); this file holds how a
+// minimum is found and when it is found.
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
@@ -60,10 +66,11 @@ struct NewtonCounts {
 // of `h` (the one the minimisation takes: BDF2's 2h/3) on a model of these free masses (one per
 // degree of freedom) and median bar. `factored` says whether the kept factorisation may be used
 // (the caller clears it where h changed); it is cleared where the kept one stopped describing
-// the Hessian. True with state.x at the minimum; false where Newton's method found no step (the
-// caller splits the step).
+// the Hessian. `radius` is the trust region's, in the kept factorisation's norm, carried from
+// step to step (the caller sets it to 0, "none yet", where h changed). True with state.x at the
+// minimum; false where Newton's method found no step (the caller splits the step).
 bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Eigen::VectorXd& mass,
                    double h, double bar, const StepPotential& potential, bool& factored,
-                   NewtonCounts& counts);
+                   double& radius, NewtonCounts& counts);
 
 }  // namespace dinam

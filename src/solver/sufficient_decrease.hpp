@@ -1,6 +1,6 @@
 #pragma once
-// What the line searches of Newton's method on an energy share: the equilibrium
-// (equilibrium.hpp) and the implicit integrator's incremental potential (implicit_integrator.hpp).
+// When a step of Newton's method on an energy is taken, for the equilibrium's line search
+// (equilibrium.hpp) and the implicit integrator's trust region (implicit_newton.hpp).
 
 namespace dinam {
 
