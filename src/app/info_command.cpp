@@ -108,7 +108,7 @@ void print_integrator_choice(const IntegratorChoice& choice) {
       "integrators      central_difference: {} steps, about {}; implicit: {} steps ({}), about {} "
       "at {:g} Newton iterations, {:g} iterations of their solves "
       "and {:g} factorisation a step ({:.3g} ms each, of a factor of {:.3g} nonzeros for {:.0f} "
-      "unknowns; a swing takes fewer, an impact on the ground more: docs/performance.md)\n",
+      "unknowns; a swing takes fewer, an impact on the ground more: docs/implicit-integrator.md)\n",
       choice.central_difference.steps, duration_text(choice.central_difference.seconds),
       choice.implicit.steps,
       choice.contact_envelope

@@ -14,7 +14,7 @@ struct Model;
 
 // Newton iterations, iterations of their linear solves (conjugate gradients) and factorisations
 // a step is assumed to take, the middle of what bench_implicit measured over the scenes of
-// docs/performance.md: a free fall 1, 1 and 0.03; a steel cable swinging 5.4, 56 and 0.85; the
+// docs/implicit-integrator.md: a free fall 1, 1 and 0.03; a steel cable swinging 5.4, 56 and 0.85; the
 // paper's flag 5.0, 52 and 0.27; the Wuson over its 3 s (landing, folding, at rest) 9.8, 132 and
 // 1.25 without the ground's restitution, 15.1, 197 and 2.25 with it, bouncing (so its estimate is
 // a third of what it takes).

@@ -9,8 +9,8 @@
 // curvature, which the region lets a step follow as far as the model holds, and a folding
 // structure's energy is far from quadratic over a bar's length: the region keeps the solves
 // from computing Newton steps that a line search would then cut to a fraction (docs/
-// performance.md, "A trust region"). The integrator defines E for the step (its gradient, its
-// value, the Hessian's factorisation, the friction of nodes that land); this file holds how a
+// implicit-integrator.md, "A trust region"). The integrator defines E for the step (its gradient,
+// its value, the Hessian's factorisation, the friction of nodes that land); this file holds how a
 // minimum is found and when it is found.
 #include <Eigen/Core>
 #include <cstdint>

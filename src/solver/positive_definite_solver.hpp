@@ -20,7 +20,7 @@ namespace dinam {
 // docs/performance.md, "Settling and modes").
 inline constexpr Eigen::Index kSupernodalFrom = 16000;
 // Where speed is all that counts (the implicit integrator's steps): CHOLMOD through OpenBLAS
-// factorises and solves faster from a couple of hundred unknowns on (docs/performance.md,
+// factorises and solves faster from a couple of hundred unknowns on (docs/implicit-integrator.md,
 // "CHOLMOD through OpenBLAS").
 inline constexpr Eigen::Index kFastestSupernodalFrom = 100;
 
