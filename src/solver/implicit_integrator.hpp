@@ -50,7 +50,7 @@ struct ImplicitStats {
   std::int64_t iterations = 0;        // Newton iterations, in all
   std::int64_t solve_iterations = 0;  // of the Newton steps' conjugate gradients, in all
   std::int64_t factorizations = 0;    // Hessians assembled and factorised
-  std::int64_t splits = 0;            // steps split in halves
+  std::int64_t splits = 0;            // times the sub-step was halved
 };
 
 class ImplicitIntegrator {
