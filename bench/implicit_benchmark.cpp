@@ -2,6 +2,7 @@
 // figures; docs/implicit-integrator.md):
 //   cmake --build build --target bench_implicit && build/bench/bench_implicit [SCENE] [--until S]
 //       [--explicit-steps N] [--scheme backward_euler|bdf2] [--step S|auto] [--energy] [--costs]
+//       [--threads N]
 // Without SCENE, the Wuson of the issue (assimp's OFF/Wuson.off fitted to 1 m, a rubber wire
 // dropped 0.5 m). Prints each frame's steps, Newton iterations, factorisations and time, then the
 // whole run's; central differences are timed over their first N steps (default 2 000) and
@@ -12,7 +13,8 @@
 // constant in time has) beside central differences' at the same frame, which are then run
 // through: the numerical damping of an undamped scene. --costs measures, instead of the run, what
 // src/solver/implicit_cost.cpp's estimate is made of: an assembly and factorisation of the
-// Hessian, a solve, a force evaluation and an energy, against the factor's size.
+// Hessian, a solve, a force evaluation and an energy, against the factor's size. --threads runs
+// both integrators on a team of N threads (default 1).
 #include <fmt/format.h>
 
 #include <chrono>
@@ -21,6 +23,7 @@
 #include <string>
 
 #include "bench_scenes.hpp"
+#include "core/thread_team.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -149,6 +152,8 @@ int main(int argc, char** argv) {
       until = std::stod(argv[++i]);
     } else if (std::strcmp(argv[i], "--explicit-steps") == 0 && i + 1 < argc) {
       explicit_steps = std::stoll(argv[++i]);
+    } else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+      set_thread_count(std::stoi(argv[++i]));
     } else {
       scene_path = argv[i];
     }

@@ -7,11 +7,14 @@
 //
 // The spring kinds differentiate their own force kernels (templates on their scalar) in Dual
 // numbers (core/dual.hpp), so the stiffness is exactly that of the forces the step applies.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "core/dual.hpp"
+#include "core/error.hpp"
+#include "core/thread_team.hpp"
 #include "core/types.hpp"
 
 namespace dinam {
@@ -21,7 +24,15 @@ class StiffnessSink {
  public:
   // `stiffness` is (3 node_count × 3 node_count), column-major, symmetric, N/m: row and column
   // 3 k + a are node k's coordinate a. Pinned nodes may be among `nodes`; the sink drops them.
-  virtual void add(const Index* nodes, int node_count, const double* stiffness) = 0;
+  // The same as prepare() on a copy, then add_prepared().
+  void add(const Index* nodes, int node_count, const double* stiffness);
+
+  // Makes an element's matrix, in place, what the sink takes (solver/'s sinks may project it to
+  // positive semi-definite): by itself the costliest part of taking an element, so it changes
+  // nothing of the sink and may run on any thread, for several elements at once.
+  virtual void prepare(int node_count, double* stiffness) const = 0;
+  // Takes an element's matrix as prepare() left it.
+  virtual void add_prepared(const Index* nodes, int node_count, const double* stiffness) = 0;
 
  protected:
   StiffnessSink() = default;
@@ -29,6 +40,15 @@ class StiffnessSink {
   StiffnessSink(const StiffnessSink&) = default;
   StiffnessSink& operator=(const StiffnessSink&) = default;
 };
+
+inline void StiffnessSink::add(const Index* nodes, int node_count, const double* stiffness) {
+  std::array<double, 144> copy;  // the largest element's, 4 nodes
+  const int size = 9 * node_count * node_count;
+  DINAM_CHECK(node_count >= 1 && node_count <= 4);
+  std::copy_n(stiffness, size, copy.data());
+  prepare(node_count, copy.data());
+  add_prepared(nodes, node_count, copy.data());
+}
 
 template <int kNodes>
 using LocalStiffness = Eigen::Matrix<double, 3 * kNodes, 3 * kNodes>;
@@ -60,23 +80,53 @@ LocalStiffness<kNodes> local_stiffness(const std::array<Vec3, kNodes>& x, const 
   return 0.5 * (k + k.transpose());
 }
 
+// Springs of a kind from which their matrices are computed on the process's team of threads
+// (an element's matrix costs microseconds: dual numbers, and the sink's projection).
+inline constexpr Index kMinParallelStiffness = 64;
+
 // The stiffness of every spring of a kind that is not broken: spring s has nodes
-// nodes[kNodes s …], and stiffness(s, x) gives its matrix at their positions x.
+// nodes[kNodes s …], and stiffness(s, x) gives its matrix at their positions x. The matrices are
+// computed and prepared (StiffnessSink::prepare) on the process's team, each thread a range of
+// springs, then handed to the sink one thread in spring order: the same sums in the same order,
+// whatever the number of threads.
 template <int kNodes, class Stiffness>
 void add_spring_stiffness(Index count, const std::vector<Index>& nodes,
                           const std::vector<std::uint8_t>& broken, const std::vector<Vec3>& x,
                           StiffnessSink& sink, const Stiffness& stiffness) {
+  constexpr std::size_t kSize = 9 * kNodes * kNodes;
+  auto is_broken = [&](Index s) { return !broken.empty() && broken[s] != 0; };
+  // Kept from call to call: the matrices of the Wuson's torsion springs are 6.6 MB.
+  thread_local std::vector<double> kept;
+  std::vector<double>& matrices = kept;  // the calling thread's, whichever thread computes
+  matrices.resize(kSize * static_cast<std::size_t>(count));
+  auto compute = [&](Index begin, Index end) {
+    for (Index s = begin; s < end; ++s) {
+      if (is_broken(s)) {
+        continue;
+      }
+      const Index* spring = &nodes[static_cast<std::size_t>(kNodes) * s];
+      std::array<Vec3, kNodes> at;
+      for (int j = 0; j < kNodes; ++j) {
+        at[j] = x[spring[j]];
+      }
+      double* matrix = &matrices[kSize * static_cast<std::size_t>(s)];
+      Eigen::Map<LocalStiffness<kNodes>> element(matrix);
+      element = stiffness(s, at);
+      sink.prepare(kNodes, matrix);
+    }
+  };
+  const bool shared = count >= kMinParallelStiffness && thread_count() > 1;
+  thread_team().run(
+      [&](const TeamMember& member) {
+        const auto [begin, end] = member.share(count);
+        compute(begin, end);
+      },
+      !shared);
   for (Index s = 0; s < count; ++s) {
-    if (!broken.empty() && broken[s] != 0) {
-      continue;
+    if (!is_broken(s)) {
+      sink.add_prepared(&nodes[static_cast<std::size_t>(kNodes) * s], kNodes,
+                        &matrices[kSize * static_cast<std::size_t>(s)]);
     }
-    const Index* spring = &nodes[static_cast<std::size_t>(kNodes) * s];
-    std::array<Vec3, kNodes> at;
-    for (int j = 0; j < kNodes; ++j) {
-      at[j] = x[spring[j]];
-    }
-    const LocalStiffness<kNodes> k = stiffness(s, at);
-    sink.add(spring, kNodes, k.data());
   }
 }
 

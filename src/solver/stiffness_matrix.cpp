@@ -25,27 +25,23 @@ void project_to_semidefinite(double* stiffness) {
       eigen.eigenvectors().transpose();
 }
 
-// An element's matrix as the assembly takes it: copied into `scratch`, made positive
-// semi-definite where asked.
-void element_matrix(const double* stiffness, int node_count, Definiteness definiteness,
-                    std::vector<double>& scratch) {
-  const int size = 3 * node_count;
-  scratch.assign(stiffness, stiffness + static_cast<std::ptrdiff_t>(size) * size);
+// An element's matrix as the assembly takes it, in place: made positive semi-definite where asked.
+void prepare_element(int node_count, Definiteness definiteness, double* stiffness) {
   if (definiteness == Definiteness::kExact) {
     return;
   }
   switch (node_count) {
     case 1:
-      project_to_semidefinite<3>(scratch.data());
+      project_to_semidefinite<3>(stiffness);
       break;
     case 2:
-      project_to_semidefinite<6>(scratch.data());
+      project_to_semidefinite<6>(stiffness);
       break;
     case 3:
-      project_to_semidefinite<9>(scratch.data());
+      project_to_semidefinite<9>(stiffness);
       break;
     case 4:
-      project_to_semidefinite<12>(scratch.data());
+      project_to_semidefinite<12>(stiffness);
       break;
     default:
       DINAM_CHECK(false);
@@ -56,8 +52,8 @@ void element_matrix(const double* stiffness, int node_count, Definiteness defini
 // (`matrix`, 3 node_count square, column-major) between two free nodes: the block's column b
 // holds row_dof's x, y and z at columns + b stride, for col_dof + b. Stops where it returns false.
 template <class Block>
-void for_each_block(const FreeDofs& dofs, const Index* nodes, int node_count,
-                    const std::vector<double>& matrix, const Block& block) {
+void for_each_block(const FreeDofs& dofs, const Index* nodes, int node_count, const double* matrix,
+                    const Block& block) {
   const std::size_t size = 3 * static_cast<std::size_t>(node_count);
   for (int col_node = 0; col_node < node_count; ++col_node) {
     const Index col_dof = dofs.first_dof[nodes[col_node]];
@@ -84,9 +80,12 @@ class TripletSink final : public StiffnessSink {
               std::vector<Eigen::Triplet<double>>& triplets)
       : dofs_(dofs), definiteness_(definiteness), triplets_(triplets) {}
 
-  void add(const Index* nodes, int node_count, const double* stiffness) override {
-    element_matrix(stiffness, node_count, definiteness_, scratch_);
-    for_each_block(dofs_, nodes, node_count, scratch_,
+  void prepare(int node_count, double* stiffness) const override {
+    prepare_element(node_count, definiteness_, stiffness);
+  }
+
+  void add_prepared(const Index* nodes, int node_count, const double* stiffness) override {
+    for_each_block(dofs_, nodes, node_count, stiffness,
                    [&](Index row_dof, Index col_dof, const double* columns, std::size_t stride) {
                      for (int b = 0; b < 3; ++b) {
                        for (int a = 0; a < 3; ++a) {
@@ -101,7 +100,6 @@ class TripletSink final : public StiffnessSink {
   const FreeDofs& dofs_;
   Definiteness definiteness_;
   std::vector<Eigen::Triplet<double>>& triplets_;
-  std::vector<double> scratch_;
 };
 
 // Adds each element's 3 × 3 blocks between free nodes into the values of a matrix whose pattern
@@ -114,11 +112,14 @@ class PatternSink final : public StiffnessSink {
 
   bool missed() const { return missed_; }
 
-  void add(const Index* nodes, int node_count, const double* stiffness) override {
+  void prepare(int node_count, double* stiffness) const override {
+    prepare_element(node_count, definiteness_, stiffness);
+  }
+
+  void add_prepared(const Index* nodes, int node_count, const double* stiffness) override {
     if (missed_) {
       return;
     }
-    element_matrix(stiffness, node_count, definiteness_, scratch_);
     const int* outer = matrix_.outerIndexPtr();
     const int* inner = matrix_.innerIndexPtr();
     double* matrix_values = matrix_.valuePtr();
@@ -127,7 +128,7 @@ class PatternSink final : public StiffnessSink {
       return place >= 0 && outer[column + 1] - outer[column] - place >= 3 &&
              inner[outer[column] + place] == row;
     };
-    for_each_block(dofs_, nodes, node_count, scratch_,
+    for_each_block(dofs_, nodes, node_count, stiffness,
                    [&](Index row_dof, Index col_dof, const double* columns, std::size_t stride) {
                      // Every block of the pattern came in whole (explicit zeros included), so a
                      // node's three columns hold the same rows: one search in the first finds the
@@ -155,7 +156,6 @@ class PatternSink final : public StiffnessSink {
   const FreeDofs& dofs_;
   Definiteness definiteness_;
   SparseMatrix& matrix_;
-  std::vector<double> scratch_;
   bool missed_ = false;
 };
 

@@ -156,7 +156,8 @@ TEST(Stiffness, TorsionSpringAtRandomAndWithReferencesFadingIntoLine) {
 class DenseSink final : public StiffnessSink {
  public:
   explicit DenseSink(Index nodes) : k(Eigen::MatrixXd::Zero(3 * nodes, 3 * nodes)) {}
-  void add(const Index* nodes, int node_count, const double* stiffness) override {
+  void prepare(int /*node_count*/, double* /*stiffness*/) const override {}
+  void add_prepared(const Index* nodes, int node_count, const double* stiffness) override {
     const int size = 3 * node_count;
     const Eigen::Map<const Eigen::MatrixXd> local(stiffness, size, size);
     for (int i = 0; i < node_count; ++i) {

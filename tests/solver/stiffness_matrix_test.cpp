@@ -1,17 +1,56 @@
 // The assembled stiffness: an assembly into the pattern kept from the last one gives the same
-// matrix, bit for bit, as one built afresh from the elements' triplets.
+// matrix, bit for bit, as one built afresh from the elements' triplets; and the same on any number
+// of threads (the element matrices are computed on the team, added in spring order).
 #include "solver/stiffness_matrix.hpp"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
+#include "core/thread_team.hpp"
+#include "dynamics/stiffness.hpp"
 #include "model/model.hpp"
 #include "solver_support.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
 namespace {
+
+// A wire net (8 × 8 cells: 144 bars, and more bending and torsion springs than
+// kMinParallelStiffness), lying on the ground and moved at random, assembled on 1 and on 3 threads.
+TEST(StiffnessAssembly, IsTheSameBitForBitOnAnyThreadCount) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - mesh: {grid: {width: 0.5, height: 0.5, columns: 8, rows: 8}, translation: [0, 0, 0.002]}
+    material: {density: 1000, youngs_modulus: 1.0e8, radius: 0.002}
+    style: wire
+    pinned: {indices: [0]}
+)"));
+  ASSERT_GE(model.torsion_count(), kMinParallelStiffness);
+  ASSERT_GE(model.bend_count(), kMinParallelStiffness);
+  ASSERT_GE(model.bar_count(), kMinParallelStiffness);
+  State state = make_state(model, false);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> shift(-0.01, 0.01);
+  for (Vec3& x : state.x) {
+    x += Vec3(shift(random), shift(random), shift(random));
+  }
+  const FreeDofs dofs = free_dofs(model);
+  for (const Definiteness definiteness : {Definiteness::kExact, Definiteness::kProjected}) {
+    set_thread_count(1);
+    StiffnessAssembly one;
+    const Eigen::MatrixXd alone(
+        one.assemble(model, state, test::static_forces(), dofs, definiteness));
+    set_thread_count(3);
+    StiffnessAssembly three;
+    const Eigen::MatrixXd shared(
+        three.assemble(model, state, test::static_forces(), dofs, definiteness));
+    set_thread_count(1);
+    ASSERT_GT(alone.cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(alone, shared);  // every entry, bit for bit
+  }
+}
 
 // A wire net (axial, bending and torsion springs) lying on the ground, moved at random between
 // the assemblies so that every spring's matrix changes and nodes meet and leave the ground.
