@@ -102,13 +102,11 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
   // region's edge; at the region's edge; or after kMostSolveIterations, where P no longer
   // describes H and is factorised again at the next iterate.
   TruncatedCg path;
+  double solve_target = 0.0;  // m/s², the path's end for the gradient it is built for
   const TruncatedCg::Operators operators{
       .hessian_times = hessian_times,
       .precondition = potential.precondition,
-      .solved =
-          [&](const Vector& r, const Vector& g0) {
-            return worst_of(r) <= std::max(kForcing * worst_of(g0), 0.5 * converged);
-          },
+      .solved = [&](const Vector& r) { return worst_of(r) <= solve_target; },
   };
   // The factorised Hessian is kept from iterate to iterate and from step to step (assembling and
   // factorising it costs far more than a force), and factorised again where the solve above
@@ -148,6 +146,7 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     if (!factored && !factor_here()) {
       return false;
     }
+    solve_target = std::max(kForcing * worst_of(g), 0.5 * converged);
     counts.solve_iterations += path.build(g, radius, !region_set, kMostSolveIterations, operators);
     radius = path.region();
     region_set = true;

@@ -60,7 +60,7 @@ int TruncatedCg::build(const Vector& g, double radius, bool widen, int most,
     }
     model += length * segment.slope + 0.5 * length * length * curvature;
     residual_ += length * product_;
-    if (operators.solved(residual_, g)) {
+    if (operators.solved(residual_)) {
       solved_ = true;
       return k + 1;
     }

@@ -25,8 +25,9 @@ class TruncatedCg {
   struct Operators {
     std::function<void(const Vector& v, Vector& product)> hessian_times;  // H v
     std::function<Vector(const Vector& r)> precondition;                  // P⁻¹ r
-    // Whether a residual r = g + Hs is small enough, against the gradient g, to end the path.
-    std::function<bool(const Vector& r, const Vector& g)> solved;
+    // Whether a residual r = g + Hs is small enough to end the path (the caller knows the g it
+    // built the path for).
+    std::function<bool(const Vector& r)> solved;
   };
   // A point of the path.
   struct Point {

@@ -13,10 +13,12 @@ namespace {
 using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
 
-// Products with H and solves with P, counted; the path ends where the residual is 1e-12 of g's.
+// Products with H and solves with P, counted; the path ends where the residual is 1e-12 of the
+// gradient's, `size`.
 struct Quadratic {
   Matrix h, p;
   int products = 0;
+  double size = 1.0;
   TruncatedCg::Operators operators() {
     return {
         .hessian_times =
@@ -25,7 +27,7 @@ struct Quadratic {
               product = h * v;
             },
         .precondition = [this](const Vector& r) { return Vector(p.ldlt().solve(r)); },
-        .solved = [](const Vector& r, const Vector& g) { return r.norm() <= 1e-12 * g.norm(); },
+        .solved = [this](const Vector& r) { return r.norm() <= 1e-12 * size; },
     };
   }
   double model(const Vector& g, const Vector& s) const { return g.dot(s) + 0.5 * s.dot(h * s); }
