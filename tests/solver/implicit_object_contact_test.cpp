@@ -350,5 +350,40 @@ TEST(ImplicitObjectContact, MovesTheSameOnAnyThreadCount) {
   EXPECT_GT(one.object_contact.previous.size(), 0U);
 }
 
+// A wire of the contact flying free at 0.9 m/s, steps of 10 ms: the speed envelope (half its 5 mm
+// radius, 2.5 mm) lets it move 9 mm a step only in quarters (2.25 mm; halves, 4.5 mm, pass it).
+// Every step is four quarters, and the motion backward Euler's exact free flight. The halving is
+// kept: after the first step's two halvings, a half is tried again only where two quarters have
+// gone through, twice a step, so 2 N + 1 halvings in N steps, where trying each step whole again
+// took 3 N.
+TEST(ImplicitObjectContact, AHalvingTheEnvelopeNeedsIsKeptForTheStepsAfterIt) {
+  const Model model = implicit_scene(
+      "gravity: [0, 0, 0]\nground: {contact: false}\ncontact: {objects: true}\n", R"(  - name: post
+    mesh: {polyline: {points: [[0, 5, 0], [0, 5, 1]]}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.005}
+    pinned: {all: true}
+  - name: wire
+    mesh: {polyline: {points: [[0, 0, 0], [0.2, 0, 0]]}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.005}
+    initial_velocity: [0, 0, 0.9]
+)");
+  ASSERT_DOUBLE_EQ(contact_envelope(model), 0.0025);
+  const double h = 0.01;
+  State state = initial_state(model, h);
+  const std::vector<Vec3> start = state.x;
+  ImplicitIntegrator integrator(model);
+  const int steps = 20;
+  integrator.advance(state, h, steps);
+  EXPECT_EQ(integrator.stats().steps, 4 * steps);
+  EXPECT_EQ(integrator.stats().splits, 2 * steps + 1);
+  EXPECT_NEAR(state.time, steps * h, 1e-12);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const Vec3 moved = state.x[i] - start[i];
+    const double expected = model.pinned(i) ? 0.0 : 0.9 * steps * h;
+    EXPECT_NEAR(moved.z(), expected, 1e-12) << i;
+    EXPECT_NEAR(moved.head<2>().norm(), 0.0, 1e-12) << i;
+  }
+}
+
 }  // namespace
 }  // namespace dinam
