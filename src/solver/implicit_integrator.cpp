@@ -96,8 +96,8 @@ struct ImplicitIntegrator::Workspace {
   std::vector<Eigen::Triplet<double>> friction_triplets;
   bool factored = false;  // `solver` holds a factorised Hessian of a step of `factored_h`
   double factored_h = 0.0;
-  double trust_radius =
-      0.0;  // Newton's trust region, carried from step to step (implicit_newton.hpp)
+  // Newton's trust region, carried from step to step (implicit_newton.hpp).
+  double trust_radius = 0.0;
 
   // Assembles and factorises the incremental potential's Hessian at state.x: the stiffness as it
   // is, which M/h² makes definite unless a step is long against a buckling structure's

@@ -83,11 +83,7 @@ TruncatedCg::Point TruncatedCg::at(double radius) const {
     radius = std::min(radius, region_);
   }
   Point point;
-  if (used_ == 0) {
-    point.step.setZero(residual_.size());
-    return point;
-  }
-  point.step.setZero(segments_[0].direction.size());
+  point.step.setZero(residual_.size());  // the zero step where the path has no segment
   for (std::size_t k = 0; k < used_; ++k) {
     const Segment& segment = segments_[k];
     const double length = segment.length;
