@@ -34,6 +34,9 @@ struct ContactPoint {
   Vec3 slip = Vec3::Zero();         // m, the stick spring's tangential stretch
   double energy = 0.0;              // J, ½ k δ² of the normal penalty
   bool sliding = false;
+  // The implicit integrator's: the speed the pair struck at, m/s, kept while it touches and given
+  // back (times the restitution) when it parts; 0 where there is none to give back.
+  double struck = 0.0;
   // A node–triangle pair: the side of the triangle's plane (+1 along (b − a) × (c − a), −1
   // against) the node came from, kept while the pair touches (0 for a bar–bar pair).
   std::int8_t side = 0;

@@ -426,11 +426,13 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     state.energy.add_works(step, 1.0);
     state.energy.numerical_dissipation += step.numerical_dissipation;
   }
-  // The nodes that landed leave with the ground's restitution (ground_restitution.hpp); BDF2's
-  // history then starts again, its velocity before the impact being no longer the motion's. The
-  // energy the rebound gives back is the scheme's: backward Euler's step into the penalty took it.
+  // The nodes that landed leave with the ground's restitution (ground_restitution.hpp), and the
+  // pairs of primitives that met with the contact's (implicit_object_contact.hpp); BDF2's history
+  // then starts again, its velocity before the impact being no longer the motion's. The energy
+  // the rebound gives back is the scheme's: backward Euler's step into the penalty took it.
   const double kinetic_before = ends ? kinetic_energy(model, state.v_half) : 0.0;
-  const bool rebounded = rebound_landing_nodes(model, w.x_start, w.v_start, state);
+  const bool landed = rebound_landing_nodes(model, w.x_start, w.v_start, state);
+  const bool rebounded = w.objects.rebound_pairs(model, w.v_start, h, state) || landed;
   if (ends) {
     state.energy.numerical_dissipation -= kinetic_energy(model, state.v_half) - kinetic_before;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "dynamics/contact_closest.hpp"
 #include "dynamics/contact_geometry.hpp"
@@ -10,6 +11,7 @@
 #include "dynamics/object_contact.hpp"
 #include "model/model.hpp"
 #include "solver/capped_stick_spring.hpp"
+#include "solver/ground_restitution.hpp"
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
@@ -84,7 +86,17 @@ struct PairPush {
   double push = 0.0;
   double slope = 0.0;
   double stick_stiffness = 0.0;
+  double reach = 0.0;  // m, the sum of the pair's radii
 };
+
+// The sum of the pair's radii, m.
+double pair_reach(const Model& model, const ContactPoint& point) {
+  const ObjectContact& contact = model.contact;
+  if (kind_of(point.key) == PairKind::kNodeBar) {
+    return contact.point_radius[point.nodes[0]] + contact.bar_radius[contact_side_b(point.key)];
+  }
+  return contact_reach(contact, point.key);
+}
 
 PairPush evaluate(const Model& model, const ContactPoint& point, const std::vector<Vec3>& x) {
   PairPush result;
@@ -108,8 +120,10 @@ PairPush evaluate(const Model& model, const ContactPoint& point, const std::vect
                                                                 : Vec3::UnitX();
     }
     penetration = reach - distance;
+    result.reach = reach;
   } else {
     const ContactPush push = contact_push(model, point, x);
+    result.reach = contact_reach(contact, point.key);
     penalty = push.penalty;
     penetration = push.penetration;
     result.normal = push.normal;
@@ -383,6 +397,106 @@ bool ImplicitObjectContact::touching_changed(const Model& model, State& state) {
                      [](const ContactPoint& a, const ContactPoint& b) { return a.key == b.key; });
 }
 
+namespace {
+
+// The pair's relative motion along n: how fast its points close (m/s, along −n) at velocities v,
+// and 1 over the mass the contact point moves, Σ w_j²/m_j (1/kg).
+struct PairMotion {
+  double closing = 0.0;
+  double inverse_mass = 0.0;
+};
+PairMotion pair_motion(const Model& model, const ContactPoint& point, const Vec3& n,
+                       const std::vector<Vec3>& v) {
+  PairMotion motion;
+  for (int j = 0; j < 4; ++j) {
+    const Index node = point.nodes[j];
+    const double w = point.weights[j];
+    motion.closing -= w * v[node].dot(n);
+    motion.inverse_mass += w * w * model.node_inv_mass[node];
+  }
+  return motion;
+}
+
+// Raises the pair's separating speed along n to `wanted` where it is slower, by an impulse along
+// n shared out to its nodes by their weights: equal and opposite on the two sides, so momentum
+// is kept. True where it did.
+bool raise_separating_speed(const Model& model, const ContactPoint& point, const Vec3& n,
+                            double wanted, std::vector<Vec3>& v) {
+  const PairMotion motion = pair_motion(model, point, n, v);
+  if (-motion.closing >= wanted || motion.inverse_mass <= 0.0) {
+    return false;
+  }
+  const double impulse = (wanted + motion.closing) / motion.inverse_mass;
+  for (int j = 0; j < 4; ++j) {
+    const Index node = point.nodes[j];
+    v[node] += (point.weights[j] * impulse * model.node_inv_mass[node]) * n;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<Vec3>& v_start,
+                                          double h, State& state) {
+  struck_.clear();
+  const ObjectContact& contact = model.contact;
+  if (!contact.enabled) {
+    return false;
+  }
+  const double restitution = spring_dashpot_restitution(contact.damping_ratio);
+  const std::vector<ContactPoint>& history = state.object_contact.previous;
+  bool any = false;
+  // Pairs that were touching at x_n and whose points are out of reach at x_{n+1}: the impact
+  // ended within the step.
+  for (const ContactPoint& point : history) {
+    if (point.struck <= 0.0) {
+      continue;
+    }
+    Vec3 separation = Vec3::Zero();
+    for (int j = 0; j < 4; ++j) {
+      separation += point.weights[j] * state.x[point.nodes[j]];
+    }
+    const double distance = separation.norm();
+    if (distance < pair_reach(model, point)) {
+      continue;  // still touching, though another pair of features may carry it on
+    }
+    any = raise_separating_speed(model, point, separation / distance, restitution * point.struck,
+                                 state.v_half) ||
+          any;
+  }
+  // Pairs that met within the step: the speed they struck at, for when they part; or, where the
+  // step swallowed the impact whole, the rebound now.
+  find_pairs(model, state);
+  for (const ContactPoint& point : pairs_) {
+    if (find_key(history, point.key) != nullptr) {
+      continue;
+    }
+    const PairPush push = evaluate(model, point, state.x);
+    const Vec3& n = push.normal;
+    double gap = -push.reach;  // the same points at x_n, along n
+    double pull = 0.0;         // m/s², gravity on the free ones, along −n
+    for (int j = 0; j < 4; ++j) {
+      gap += point.weights[j] * x_start_[point.nodes[j]].dot(n);
+      if (!model.pinned(point.nodes[j])) {
+        pull -= point.weights[j] * model.gravity.dot(n);
+      }
+    }
+    const PairMotion motion = pair_motion(model, point, n, v_start);
+    if (push.push <= 0.0 || gap <= 0.0 || motion.inverse_mass <= 0.0) {
+      continue;  // no impact: the pair moved on from another pair of features, or holds nothing
+    }
+    const double struck =
+        std::sqrt(motion.closing * motion.closing + 2.0 * std::max(pull, 0.0) * gap);
+    const double omega = std::sqrt(push.stick_stiffness * motion.inverse_mass);
+    if (omega * h < std::numbers::pi) {
+      struck_.push_back({point.key, struck});
+    } else {
+      any = raise_separating_speed(model, point, n, restitution * struck, state.v_half) || any;
+    }
+  }
+  return any;
+}
+
 void ImplicitObjectContact::finish_step(const Model& model, State& state) {
   const ObjectContact& contact = model.contact;
   if (!contact.enabled) {
@@ -397,6 +511,9 @@ void ImplicitObjectContact::finish_step(const Model& model, State& state) {
     work.energy += point.energy;
     point.slip = Vec3::Zero();
     point.sliding = false;
+    const ContactPoint* before = find_key(work.previous, point.key);
+    const Struck* met = find_key(struck_, point.key);
+    point.struck = before != nullptr ? before->struck : met != nullptr ? met->speed : 0.0;
     const Spring* spring = find_key(springs_, point.key);
     if (spring == nullptr) {
       continue;

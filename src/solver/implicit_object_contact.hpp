@@ -22,9 +22,8 @@
 // node that crosses a shell's middle within a step beyond their speed envelope, but here no step
 // may pass the envelope (below), and a side remembered from the step's start flipped for a node
 // that came round a triangle's edge, which made its energy jump by a whole reach's penalty (the
-// draped chair's cloth at 0.39 s). The contact's damper is not used: the speed envelope's short
-// steps (below) leave backward Euler's own damping to set the rebound (a wire thrown at 10 m/s at
-// another rebounds at 4 to 5 m/s, where the damping ratio's restitution would be 4.5 m/s).
+// draped chair's cloth at 0.39 s). The contact's damper is not used: a pair rebounds with its
+// damping ratio's restitution instead (rebound_pairs).
 //
 // Friction, lagged: the pairs touching at x_n, with their closest points' weights w_j and normal
 // n at x_n, each hold by a stick spring on the pair's tangential motion within the step,
@@ -88,6 +87,16 @@ class ImplicitObjectContact {
   // True where the pairs touching at state.x (a step's solution) differ from those at x_n: a step
   // with an impact, whose jump in acceleration is no error a shorter step would remove.
   bool touching_changed(const Model& model, State& state);
+  // After an accepted step of h to state.x, v_{n+1} in state.v_half, and before finish_step: the
+  // restitution of the contact's damping ratio (the ground's law, ground_restitution.hpp, on a
+  // pair's relative motion along its normal). A pair that parts within the step leaves at least
+  // e(ζ) times the speed it struck at, where it would leave slower, by an impulse on the pair:
+  // backward Euler spreads an impact over the steps it lasts and damps it as any vibration of
+  // a few steps a period (a wire thrown at 1 m/s at a pinned one parted at 0.22 m/s, whatever
+  // ζ). A pair that meets within the step takes its rebound at once where the penalty's half
+  // period is shorter than the step: the step swallowed the impact and left the pair at rest in
+  // the penalty, as at the ground. True where a velocity changed.
+  bool rebound_pairs(const Model& model, const std::vector<Vec3>& v_start, double h, State& state);
   // After an accepted step to state.x: the pairs touching there, with the stretch each keeps, go
   // to the history.
   void finish_step(const Model& model, State& state);
@@ -110,12 +119,19 @@ class ImplicitObjectContact {
   // u at x.
   Vec3 stretch(const Spring& spring, const std::vector<Vec3>& x) const;
 
+  // A pair that met in the step rebound_pairs judged, and the speed it struck at (m/s), by key.
+  struct Struck {
+    std::uint64_t key = 0;
+    double speed = 0.0;
+  };
+
   std::vector<ContactPoint> pairs_;           // touching at the last find_pairs, by key
   std::vector<ContactPoint> at_start_;        // the pairs touching at x_n, by key
   std::vector<Spring> springs_;               // by key
   std::vector<std::uint64_t> node_bar_keys_;  // scratch: the node–bar pairs to check
   std::vector<Vec3> x_start_;                 // m, x_n
   std::vector<Index> contact_nodes_;          // the nodes of the contact's bars and points
+  std::vector<Struck> struck_;                // by key
 };
 
 }  // namespace dinam
