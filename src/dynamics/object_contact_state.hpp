@@ -34,9 +34,13 @@ struct ContactPoint {
   Vec3 slip = Vec3::Zero();         // m, the stick spring's tangential stretch
   double energy = 0.0;              // J, ½ k δ² of the normal penalty
   bool sliding = false;
-  // The implicit integrator's: the speed the pair struck at, m/s, kept while it touches and given
-  // back (times the restitution) when it parts; 0 where there is none to give back.
+  // The implicit integrator's: the speed the pair struck at (m/s; 0 where there is none to give
+  // back), its penalty's ω (rad/s) and the phase backward Euler has turned the impact through
+  // since (rad, atan(ω h) a step): the speed times the restitution is given back if the pair
+  // parts before that reaches 2π, two of the scheme's half periods.
   double struck = 0.0;
+  double impact_omega = 0.0;
+  double impact_phase = 0.0;
   // A node–triangle pair: the side of the triangle's plane (+1 along (b − a) × (c − a), −1
   // against) the node came from, kept while the pair touches (0 for a bar–bar pair).
   std::int8_t side = 0;

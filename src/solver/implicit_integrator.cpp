@@ -437,7 +437,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
     state.energy.numerical_dissipation -= kinetic_energy(model, state.v_half) - kinetic_before;
   }
   w.friction.finish_step(model, state);
-  w.objects.finish_step(model, state);
+  w.objects.finish_step(model, h, state);
   if (w.any_yield) {
     // The springs that flowed keep their new plastic sets (the return mapping at x_{n+1}).
     ForceSwitches springs = potential_switches();

@@ -449,8 +449,9 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
   // Pairs that were touching at x_n and whose points are out of reach at x_{n+1}: the impact
   // ended within the step.
   for (const ContactPoint& point : history) {
-    if (point.struck <= 0.0) {
-      continue;
+    if (point.struck <= 0.0 ||
+        point.impact_phase + std::atan(point.impact_omega * h) > 2.0 * std::numbers::pi) {
+      continue;  // no impact, or one long over: a pair that rested and now lifts off
     }
     Vec3 separation = Vec3::Zero();
     for (int j = 0; j < 4; ++j) {
@@ -489,7 +490,7 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
         std::sqrt(motion.closing * motion.closing + 2.0 * std::max(pull, 0.0) * gap);
     const double omega = std::sqrt(push.stick_stiffness * motion.inverse_mass);
     if (omega * h < std::numbers::pi) {
-      struck_.push_back({point.key, struck});
+      struck_.push_back({point.key, struck, omega});
     } else {
       any = raise_separating_speed(model, point, n, restitution * struck, state.v_half) || any;
     }
@@ -497,7 +498,7 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
   return any;
 }
 
-void ImplicitObjectContact::finish_step(const Model& model, State& state) {
+void ImplicitObjectContact::finish_step(const Model& model, double h, State& state) {
   const ObjectContact& contact = model.contact;
   if (!contact.enabled) {
     return;
@@ -513,7 +514,18 @@ void ImplicitObjectContact::finish_step(const Model& model, State& state) {
     point.sliding = false;
     const ContactPoint* before = find_key(work.previous, point.key);
     const Struck* met = find_key(struck_, point.key);
-    point.struck = before != nullptr ? before->struck : met != nullptr ? met->speed : 0.0;
+    if (before != nullptr) {
+      point.struck = before->struck;
+      point.impact_omega = before->impact_omega;
+      point.impact_phase = before->impact_phase;
+    } else if (met != nullptr) {
+      point.struck = met->speed;
+      point.impact_omega = met->omega;
+      point.impact_phase = 0.0;
+    } else {
+      point.struck = point.impact_omega = point.impact_phase = 0.0;
+    }
+    point.impact_phase += std::atan(point.impact_omega * h);
     const Spring* spring = find_key(springs_, point.key);
     if (spring == nullptr) {
       continue;

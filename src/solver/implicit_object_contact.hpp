@@ -89,17 +89,19 @@ class ImplicitObjectContact {
   bool touching_changed(const Model& model, State& state);
   // After an accepted step of h to state.x, v_{n+1} in state.v_half, and before finish_step: the
   // restitution of the contact's damping ratio (the ground's law, ground_restitution.hpp, on a
-  // pair's relative motion along its normal). A pair that parts within the step leaves at least
+  // pair's relative motion along its normal). A pair that parts within the step, its impact not
+  // yet over (two of the half periods backward Euler gives the penalty, π/atan(ω h) steps of h,
+  // since it struck; a pair that came to rest and lifts off later is not thrown), leaves at least
   // e(ζ) times the speed it struck at, where it would leave slower, by an impulse on the pair:
-  // backward Euler spreads an impact over the steps it lasts and damps it as any vibration of
-  // a few steps a period (a wire thrown at 1 m/s at a pinned one parted at 0.22 m/s, whatever
-  // ζ). A pair that meets within the step takes its rebound at once where the penalty's half
-  // period is shorter than the step: the step swallowed the impact and left the pair at rest in
-  // the penalty, as at the ground. True where a velocity changed.
+  // backward Euler spreads an impact over the steps it lasts and damps it as any vibration of a few
+  // steps a period (a wire thrown at 1 m/s at a pinned one parted at 0.22 m/s, whatever ζ). A pair
+  // that meets within the step takes its rebound at once where the penalty's half period is shorter
+  // than the step: the step swallowed the impact and left the pair at rest in the penalty, as at
+  // the ground. True where a velocity changed.
   bool rebound_pairs(const Model& model, const std::vector<Vec3>& v_start, double h, State& state);
   // After an accepted step to state.x: the pairs touching there, with the stretch each keeps, go
   // to the history.
-  void finish_step(const Model& model, State& state);
+  void finish_step(const Model& model, double h, State& state);
 
  private:
   // The pairs touching at state.x, by key, into pairs_: the search's node–triangle and bar–bar
@@ -119,10 +121,12 @@ class ImplicitObjectContact {
   // u at x.
   Vec3 stretch(const Spring& spring, const std::vector<Vec3>& x) const;
 
-  // A pair that met in the step rebound_pairs judged, and the speed it struck at (m/s), by key.
+  // A pair that met in the step rebound_pairs judged, by key: the speed it struck at (m/s) and
+  // its penalty's ω (rad/s).
   struct Struck {
     std::uint64_t key = 0;
     double speed = 0.0;
+    double omega = 0.0;
   };
 
   std::vector<ContactPoint> pairs_;           // touching at the last find_pairs, by key
