@@ -107,17 +107,17 @@ void print_integrator_choice(const IntegratorChoice& choice) {
   fmt::print(
       "integrators      central_difference: {} steps, about {}; implicit: {} steps ({}), about {} "
       "at {:g} Newton iterations, {:g} iterations of their solves "
-      "and {:g} factorisation a step ({:.3g} ms each, of a factor of {:.3g} nonzeros for {:.0f} "
-      "unknowns; a swing takes fewer, an impact on the ground more: docs/implicit-integrator.md)\n",
+      "and {:g} factorisations a step, as {} ({:.3g} ms a factorisation, of a factor of {:.3g} "
+      "nonzeros for {:.0f} unknowns; docs/implicit-integrator.md, \"Which integrator\")\n",
       choice.central_difference.steps, duration_text(choice.central_difference.seconds),
       choice.implicit.steps,
       choice.contact_envelope
           ? "at most: contact between objects moves no node more than half its smallest radius "
             "a step, and this counts a fall through the scene's height for the whole run"
           : "more where a step is split",
-      duration_text(choice.implicit.seconds), kAssumedIterationsPerStep,
-      kAssumedSolveIterationsPerStep, kAssumedFactorizationsPerStep,
-      1e3 * step.factorization_seconds, step.factor.nonzeros, step.factor.unknowns);
+      duration_text(choice.implicit.seconds), step.counts.iterations, step.counts.solve_iterations,
+      step.counts.factorizations, motion_text(step.motion), 1e3 * step.factorization_seconds,
+      step.factor.nonzeros, step.factor.unknowns);
   fmt::print("recommended      integrator: {} ({})\n", integrator_key(choice.recommended),
              choice.recommended == IntegratorKind::kImplicit
                  ? "its estimate is under half of central differences'"

@@ -4,8 +4,8 @@
 // `info` can set the two integrators side by side the same way on a quiet machine and a busy one
 // (docs/threads.md, "The estimate of a run"). The per-item costs are bench_implicit --costs's on
 // the machine of docs/performance.md; how many Newton iterations and factorisations a step takes
-// depends on the motion (a swing takes a few, an impact on the ground tens), and the estimate
-// assumes the middle of what bench_implicit measured.
+// depends on the motion (a swing takes a few, a structure that folds where it lands tens), and the
+// estimate assumes what bench_implicit measured for models that move alike.
 #include "dynamics/step_cost.hpp"
 
 namespace dinam {
@@ -13,14 +13,46 @@ namespace dinam {
 struct Model;
 
 // Newton iterations, iterations of their linear solves (conjugate gradients) and factorisations
-// a step is assumed to take, the middle of what bench_implicit measured over the scenes of
-// docs/implicit-integrator.md: a free fall 1, 1 and 0.03; a steel cable swinging 5.4, 56 and 0.85; the
-// paper's flag 5.0, 52 and 0.27; the Wuson over its 3 s (landing, folding, at rest) 9.8, 132 and
-// 1.25 without the ground's restitution, 15.1, 197 and 2.25 with it, bouncing (so its estimate is
-// a third of what it takes).
-inline constexpr double kAssumedIterationsPerStep = 6.0;
-inline constexpr double kAssumedSolveIterationsPerStep = 60.0;
-inline constexpr double kAssumedFactorizationsPerStep = 1.0;
+// a step takes.
+struct ImplicitStepCounts {
+  double iterations = 0.0;
+  double solve_iterations = 0.0;
+  double factorizations = 0.0;
+};
+
+// How the model's motion is expected to go, which sets the counts a step is assumed to take. They
+// differ by ten times in factorisations a step between models of the same size, material and
+// drop (docs/implicit-integrator.md, "Which integrator"), and what sets them is whether the bars
+// alone hold the structure's shape:
+enum class ImplicitMotion {
+  // Its bars leave under 2 % of its motions free (a triangulated closed surface leaves none):
+  // it keeps its shape where it lands, and the Hessian changes little from step to step.
+  // Measured: NFF's spheres.nff 3.5 Newton iterations, 30 solve iterations and 0.11
+  // factorisations a step, WithCamera.nff 4.2, 40 and 0.13, fromtruespace_bin32.x 4.5 Newton
+  // iterations and 0.05 factorisations, COLLADA.dae 2.9 Newton iterations.
+  kHoldsItsShape,
+  // More of its motions are held only by the bending and torsion springs, and a piece of it is
+  // free with the ground or contact between objects to land on: it folds under its own weight
+  // where it lands, nearly a static problem of a buckling shell at each step. Measured: the
+  // Wuson 12.3, 114 and 0.94; issue_2229.dxf 13, 108 and 0.7; MotionCaptureROM.ase 15.5, 144 and
+  // 1.13; HUMAN.blend's first second 19, 190 and 1.18.
+  kFolds,
+  // Held by its pins, or nothing to land on: it swings. Measured: the paper's flag 5.0, 52 and
+  // 0.27; a steel cable 5.4, 56 and 0.85.
+  kSwings,
+};
+
+// The share of the model's free motions that its bars leave free: Maxwell's count of a bar
+// framework, 3 n − 6 − b for each piece of the mesh with n free nodes and b bars with a free node
+// (less 6 where no pin holds the piece: its rigid motions), at least 0, summed over the pieces
+// and over 3 n of the whole. A lower bound (a bar may repeat what others hold), and 0 where the
+// bars alone hold the shape.
+double bars_free_share(const Model& model);
+
+ImplicitMotion expected_motion(const Model& model);
+ImplicitStepCounts assumed_step_counts(ImplicitMotion motion);
+const char* motion_text(ImplicitMotion motion);
+
 // And those of a step that contact between objects' speed envelope split off (a few
 // milliseconds): the paper's ball in the trampoline's net, 5 844 such steps over 4 s, took 2.3,
 // 16 and 0.01.
@@ -40,10 +72,12 @@ HessianFactorSize hessian_factor_size(const Model& model);
 
 struct ImplicitStepCost {
   HessianFactorSize factor;
+  ImplicitMotion motion = ImplicitMotion::kSwings;
+  ImplicitStepCounts counts;             // a step's, as `motion` assumes
   double factorization_seconds = 0.0;    // assembling the Hessian and factorising it, once
   double iteration_seconds = 0.0;        // a Newton iteration: forces and energies
   double solve_iteration_seconds = 0.0;  // one of its solve's: a solve with the factor, a force
-  double seconds = 0.0;                  // a step at the assumed iterations and factorisations
+  double seconds = 0.0;                  // a step at `counts`
   double short_step_seconds = 0.0;       // a step split off by contact's speed envelope
 };
 

@@ -1,9 +1,14 @@
 // The implicit integrator's cost estimate (solver/implicit_cost.hpp) rests on the size of its
-// Hessian's Cholesky factor, which CHOLMOD's analysis gives: checked against a pattern whose
-// factor is known in closed form.
+// Hessian's Cholesky factor, which CHOLMOD's analysis gives, and on the counts a step takes, which
+// it assumes from how the structure will move: checked against a pattern whose factor is known in
+// closed form, and Maxwell's count of bar frameworks whose free motions are known.
 #include "solver/implicit_cost.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
 
 #include "model/model.hpp"
 #include "test_support.hpp"
@@ -35,6 +40,73 @@ objects:
   EXPECT_EQ(size.nonzeros, 6 * n + 9 * (n - 1));
   const double flops = (n - 1) * (36 + 25 + 16) + (9 + 4 + 1);
   EXPECT_EQ(size.flops, flops);
+}
+
+// A tetrahedron (4 nodes, 6 bars) and a cube of quads (8 nodes, 12 bars), as OBJ files, and a
+// model of `objects` (YAML) that may name them.
+class ImplicitCostFrameworks : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::ofstream(folder_.path() / "tetrahedron.obj")
+        << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+    std::ofstream(folder_.path() / "cube.obj")
+        << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+           "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  }
+  Model model(const std::string& keys, const std::string& objects) const {
+    return build_model(test::scene_from_yaml(fmt::format(
+        "version: 1\nduration: 1\nintegrator: implicit\n{}objects:\n{}", keys, objects)));
+  }
+  std::string file_object(const std::string& name, double lift) const {
+    return fmt::format(
+        "  - mesh: {{file: \"{}\", translation: [0, {}, 1]}}\n"
+        "    material: {{density: 1000, youngs_modulus: 1.0e7, radius: 0.01}}\n",
+        (folder_.path() / name).string(), lift);
+  }
+
+ private:
+  test::TemporaryFolder folder_{"frameworks"};
+};
+
+constexpr const char* kPolyline =
+    R"(  - mesh: {polyline: {points: [[0, 0, 2], [1, 0, 2]], segments: 10}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.01}
+)";
+
+// Maxwell's count, 3 n − 6 − b a piece (less its rigid motions only where no pin holds it): a
+// tetrahedron's bars hold its shape (12 − 6 − 6 = 0), a cube of quads leaves 24 − 6 − 12 = 6 of
+// its 24 motions free (it shears), a free wire of 10 bars 33 − 6 − 10 = 17 of 33, the same wire
+// pinned at an end 30 − 10 = 20 of 30. Pieces count alone: the tetrahedron's bars do not hold the
+// cube beside it (6 of 36).
+TEST_F(ImplicitCostFrameworks, BarsFreeShareIsMaxwellsCount) {
+  EXPECT_EQ(bars_free_share(model("", file_object("tetrahedron.obj", 0))), 0.0);
+  EXPECT_DOUBLE_EQ(bars_free_share(model("", file_object("cube.obj", 0))), 6.0 / 24.0);
+  EXPECT_DOUBLE_EQ(bars_free_share(model("", kPolyline)), 17.0 / 33.0);
+  EXPECT_DOUBLE_EQ(
+      bars_free_share(model("", std::string(kPolyline) + "    pinned: {indices: [0]}\n")),
+      20.0 / 30.0);
+  EXPECT_DOUBLE_EQ(
+      bars_free_share(model("", file_object("tetrahedron.obj", 0) + file_object("cube.obj", 3))),
+      6.0 / 36.0);
+}
+
+// The counts a step is assumed to take follow: a tetrahedron dropped holds its shape, a cube of
+// quads dropped on the ground folds, the same cube with nothing to land on, and a wire held by a
+// pin, swing; the three take the fewest, the most and between in factorisations a step.
+TEST_F(ImplicitCostFrameworks, ExpectsAShellToHoldItsShapeABoxOfQuadsToFoldAndAPinnedWireToSwing) {
+  EXPECT_EQ(expected_motion(model("", file_object("tetrahedron.obj", 0))),
+            ImplicitMotion::kHoldsItsShape);
+  EXPECT_EQ(expected_motion(model("", file_object("cube.obj", 0))), ImplicitMotion::kFolds);
+  EXPECT_EQ(expected_motion(model("ground: {contact: false}\n", file_object("cube.obj", 0))),
+            ImplicitMotion::kSwings);
+  EXPECT_EQ(expected_motion(model("", std::string(kPolyline) + "    pinned: {indices: [0]}\n")),
+            ImplicitMotion::kSwings);
+  const ImplicitStepCounts holds = assumed_step_counts(ImplicitMotion::kHoldsItsShape);
+  const ImplicitStepCounts swings = assumed_step_counts(ImplicitMotion::kSwings);
+  const ImplicitStepCounts folds = assumed_step_counts(ImplicitMotion::kFolds);
+  EXPECT_LT(holds.factorizations, swings.factorizations);
+  EXPECT_LT(swings.factorizations, folds.factorizations);
+  EXPECT_LT(holds.iterations, folds.iterations);
 }
 
 }  // namespace
