@@ -386,24 +386,31 @@ TEST(ImplicitObjectContact, AHalvingTheEnvelopeNeedsIsKeptForTheStepsAfterIt) {
   }
 }
 
-// A pinned steel wire along y, and a free bar of one segment across it at its middle, 3 cm above
-// it, at `speed` down, with `second_free` a second free bar in place of the pinned wire (crossing
-// the first at both their middles, so each is struck at its middle and neither turns). No gravity.
+// A wire along y, 20 cm, pinned unless `wire_free`, and a bar of one segment across it at its
+// middle at `height` (so that each is struck at its middle and neither turns), both of Young's
+// modulus `modulus`, density 7 850 and radius 5 mm; `bar_keys`, more of the bar's keys.
+std::string wire_and_bar(double modulus, double height, bool wire_free,
+                         const std::string& bar_keys = "") {
+  return fmt::format(R"(  - name: wire
+    mesh: {{polyline: {{points: [[0, -0.1, 0], [0, 0.1, 0]]}}}}
+    material: {{density: 7850, youngs_modulus: {0}, radius: 0.005}}
+    {1}
+  - name: bar
+    mesh: {{polyline: {{points: [[-0.1, 0, {2}], [0.1, 0, {2}]]}}}}
+    material: {{density: 7850, youngs_modulus: {0}, radius: 0.005}}
+    {3}
+)",
+                     modulus, wire_free ? "" : "pinned: {all: true}", height, bar_keys);
+}
+
+// The bar 3 cm above the wire at `speed` down, without gravity.
 Model bar_across_bar(double zeta, double speed, bool second_free, double modulus = 2.0e9) {
   return implicit_scene(
       fmt::format("gravity: [0, 0, 0]\nground: {{contact: false}}\ncontact: {{objects: true, "
                   "damping_ratio: {}}}\n",
                   zeta),
-      fmt::format(R"(  - name: fixed
-    mesh: {{polyline: {{points: [[0, -0.1, 0], [0, 0.1, 0]]}}}}
-    material: {{density: 7850, youngs_modulus: {0}, radius: 0.005}}
-    {1}
-  - name: thrown
-    mesh: {{polyline: {{points: [[-0.1, 0, 0.03], [0.1, 0, 0.03]]}}}}
-    material: {{density: 7850, youngs_modulus: {0}, radius: 0.005}}
-    initial_velocity: [0, 0, {2}]
-)",
-                  modulus, second_free ? "" : "pinned: {all: true}", -speed));
+      wire_and_bar(modulus, 0.03, second_free,
+                   fmt::format("initial_velocity: [0, 0, {}]", -speed)));
 }
 
 // That bar, thrown at the pinned wire at 1 m/s and 0.3 m/s, rebounds at the restitution of the
@@ -491,15 +498,7 @@ TEST(ImplicitObjectContact, ASteelBarDroppedOnAPinnedWireBouncesToItsRestitution
           fmt::format("timestep: {}\nground: {{contact: false}}\ncontact: {{objects: true, "
                       "damping_ratio: {}}}\n",
                       h, zeta),
-          fmt::format(R"(  - name: fixed
-    mesh: {{polyline: {{points: [[0, -0.1, 0], [0, 0.1, 0]]}}}}
-    material: {{density: 7850, youngs_modulus: 2.0e11, radius: 0.005}}
-    pinned: {{all: true}}
-  - name: dropped
-    mesh: {{polyline: {{points: [[-0.1, 0, {0}], [0.1, 0, {0}]]}}}}
-    material: {{density: 7850, youngs_modulus: 2.0e11, radius: 0.005}}
-)",
-                      touch + fall));
+          wire_and_bar(2.0e11, touch + fall, false));
       State state = initial_state(model, h);
       ImplicitIntegrator integrator(model);
       const Index first = model.objects[1].first_node;
@@ -535,17 +534,10 @@ TEST(ImplicitObjectContact, ABarThatCameToRestIsNotThrownWhenItLiftsOff) {
   const double h = 0.0045;
   const Model model = implicit_scene(
       fmt::format("timestep: {}\nground: {{contact: false}}\ncontact: {{objects: true}}\n"
-                  "forces:\n  - {{acceleration: [0, 0, {}], object: dropped, profile: {{type: "
+                  "forces:\n  - {{acceleration: [0, 0, {}], object: bar, profile: {{type: "
                   "ramp, start: 0.5, end: 1.5}}}}\n",
                   h, 2.0 * kG),
-      R"(  - name: fixed
-    mesh: {polyline: {points: [[0, -0.1, 0], [0, 0.1, 0]]}}
-    material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.005}
-    pinned: {all: true}
-  - name: dropped
-    mesh: {polyline: {points: [[-0.1, 0, 0.015], [0.1, 0, 0.015]]}}
-    material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.005}
-)");
+      wire_and_bar(2.0e9, 0.015, false));
   State state = initial_state(model, h);
   ImplicitIntegrator integrator(model);
   const Index first = model.objects[1].first_node;
