@@ -417,13 +417,13 @@ PairMotion pair_motion(const Model& model, const ContactPoint& point, const Vec3
   return motion;
 }
 
-// Raises the pair's separating speed along n to `wanted` where it is slower, by an impulse along
-// n shared out to its nodes by their weights: equal and opposite on the two sides, so momentum
-// is kept. True where it did.
-bool raise_separating_speed(const Model& model, const ContactPoint& point, const Vec3& n,
-                            double wanted, std::vector<Vec3>& v) {
+// Sets the pair's separating speed along n to `wanted`, by an impulse along n shared out to its
+// nodes by their weights: equal and opposite on the two sides, so momentum is kept. True where a
+// velocity changed.
+bool set_separating_speed(const Model& model, const ContactPoint& point, const Vec3& n,
+                          double wanted, std::vector<Vec3>& v) {
   const PairMotion motion = pair_motion(model, point, n, v);
-  if (-motion.closing >= wanted || motion.inverse_mass <= 0.0) {
+  if (-motion.closing == wanted || motion.inverse_mass <= 0.0) {
     return false;
   }
   const double impulse = (wanted + motion.closing) / motion.inverse_mass;
@@ -461,7 +461,7 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
     if (distance < pair_reach(model, point)) {
       continue;  // still touching, though another pair of features may carry it on
     }
-    any = raise_separating_speed(model, point, separation / distance, restitution * point.struck,
+    any = set_separating_speed(model, point, separation / distance, restitution * point.struck,
                                  state.v_half) ||
           any;
   }
@@ -492,7 +492,7 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
     if (omega * h < std::numbers::pi) {
       struck_.push_back({point.key, struck, omega});
     } else {
-      any = raise_separating_speed(model, point, n, restitution * struck, state.v_half) || any;
+      any = set_separating_speed(model, point, n, restitution * struck, state.v_half) || any;
     }
   }
   return any;
