@@ -60,10 +60,7 @@ MeshPieces mesh_pieces(const Model& model) {
   return pieces;
 }
 
-}  // namespace
-
-double bars_free_share(const Model& model) {
-  const MeshPieces pieces = mesh_pieces(model);
+double bars_free_share(const Model& model, const MeshPieces& pieces) {
   const auto n = static_cast<std::size_t>(model.node_count());
   // By piece: its free motions less its rigid ones (6, 3 for a lone node, none where a pin holds
   // it), less its bars with a free node; each piece's count at least 0, so that bars one piece
@@ -92,11 +89,17 @@ double bars_free_share(const Model& model) {
   return free_motions > 0.0 ? free_share / free_motions : 0.0;
 }
 
+}  // namespace
+
+double bars_free_share(const Model& model) {
+  return bars_free_share(model, mesh_pieces(model));
+}
+
 ImplicitMotion expected_motion(const Model& model) {
-  if (bars_free_share(model) < kHeldShapeShare) {
+  const MeshPieces pieces = mesh_pieces(model);
+  if (bars_free_share(model, pieces) < kHeldShapeShare) {
     return ImplicitMotion::kHoldsItsShape;
   }
-  const MeshPieces pieces = mesh_pieces(model);
   const bool free_piece = std::any_of(pieces.piece.begin(), pieces.piece.end(),
                                       [&](Index piece) { return pieces.held[piece] == 0; });
   const bool something_to_land_on = model.ground.enabled || model.contact.enabled;

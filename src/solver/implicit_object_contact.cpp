@@ -100,14 +100,13 @@ double pair_reach(const Model& model, const ContactPoint& point) {
 
 PairPush evaluate(const Model& model, const ContactPoint& point, const std::vector<Vec3>& x) {
   PairPush result;
-  const ObjectContact& contact = model.contact;
+  result.reach = pair_reach(model, point);
   ContactPenalty penalty;
   double penetration = 0.0;
   double scale = 1.0;  // the mollifier, for two bars
   if (kind_of(point.key) == PairKind::kNodeBar) {
     const Index node = point.nodes[0];
-    const Index bar = contact_side_b(point.key);
-    const double reach = contact.point_radius[node] + contact.bar_radius[bar];
+    const double reach = result.reach;
     penalty = contact_penalty_between(
         model, model.node_inv_mass[node],
         std::max(model.node_inv_mass[point.nodes[1]], model.node_inv_mass[point.nodes[2]]), reach);
@@ -120,10 +119,8 @@ PairPush evaluate(const Model& model, const ContactPoint& point, const std::vect
                                                                 : Vec3::UnitX();
     }
     penetration = reach - distance;
-    result.reach = reach;
   } else {
     const ContactPush push = contact_push(model, point, x);
-    result.reach = contact_reach(contact, point.key);
     penalty = push.penalty;
     penetration = push.penetration;
     result.normal = push.normal;
@@ -462,7 +459,7 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
       continue;  // still touching, though another pair of features may carry it on
     }
     any = set_separating_speed(model, point, separation / distance, restitution * point.struck,
-                                 state.v_half) ||
+                               state.v_half) ||
           any;
   }
   // Pairs that met within the step: the speed they struck at, for when they part; or, where the
