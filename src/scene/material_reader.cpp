@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "scene/element_readers.hpp"
+#include "scene/material_presets.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/yaml_map.hpp"
 
 namespace dinam {
-namespace {}  // namespace
 
 void require_positive(double value, const FileLoc& loc, const std::string& what, const char* unit) {
   if (!(value > 0.0)) {
@@ -29,64 +29,168 @@ void require_in_range(double value, double low, double high, const FileLoc& loc,
   }
 }
 
-MaterialDesc read_material(YamlMap map) {
-  MaterialDesc material;
-  material.loc = map.loc();
-  material.density = map.required_number("density");
-  require_positive(material.density, map.loc("density"), map.path("density"), "kg/m³");
-  require_in_range(material.density, 1e-6, 1e6, map.loc("density"), map.path("density"), "kg/m³");
-  material.youngs_modulus = map.required_number("youngs_modulus");
-  require_positive(material.youngs_modulus, map.loc("youngs_modulus"), map.path("youngs_modulus"),
-                   "Pa");
-  require_in_range(material.youngs_modulus, 1e-3, 1e13, map.loc("youngs_modulus"),
-                   map.path("youngs_modulus"), "Pa");
-  // G defaults to that of an isotropic solid with Poisson's ratio 0.3: G = E / (2 (1 + ν)).
-  material.shear_modulus = map.number("shear_modulus", material.youngs_modulus / 2.6);
-  require_positive(material.shear_modulus, map.loc("shear_modulus"), map.path("shear_modulus"),
-                   "Pa");
-  require_in_range(material.shear_modulus, 1e-3, 1e13, map.loc("shear_modulus"),
-                   map.path("shear_modulus"), "Pa");
+namespace {
 
-  const bool has_radius = map.has("radius");
-  const bool has_area = map.has("area");
-  if (has_radius == has_area) {
+// A material's keys as the scene gives them, else as its preset does: `has` and `number` read the
+// scene's key where it is there (so an unknown key is still caught by finish()), the preset's
+// value where not; `loc` names the key's line, or the preset's.
+class MaterialKeys {
+ public:
+  explicit MaterialKeys(YamlMap& map) : map_(map) {
+    if (map_.has("preset")) {
+      const std::string name = map_.string("preset", "");
+      preset_ = find_material_preset(name);
+      if (preset_ == nullptr) {
+        std::vector<std::string> names;
+        for (const MaterialPreset& preset : material_presets()) {
+          names.emplace_back(preset.name);
+        }
+        throw_user_error(map_.loc("preset"),
+                         "'{}': no material preset is called '{}'; the presets are {} "
+                         "(docs/materials.md gives their values)",
+                         map_.path("preset"), name, fmt::join(names, ", "));
+      }
+    }
+  }
+  const MaterialPreset* preset() const { return preset_; }
+  bool given(const std::string& key) {
+    return map_.has(key) || (preset_ != nullptr && preset_->find(key) != nullptr);
+  }
+  bool in_scene(const std::string& key) { return map_.has(key); }
+  double number(const std::string& key) {
+    if (map_.has(key) || preset_ == nullptr || preset_->find(key) == nullptr) {
+      return map_.required_number(key);
+    }
+    return *preset_->find(key);
+  }
+  FileLoc loc(const std::string& key) {
+    return map_.has(key) || !map_.has("preset") ? map_.loc(key) : map_.loc("preset");
+  }
+  std::string path(const std::string& key) const { return map_.path(key); }
+
+  // Reads `key` (given, or required) and checks it lies in [low, high].
+  double bounded(const std::string& key, double low, double high, const char* unit) {
+    const double value = number(key);
+    require_positive(value, loc(key), path(key), unit);
+    require_in_range(value, low, high, loc(key), path(key), unit);
+    return value;
+  }
+
+ private:
+  YamlMap& map_;
+  const MaterialPreset* preset_ = nullptr;
+};
+
+constexpr const char* kSheetKeys[] = {"areal_density", "stretch_stiffness", "shear_stiffness",
+                                      "bending_rigidity", "thickness"};
+constexpr const char* kWireKeys[] = {
+    "density",      "youngs_modulus",    "shear_modulus",     "radius",      "area", "area_moment",
+    "polar_moment", "bending_stiffness", "torsion_stiffness", "yield_stress"};
+
+// A sheet's areal values (SheetDesc); a wire's keys beside them are an error.
+SheetDesc read_sheet(YamlMap& map, MaterialKeys& keys) {
+  for (const char* key : kWireKeys) {
+    if (keys.in_scene(key)) {
+      throw_user_error(map.loc(key),
+                       "'{}' is a wire's or a rope's value, but this material is a sheet (it "
+                       "has 'areal_density'{}): a sheet takes areal_density, stretch_stiffness, "
+                       "shear_stiffness, bending_rigidity and thickness",
+                       map.path(key),
+                       keys.preset() != nullptr
+                           ? fmt::format(", from the preset '{}'", keys.preset()->name)
+                           : "");
+    }
+  }
+  SheetDesc sheet;
+  sheet.areal_density = keys.bounded("areal_density", 1e-4, 1e3, "kg/m²");
+  sheet.stretch_stiffness = keys.bounded("stretch_stiffness", 1e-3, 1e10, "N/m");
+  sheet.shear_stiffness = keys.bounded("shear_stiffness", 1e-3, 1e10, "N/m");
+  sheet.bending_rigidity = keys.bounded("bending_rigidity", 1e-12, 1e6, "N·m");
+  sheet.thickness = keys.given("thickness") ? keys.bounded("thickness", 1e-6, 0.1, "m") : 5e-4;
+  if (map.has("yield")) {
+    YamlMap yield(map.get("yield"), map.file(), map.path("yield"));
+    if (yield.has("stretch")) {
+      sheet.yield_stretch = yield.number("stretch", 0.0);
+      require_positive(sheet.yield_stretch, yield.loc("stretch"), yield.path("stretch"), "N/m");
+    }
+    if (yield.has("bending")) {
+      sheet.yield_bending = yield.number("bending", 0.0);
+      require_positive(sheet.yield_bending, yield.loc("bending"), yield.path("bending"), "N·m/m");
+    }
+    yield.finish();
+  }
+  return sheet;
+}
+
+// A wire's or a rope's section and moduli, with the values derived from them.
+void read_wire(YamlMap& map, MaterialKeys& keys, MaterialDesc& material) {
+  for (const char* key : kSheetKeys) {
+    if (keys.in_scene(key)) {
+      throw_user_error(
+          map.loc(key),
+          "'{}' is a sheet's value, but this material is a wire or a rope{}: give a "
+          "sheet 'areal_density' and no 'density' or section",
+          map.path(key),
+          keys.preset() != nullptr ? fmt::format(" (the preset '{}')", keys.preset()->name) : "");
+    }
+  }
+  material.density = keys.bounded("density", 1e-6, 1e6, "kg/m³");
+  material.youngs_modulus = keys.bounded("youngs_modulus", 1e-3, 1e13, "Pa");
+  // G defaults to that of an isotropic solid with Poisson's ratio 0.3: G = E / (2 (1 + ν)).
+  material.shear_modulus = keys.given("shear_modulus")
+                               ? keys.bounded("shear_modulus", 1e-3, 1e13, "Pa")
+                               : material.youngs_modulus / 2.6;
+
+  // The scene's own section wins over a preset's: `area` given beside a preset's `radius`.
+  const bool has_area = keys.in_scene("area") || (!keys.in_scene("radius") && keys.given("area"));
+  const bool has_radius = keys.in_scene("radius") || (!has_area && keys.given("radius"));
+  if (keys.in_scene("radius") && keys.in_scene("area")) {
     throw_user_error(map.loc(),
                      "'{}' needs the section: either 'radius' (a circular wire, m) or 'area' (m², "
                      "with optional 'area_moment' and 'polar_moment', m⁴), not both",
                      map.name());
   }
+  if (!has_radius && !has_area) {
+    throw_user_error(map.loc(),
+                     "'{}' needs the section: either 'radius' (a circular wire, m) or 'area' (m², "
+                     "with optional 'area_moment' and 'polar_moment', m⁴); or, for a sheet, "
+                     "'areal_density' and the sheet's stiffnesses; or a 'preset'",
+                     map.name());
+  }
   if (has_radius) {
-    const double r = map.required_number("radius");
-    require_positive(r, map.loc("radius"), map.path("radius"), "m");
-    require_in_range(r, 1e-7, 100.0, map.loc("radius"), map.path("radius"), "m");
+    const double r = keys.bounded("radius", 1e-7, 100.0, "m");
     material.wire_radius = r;
     material.area = std::numbers::pi * r * r;
     material.area_moment = std::numbers::pi * std::pow(r, 4) / 4.0;
     material.polar_moment = std::numbers::pi * std::pow(r, 4) / 2.0;
   } else {
-    material.area = map.required_number("area");
-    require_positive(material.area, map.loc("area"), map.path("area"), "m²");
-    require_in_range(material.area, 1e-14, 1e4, map.loc("area"), map.path("area"), "m²");
+    material.area = keys.bounded("area", 1e-14, 1e4, "m²");
     // Without I and J, those of the circle of the same area: I = A²/(4π), J = 2I.
+    material.area_moment = keys.given("area_moment")
+                               ? keys.bounded("area_moment", 1e-30, 1e8, "m⁴")
+                               : material.area * material.area / (4.0 * std::numbers::pi);
+    material.polar_moment = keys.given("polar_moment")
+                                ? keys.bounded("polar_moment", 1e-30, 1e8, "m⁴")
+                                : 2.0 * material.area_moment;
+  }
+  // A rope's or a chain's bending and twist, far below a solid rod's of its diameter: E I and G J
+  // given as such, which the section's I and J then follow.
+  if (keys.given("bending_stiffness")) {
     material.area_moment =
-        map.number("area_moment", material.area * material.area / (4.0 * std::numbers::pi));
-    require_positive(material.area_moment, map.loc("area_moment"), map.path("area_moment"), "m⁴");
-    require_in_range(material.area_moment, 1e-30, 1e8, map.loc("area_moment"),
-                     map.path("area_moment"), "m⁴");
-    material.polar_moment = map.number("polar_moment", 2.0 * material.area_moment);
-    require_positive(material.polar_moment, map.loc("polar_moment"), map.path("polar_moment"),
-                     "m⁴");
-    require_in_range(material.polar_moment, 1e-30, 1e8, map.loc("polar_moment"),
-                     map.path("polar_moment"), "m⁴");
+        keys.bounded("bending_stiffness", 1e-15, 1e12, "N·m²") / material.youngs_modulus;
+  }
+  if (keys.given("torsion_stiffness")) {
+    material.polar_moment =
+        keys.bounded("torsion_stiffness", 1e-15, 1e12, "N·m²") / material.shear_modulus;
   }
 
   // Yield: from a yield stress σy and the section, then any kind given directly overrides it.
   // With r the wire radius (or that of the circle of the same area), the fully plastic values
   // of a round section: Ny = σy A, My = (4/3) r³ σy, Ty = (2π/3) r³ τy with τy = σy/√3 (von
   // Mises).
-  if (map.has("yield_stress")) {
-    const double sigma = map.number("yield_stress", 0.0);
-    require_positive(sigma, map.loc("yield_stress"), map.path("yield_stress"), "Pa");
+  if (keys.given("yield_stress")) {
+    const double sigma = keys.number("yield_stress");
+    require_positive(sigma, keys.loc("yield_stress"), keys.path("yield_stress"), "Pa");
     const double r = std::sqrt(material.area / std::numbers::pi);
     material.yield_axial_force = sigma * material.area;
     material.yield_bending_moment = 4.0 / 3.0 * r * r * r * sigma;
@@ -109,11 +213,29 @@ MaterialDesc read_material(YamlMap map) {
     }
     yield.finish();
   }
+}
+
+}  // namespace
+
+MaterialDesc read_material(YamlMap map) {
+  MaterialDesc material;
+  material.loc = map.loc();
+  MaterialKeys keys(map);
+  if (keys.preset() != nullptr) {
+    material.preset = keys.preset()->name;
+  }
+  const bool sheet = keys.preset() != nullptr ? keys.preset()->sheet : keys.given("areal_density");
+  if (sheet) {
+    material.sheet = read_sheet(map, keys);
+  } else {
+    read_wire(map, keys, material);
+  }
   if (map.has("breaking")) {
     YamlMap breaking(map.get("breaking"), map.file(), map.path("breaking"));
+    const char* force_unit = sheet ? "N/m" : "N";
     if (!breaking.has("strain") && !breaking.has("force")) {
-      throw_user_error(breaking.loc(), "'{}' needs 'strain' (for example 0.3) or 'force' (N)",
-                       breaking.name());
+      throw_user_error(breaking.loc(), "'{}' needs 'strain' (for example 0.3) or 'force' ({})",
+                       breaking.name(), sheet ? "N/m, per width" : "N");
     }
     if (breaking.has("strain")) {
       material.breaking_strain = breaking.number("strain", 0.0);
@@ -122,7 +244,8 @@ MaterialDesc read_material(YamlMap map) {
     }
     if (breaking.has("force")) {
       material.breaking_force = breaking.number("force", 0.0);
-      require_positive(material.breaking_force, breaking.loc("force"), breaking.path("force"), "N");
+      require_positive(material.breaking_force, breaking.loc("force"), breaking.path("force"),
+                       force_unit);
     }
     breaking.finish();
   }

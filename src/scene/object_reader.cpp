@@ -165,6 +165,26 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
                      "'{}' must be auto, collinear, all or none; got '{}'",
                      map.path("bending_pairs"), pairs);
   }
+  if (map.has("faces")) {
+    object.faces_loc = map.loc("faces");
+    const std::string faces = map.string("faces", "sheet");
+    if (faces == "sheet") {
+      object.faces = FaceRole::kSheet;
+    } else if (faces == "net") {
+      object.faces = FaceRole::kNet;
+    } else {
+      throw_user_error(map.loc("faces"),
+                       "'{}' must be sheet (the faces are cloth: they resist shear) or net (they "
+                       "are the openings between wires: the bars alone act); got '{}'",
+                       map.path("faces"), faces);
+    }
+    if (object.faces == FaceRole::kNet && object.material.sheet) {
+      throw_user_error(map.loc("faces"),
+                       "'{}': object '{}' has a sheet material, whose stiffness and mass are its "
+                       "faces'; a net needs a wire material (density, youngs_modulus, radius)",
+                       map.path("faces"), object.name);
+    }
+  }
   object.torsion = map.boolean("torsion", object.torsion);
   if (map.has("contact")) {
     object.contact =

@@ -17,22 +17,36 @@ namespace dinam {
 
 inline constexpr double kNoYield = std::numeric_limits<double>::infinity();
 
+// A sheet's material as textile measurements give it, per unit area and width (material_reader
+// turns a `material` with `areal_density` into one; model/face_springs.cpp into springs).
+struct SheetDesc {
+  double areal_density = 0.0;       // kg/m²
+  double stretch_stiffness = 0.0;   // N/m: tension per width over strain, along the grain
+  double shear_stiffness = 0.0;     // N/m: in-plane shear force per width over the shear angle
+  double bending_rigidity = 0.0;    // N·m: bending moment per width over curvature (KES-F's B)
+  double thickness = 0.0;           // m: contact and drawing only
+  double yield_stretch = kNoYield;  // N/m: tension per width at which it flows
+  double yield_bending = kNoYield;  // N·m/m: moment per width at which a fold sets
+};
+
 // Section, elastic and plastic properties of the bars of one object, SI units.
 struct MaterialDesc {
-  double density = 0.0;         // kg/m³
-  double youngs_modulus = 0.0;  // E, Pa
-  double shear_modulus = 0.0;   // G, Pa
-  double area = 0.0;            // A, m²
-  double area_moment = 0.0;     // I, m⁴ (bending springs)
-  double polar_moment = 0.0;    // J, m⁴ (torsion springs)
-  double wire_radius = 0.0;     // m, when the section was given as a circular wire; else 0
+  std::string preset;              // the named material it started from (material_presets.hpp)
+  std::optional<SheetDesc> sheet;  // a sheet: the section values below are then unused
+  double density = 0.0;            // kg/m³
+  double youngs_modulus = 0.0;     // E, Pa
+  double shear_modulus = 0.0;      // G, Pa
+  double area = 0.0;               // A, m²
+  double area_moment = 0.0;        // I, m⁴ (bending springs)
+  double polar_moment = 0.0;       // J, m⁴ (torsion springs)
+  double wire_radius = 0.0;        // m, when the section was given as a circular wire; else 0
   // Perfect elastoplasticity, decoupled per spring kind; kNoYield keeps a kind elastic.
   double yield_axial_force = kNoYield;     // N
   double yield_bending_moment = kNoYield;  // N·m
   double yield_torsion_moment = kNoYield;  // N·m
   // Tearing: a bar breaks for good once its strain or its axial force reaches one of these.
   double breaking_strain = kNoYield;  // (L − L0) / L0
-  double breaking_force = kNoYield;   // N, tension
+  double breaking_force = kNoYield;   // N, tension (N/m, per width, for a sheet)
   bool can_break() const { return breaking_strain < kNoYield || breaking_force < kNoYield; }
   FileLoc loc;
 };
@@ -121,6 +135,11 @@ struct ObjectContactDesc {
                                  // of cords has holes between them)
 };
 
+// What an object's faces are to its motion (`faces`): cloth, whose faces resist in-plane shear
+// (and carry a sheet material's mass and stiffness); or a net, whose faces are the openings
+// between wires, so that only the bars act.
+enum class FaceRole { kSheet, kNet };
+
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
 enum class DrawStyle { kSurface, kWire, kBoth };
 
@@ -150,6 +169,8 @@ struct ObjectDesc {
   Vec3 initial_velocity = Vec3::Zero();  // m/s
   std::vector<VelocityGroupDesc> velocity_groups;
   BendingPairs bending_pairs = BendingPairs::kAuto;
+  FaceRole faces = FaceRole::kSheet;
+  FileLoc faces_loc;    // of `faces`, when given
   bool torsion = true;  // torsion springs wherever a bar has reference neighbours
   AxialDampingDesc axial_damping;
   Vec3f color{0.8f, 0.8f, 0.8f};        // linear RGB in [0, 1]
