@@ -3,6 +3,7 @@
 
 #include "core/geometry.hpp"
 #include "model/bar_lookup.hpp"
+#include "model/face_springs.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model_spring_kinds.hpp"
 #include "model/spring_builders.hpp"
@@ -70,8 +71,8 @@ void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
         int best = -1;
         double widest = -1.0;
         for (int q = 0; q < static_cast<int>(bars.size()); ++q) {
-          if (q == p) {
-            continue;
+          if (q == p || materials[bars[q].second - object.first_bar]->area_moment == 0.0) {
+            continue;  // a bar that does not bend (a sheet's shared side) is no one's partner
           }
           const double angle = bend_angle(model.node_initial_x[bars[p].first], xc,
                                           model.node_initial_x[bars[q].first]);
@@ -94,6 +95,9 @@ void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
       const double l2 = model.bar_rest_length[bars[q].second];
       const MaterialDesc& m1 = *materials[bars[p].second - object.first_bar];
       const MaterialDesc& m2 = *materials[bars[q].second - object.first_bar];
+      if (m1.area_moment == 0.0 || m2.area_moment == 0.0) {
+        continue;  // the shared side of a sheet's two triangles (face_springs.hpp) does not bend
+      }
       model.bend_nodes.insert(model.bend_nodes.end(), {a, c, b});
       // A rest angle within 1e-4 rad of straight is rounding in the mesh's coordinates: it is
       // made straight, so that the spring's energy is smooth and least there (a bent rest has its
@@ -111,6 +115,17 @@ void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
                                                 : 2.0 / (l1 / ei1 + l2 / ei2));
       model.bend_yield_moment.push_back(std::min(m1.yield_bending_moment, m2.yield_bending_moment));
     }
+  }
+}
+
+void add_corner_springs(const std::vector<CornerSpring>& corners, Model& model) {
+  for (const CornerSpring& corner : corners) {
+    model.bend_nodes.insert(model.bend_nodes.end(), {corner.a, corner.c, corner.b});
+    model.bend_rest_angle.push_back(bend_angle(model.node_initial_x[corner.a],
+                                               model.node_initial_x[corner.c],
+                                               model.node_initial_x[corner.b]));
+    model.bend_stiffness.push_back(corner.stiffness);
+    model.bend_yield_moment.push_back(kNoYield);
   }
 }
 

@@ -54,7 +54,14 @@ void check_derived_quantities(const Model& model, const SceneDescription& scene)
       refuse(desc, desc.mesh_loc, "the length of bar " + std::to_string(b - object.first_bar),
              model.bar_rest_length[b]);
     }
-    if (const Index b = first_unusable(model.bar_axial_stiffness, object.first_bar, bar_end, true);
+    // A sheet's two triangles that make a rectangle share a side of no stiffness
+    // (face_springs.hpp).
+    bool sheet = desc.material.sheet.has_value();
+    for (const MaterialPartDesc& part : desc.parts) {
+      sheet = sheet || part.material.sheet.has_value();
+    }
+    if (const Index b =
+            first_unusable(model.bar_axial_stiffness, object.first_bar, bar_end, !sheet);
         b >= 0) {
       refuse(desc, material,
              "the axial stiffness E·A/L₀ of bar " + std::to_string(b - object.first_bar),

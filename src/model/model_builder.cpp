@@ -9,6 +9,7 @@
 #include "model/contact_builder.hpp"
 #include "model/derived_checks.hpp"
 #include "model/edge_collapse.hpp"
+#include "model/face_springs.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/loose_pieces.hpp"
 #include "model/mass_scaling.hpp"
@@ -25,8 +26,6 @@
 
 namespace dinam {
 namespace {
-
-using Edge = std::pair<Index, Index>;  // welded ids, first < second
 
 // Collects the unique edges of an object's cleaned faces and lines in welded ids. A face
 // contributes its closed loop, a line its open chain; an edge shared by two faces appears once.
@@ -63,6 +62,9 @@ struct ObjectNodes {
   Index object_id = 0;
   std::vector<Index> node_of_vertex;  // (n_vertices)
   BarMaterials bar_materials;         // (n_bars) the object's material or a part's
+  // What its faces add (face_springs.hpp): bar_materials may point into its sheet_bars; its
+  // corners in node ids.
+  FaceSprings faces;
 };
 
 // The nodes a selection names, in increasing order. A listed vertex on no edge is an error.
@@ -270,7 +272,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
   info.source_vertex_count = object.mesh.source_vertex_count;
   info.bar_count = static_cast<Index>(edges.size());
   model.objects.push_back(std::move(info));
-  ObjectNodes nodes{&object, object_id, {}, {}};
+  ObjectNodes nodes{&object, object_id, {}, {}, {}};
   nodes.node_of_vertex.reserve(weld.node_of_vertex.size());
   for (const Index w : weld.node_of_vertex) {
     nodes.node_of_vertex.push_back(node_of_welded[w]);
@@ -280,6 +282,27 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
   // half to each end.
   const std::vector<int> part_of_edge =
       edge_parts(object, clean, weld, edges, node_of_welded, nodes, model);
+  std::vector<const MaterialDesc*> edge_material(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    edge_material[e] =
+        part_of_edge[e] >= 0 ? &object.parts[part_of_edge[e]].material : &object.material;
+  }
+  nodes.faces = face_springs(object, clean, weld, edges, std::move(edge_material));
+  model.warnings.insert(model.warnings.end(), nodes.faces.warnings.begin(),
+                        nodes.faces.warnings.end());
+  for (CornerSpring& corner : nodes.faces.corners) {
+    corner = {node_of_welded[corner.a], node_of_welded[corner.c], node_of_welded[corner.b],
+              corner.stiffness};
+  }
+  for (std::size_t w = 0; w < weld.nodes.size(); ++w) {
+    if (node_of_welded[w] >= 0) {
+      model.node_mass[node_of_welded[w]] += nodes.faces.vertex_mass[w];
+    }
+  }
+  if (object.material.sheet) {
+    model.objects.back().wire_radius = 0.5 * object.material.sheet->thickness;
+    model.objects.back().section_area = 0.0;
+  }
   // Bars in the order of their nodes' ids, so that a thread's share is a few long runs (`edges`
   // stay in the order of welded ids, which the lookups above search).
   std::vector<std::size_t> bar_order(edges.size());
@@ -295,8 +318,7 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
             [&](std::size_t x, std::size_t y) { return node_ids(x) < node_ids(y); });
   for (const std::size_t e : bar_order) {
     const auto [n0, n1] = node_ids(e);
-    const MaterialDesc& material =
-        part_of_edge[e] >= 0 ? object.parts[part_of_edge[e]].material : object.material;
+    const MaterialDesc& material = *nodes.faces.edge_material[e];
     nodes.bar_materials.push_back(&material);
     const double rest_length = (model.node_initial_x[n1] - model.node_initial_x[n0]).norm();
     model.bar_nodes.push_back(n0);
@@ -304,7 +326,8 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
     model.bar_rest_length.push_back(rest_length);
     model.bar_axial_stiffness.push_back(material.youngs_modulus * material.area / rest_length);
     model.bar_yield_force.push_back(material.yield_axial_force);
-    model.bar_radius.push_back(std::sqrt(material.area / std::numbers::pi));
+    model.bar_radius.push_back(material.sheet ? material.wire_radius
+                                              : std::sqrt(material.area / std::numbers::pi));
     model.bar_damping.push_back(0.0);  // set below, once the node masses are known
     const double half_mass = 0.5 * material.density * material.area * rest_length;
     model.node_mass[n0] += half_mass;
@@ -473,6 +496,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
     if (object.desc->pins_clamped) {
       add_clamps(object.bar_materials, info, adjacency, model, first_bend);
     }
+    add_corner_springs(object.faces.corners, model);
     if (object.desc->torsion) {
       add_torsion_springs(object.bar_materials, info, adjacency, model);
     } else {

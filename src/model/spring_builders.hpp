@@ -34,6 +34,11 @@ NodeAdjacency node_adjacency(const Model& model, const ModelObject& object);
 void add_bending_springs(const BarMaterials& materials, BendingPairs pairs,
                          const ModelObject& object, const NodeAdjacency& adjacency, Model& model);
 
+// The faces' corner springs (face_springs.hpp), in node ids, as bending springs: each holds the
+// angle at its corner, which shear in the face's plane changes. Elastic.
+struct CornerSpring;
+void add_corner_springs(const std::vector<CornerSpring>& corners, Model& model);
+
 // At each pinned node of a clamped object (ObjectDesc::pins_clamped), the bending springs centred
 // there give way to one clamp per bar to a free node (model.hpp), which holds that bar's rest
 // direction; bending springs must already be built.

@@ -126,6 +126,10 @@ void add_torsion_springs(const BarMaterials& materials, const ModelObject& objec
   };
   std::vector<std::uint8_t> covered(static_cast<std::size_t>(object.bar_count), 0);
   for (Index bar = object.first_bar; bar < object.first_bar + object.bar_count; ++bar) {
+    if (rigidity_of(bar) == 0.0) {  // the shared side of a sheet's two triangles: no twist
+      covered[bar - object.first_bar] = 1;
+      continue;
+    }
     const Index i = model.bar_nodes[2 * bar];
     const Index j = model.bar_nodes[2 * bar + 1];
     const Vec3 axis = model.node_initial_x[j] - model.node_initial_x[i];

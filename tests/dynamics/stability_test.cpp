@@ -43,7 +43,7 @@ double exact_max_frequency_squared(const Model& model) {
   return max_frequency_squared(model, dofs, k_matrix);
 }
 
-// Bars alone: no bending, torsion or ground contact, so the bound is the axial one.
+// Bars alone: no bending, torsion, faces' shear or ground contact, so the bound is the axial one.
 Model model_of(const std::string& mesh, const std::string& pinned) {
   return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
 duration: 1
@@ -54,6 +54,7 @@ objects:
     pinned: {}
     bending_pairs: none
     torsion: false
+    faces: net
 )",
                                                        mesh, pinned)));
 }
