@@ -19,6 +19,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
+#include "scene/material_presets.hpp"
 #include "scene/scene_description.hpp"
 #include "solver/implicit_damping.hpp"
 
@@ -157,9 +158,15 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
   for (std::size_t k = 0; k < model.objects.size(); ++k) {
     const ModelObject& object = model.objects[k];
     const RawMesh& mesh = scene.objects[k].mesh;
+    nlohmann::ordered_json material = {{"preset", scene.objects[k].material.preset},
+                                       {"sheet", scene.objects[k].material.sheet.has_value()}};
+    for (const MaterialValue& value : resolved_material_values(scene.objects[k].material)) {
+      material[value.key] = value.value;
+    }
     objects.push_back({{"name", object.name},
                        {"nodes", object.node_count},
                        {"bars", object.bar_count},
+                       {"material", material},
                        {"mesh_materials", element_names(mesh, MeshNameKind::kMaterial)},
                        {"mesh_groups", element_names(mesh, MeshNameKind::kGroup)}});
   }
@@ -290,6 +297,15 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
   for (std::size_t k = 0; k < model.objects.size(); ++k) {
     const ModelObject& object = model.objects[k];
     fmt::print("  {:<14} {} nodes, {} bars\n", object.name, object.node_count, object.bar_count);
+    const MaterialDesc& material = scene.objects[k].material;
+    std::vector<std::string> values;
+    for (const MaterialValue& value : resolved_material_values(material)) {
+      values.push_back(fmt::format("{} {:.4g}{}{}", value.key, value.value,
+                                   *value.unit != 0 ? " " : "", value.unit));
+    }
+    fmt::print("  {:<14} {} {}: {}\n", "",
+               material.preset.empty() ? "material" : "material " + material.preset,
+               material.sheet ? "(a sheet)" : "(a wire or rope)", fmt::join(values, ", "));
     // The names a part can choose bars by (`mesh_material`, `mesh_group`).
     const RawMesh& mesh = scene.objects[k].mesh;
     for (const auto& [kind, label] : {std::pair{MeshNameKind::kMaterial, "materials"},
