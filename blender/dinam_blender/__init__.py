@@ -23,13 +23,6 @@ bl_info = {
 }
 
 
-def apply_preset(settings, _context):
-    if settings.preset in scene_export.PRESETS:
-        _, _, density, modulus, radius, ratio = scene_export.PRESETS[settings.preset]
-        settings.density, settings.youngs_modulus = density, modulus
-        settings.radius, settings.damping_ratio = radius, ratio
-
-
 class DinamSettings(bpy.types.PropertyGroup):
     program: bpy.props.StringProperty(
         name="dinam", description="The dinam program (a path, or a name on PATH)",
@@ -40,8 +33,8 @@ class DinamSettings(bpy.types.PropertyGroup):
     preset: bpy.props.EnumProperty(
         name="Material",
         items=[(key, v[0], v[1]) for key, v in scene_export.PRESETS.items()] +
-              [("CUSTOM", "Custom", "The values below")],
-        default="CLOTH", update=apply_preset)
+              [("CUSTOM", "Custom wire", "A wire of the density, modulus and radius below")],
+        default="cotton")
     density: bpy.props.FloatProperty(name="Density (kg/m³)", default=1200.0, min=1e-3)
     youngs_modulus: bpy.props.FloatProperty(name="Young's modulus (Pa)", default=2.0e7, min=1e-3)
     radius: bpy.props.FloatProperty(name="Wire radius (m)", default=0.001, min=1e-6,
@@ -199,8 +192,9 @@ class DINAM_PT_panel(bpy.types.Panel):
         layout.prop(settings, "preset")
         column = layout.column()
         column.enabled = settings.preset == "CUSTOM"
-        for key in ("density", "youngs_modulus", "radius", "damping_ratio"):
+        for key in ("density", "youngs_modulus", "radius"):
             column.prop(settings, key)
+        layout.prop(settings, "damping_ratio")
         obj = context.active_object
         if obj is not None and obj.type == "MESH":
             layout.prop_search(settings, "pin_group", obj, "vertex_groups")

@@ -8,14 +8,31 @@ point k of the cache dinam writes is the object's vertex k.
 import json
 import os
 
-# Materials as dinam's scene file gives them (docs/scene-format.md, `material`): density kg/m³,
-# Young's modulus Pa, wire radius m, and the bars' damping ratio.
+# dinam's named materials (docs/materials.md; `material: {preset: NAME}` in a scene): the same
+# names, so an artist's choice here is dinam's preset with its values and sources. "custom" takes
+# the panel's density, Young's modulus and wire radius instead.
 PRESETS = {
-    "CLOTH": ("Cloth", "A woven flag or sheet: the paper's flag", 1200.0, 2.0e7, 0.001, 0.05),
-    "RUBBER": ("Rubber", "A soft rubber wire or membrane", 1100.0, 5.0e7, 0.004, 0.05),
-    "ROPE": ("Rope", "A nylon rope", 1140.0, 2.0e9, 0.005, 0.05),
-    "STEEL": ("Steel wire", "A thin steel wire: stiff, so small steps", 7850.0, 2.0e11, 0.001, 0.02),
+    "cotton": ("Cotton", "Shirting cotton, 120 g/m²: a shirt, a flag, a sheet"),
+    "denim": ("Denim", "12 oz denim, 400 g/m²: jeans, heavy garments"),
+    "silk": ("Silk", "Silk habotai, 60 g/m²: light and flowing"),
+    "canvas": ("Canvas", "10 oz cotton duck, 340 g/m²: sails, awnings, bags"),
+    "leather": ("Leather", "Garment leather, 1.2 mm"),
+    "rubber_sheet": ("Rubber sheet", "Natural rubber, 1 mm: stretches"),
+    "hemp_rope": ("Hemp rope", "12 mm three-strand hemp rope"),
+    "nylon_rope": ("Nylon rope", "12 mm three-strand nylon rope"),
+    "steel_cable": ("Steel cable", "6 mm 6×19 wire rope: stiff, so small steps"),
+    "chain": ("Chain", "6 mm steel link chain"),
+    "copper_wire": ("Copper wire", "2 mm annealed copper wire: bends and stays bent"),
+    "steel_wire": ("Steel wire", "2 mm mild steel wire: stiff, so small steps"),
 }
+
+
+def material_text(settings):
+    """The object's `material` map: the chosen preset, or the panel's own values."""
+    if settings.preset in PRESETS:
+        return f"{{preset: {settings.preset}}}"
+    return (f"{{density: {settings.density!r}, youngs_modulus: {settings.youngs_modulus!r}, "
+            f"radius: {settings.radius!r}}}")
 
 
 class ExportError(Exception):
@@ -97,8 +114,7 @@ def scene_text(settings, objects, frame_count, fps):
         lines += [
             f"  - name: {json.dumps(name)}",
             f"    mesh: {{file: {json.dumps(os.path.basename(obj_file))}, up_axis: z}}",
-            f"    material: {{density: {settings.density!r}, youngs_modulus: "
-            f"{settings.youngs_modulus!r}, radius: {settings.radius!r}}}",
+            f"    material: {material_text(settings)}",
         ]
         if settings.damping_ratio > 0:
             lines.append(f"    damping: {{axial_ratio: {settings.damping_ratio!r}}}")

@@ -5,7 +5,7 @@
 #  1. installs the zip as Preferences > Add-ons > Install does, and enables it;
 #  2. makes a plane subdivided in Blender, stood upright and moved by its object transform (not
 #     applied), pinned along its top edge by a vertex group "pins";
-#  3. runs Simulate (the operator, waiting for dinam as a script's call does) with the cloth preset
+#  3. runs Simulate (the operator, waiting for dinam as a script's call does) with the cotton preset
 #     and a wind, and checks the Mesh Cache modifier it added (first, PC2, from the scene's start);
 #  4. compares the object's vertices, as Blender evaluates them at the first, the middle and the
 #     last frame and places them by the object's transform, with the cache's PC2 read here with
@@ -50,7 +50,7 @@ rest_world = [banner.matrix_world @ v.co for v in banner.data.vertices]
 settings = scene.dinam
 settings.program = dinam
 settings.folder = work
-settings.preset = "CLOTH"
+settings.preset = "cotton"
 settings.pin_group = "pins"
 settings.wind = (0.0, 4.0, 0.0)
 bpy.ops.object.select_all(action="DESELECT")
