@@ -57,7 +57,7 @@ const std::vector<MaterialPreset>& material_presets() {
         {"bending_rigidity", 3.6e-3},
         {"thickness", 1.2e-3}},
        "garment leather 1.2 mm, 830 kg/m³; tensile modulus 25 MPa at low strain, nearly "
-       "isotropic (G = E t / 3), B = E t³ / 12"},
+       "isotropic: S = E t, G = E t / 3, B = E t³ / 12"},
       {"rubber_sheet",
        true,
        {{"areal_density", 0.93},
@@ -65,7 +65,8 @@ const std::vector<MaterialPreset>& material_presets() {
         {"shear_stiffness", 500.0},
         {"bending_rigidity", 1.67e-4},
         {"thickness", 1.0e-3}},
-       "natural rubber sheet 1 mm, 930 kg/m³, E 1.5 MPa, ν 0.5: E t, E t / 3, E t³ / 12(1 − ν²)"},
+       "natural rubber 1 mm, 930 kg/m³, E 1.5 MPa, ν 0.5: S = E t, G = E t / 3, "
+       "B = E t³ / 12(1 − ν²)"},
       {"hemp_rope",
        false,
        {{"density", 973.0},
@@ -73,7 +74,8 @@ const std::vector<MaterialPreset>& material_presets() {
         {"radius", 0.006},
         {"bending_stiffness", 1.0e-3},
         {"torsion_stiffness", 1.0e-3}},
-       "12 mm three-strand hemp, 0.11 kg/m, EA 120 kN; bending about 0.4 % of a solid rod's"},
+       "12 mm three-strand hemp, 0.11 kg/m, EA 120 kN; bending estimated at 0.1 % of a solid "
+       "rod's (strands that slide)"},
       {"nylon_rope",
        false,
        {{"density", 796.0},
@@ -81,8 +83,8 @@ const std::vector<MaterialPreset>& material_presets() {
         {"radius", 0.006},
         {"bending_stiffness", 5.0e-4},
         {"torsion_stiffness", 5.0e-4}},
-       "12 mm three-strand nylon, 0.09 kg/m, EA 60 kN at working loads; bending about 0.2 % of a "
-       "solid rod's"},
+       "12 mm three-strand nylon, 0.09 kg/m, EA 60 kN at working loads; bending estimated at "
+       "0.1 % of a solid rod's (strands that slide)"},
       {"steel_cable",
        false,
        {{"density", 4600.0},

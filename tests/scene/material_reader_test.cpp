@@ -6,6 +6,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <string>
 
@@ -46,6 +49,22 @@ TEST(MaterialPresets, EveryPresetReadsAndSaysWhereItsValuesComeFrom) {
       }
     }
     EXPECT_NO_THROW(build_model(scene)) << preset.name;
+  }
+}
+
+// docs/materials.md gives every preset with its values, as %g prints them, and its source.
+TEST(MaterialPresets, TheDocsListEveryPresetWithItsValues) {
+  std::ifstream in(std::filesystem::path(DINAM_SOURCE_DIR) / "docs" / "materials.md");
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const MaterialPreset& preset : material_presets()) {
+    const auto at = doc.find(fmt::format("| `{}` |", preset.name));
+    ASSERT_NE(at, std::string::npos) << preset.name;
+    const std::string row = doc.substr(at, doc.find('\n', at) - at);
+    for (const auto& [key, value] : preset.values) {
+      EXPECT_NE(row.find(fmt::format("| {:g} |", value)), std::string::npos)
+          << preset.name << " " << key << ": " << row;
+    }
+    EXPECT_NE(row.find(preset.source), std::string::npos) << preset.name;
   }
 }
 
