@@ -1,24 +1,17 @@
 #pragma once
 // What an object's faces add to its bars, before the bars are built: a sheet material's
-// stiffness, mass and limits spread over the bars and nodes of its faces, and each face's
-// resistance to shear in its plane, as springs on the angle at its corners.
+// stiffness, mass and limits spread over its faces' bars and nodes, and each face's resistance to
+// shear in its plane, as springs on its corner angles (docs/scene-format.md, `material`).
 //
-// A sheet (SheetDesc) is an orthotropic membrane with the grain along a quad's sides: energy per
-// area ½ S (ε_uu² + ε_vv²) + ½ G γ², and bending B per width. A face of area A and n sides gives
-// each side of length L the width w = A / (n/2) / L of sheet it stands for (a rectangle's two
-// sides along u share its u-stretch), so the side's bar has E A = S w, E I = B w (and G J = B w,
-// the plate's twist); each corner a shear spring of stiffness G A / n on its angle (a rectangle's
-// corner angles change by ±γ under shear, so four give ½ G γ² A); and each corner the mass
-// ρ_A A / n. These are exact for any uniform strain of a grid of rectangles, whatever its size.
-// Triangles in pairs that make a rectangle (a quad mesh triangulated) are that rectangle, their
-// shared side a bar of no stiffness. Other triangles are a triangle lattice: w = A / L on each
-// side gives the stretch S exactly on an equilateral mesh, in every direction, but its shear
-// follows from the sides (3/8 S), not G: such a sheet is isotropic (warned).
-//
-// A face with a wire material (the bars have their own stiffness and mass) and four sides or more
-// gets the corner springs of G = E A_bar / (2 L_d), L_d its diagonal: the shear that a diagonal bar
-// of the same wire would give it, whichever diagonal a triangulation would have chosen. Its
-// triangles keep their bars alone; `faces: net` takes the corner springs away.
+// A sheet (SheetDesc) is orthotropic with its grain along a quad's sides: ½ S (ε_uu² + ε_vv²) +
+// ½ G γ² per area, bending B per width. A face of area A and n sides gives each side of length L
+// the width w = A / (n/2) / L it stands for: E A = S w, E I = G J = B w; each corner a spring
+// G A / n on its angle and the mass ρ_A A / n. Exact for uniform strain of rectangles at any size.
+// Two triangles that make a rectangle are that rectangle (their shared side has no stiffness);
+// other triangles take w = A / L (a triangle lattice: S in every direction on an equilateral mesh,
+// but the shear of its sides, 3/8 S, not G; warned). A wire material's faces of four sides or more
+// get the corner springs of G = E A / (2 L_d), L_d the diagonal: what a diagonal wire would give,
+// whichever diagonal; its triangles keep their bars alone; `faces: net` takes the corners away.
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,7 +40,6 @@ struct FaceSprings {
   std::vector<MaterialDesc> sheet_bars;
   std::vector<double> vertex_mass;  // (n_welded) kg from sheet faces
   std::vector<CornerSpring> corners;
-  double sheet_thickness = 0.0;  // m, the thickest sheet's (0 without one)
   std::vector<std::string> warnings;
 };
 
