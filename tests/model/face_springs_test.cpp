@@ -385,5 +385,52 @@ objects:
   test::expect_contains(net.warnings.back(), {"inline.yaml:9:12", "faces: net", "64 faces"});
 }
 
+// A sheet's limits per width become each bar's for the width it stands for: on a grid of 0.1 m
+// cells an inside bar stands for 0.1 m (yield 50 N/m: 5 N; tearing at 200 N/m: 20 N), an edge bar
+// for 0.05 m; a crease's moment per width likewise; a rectangle's shared side never tears.
+TEST(Sheet, LimitsPerWidthBecomeEachBarsLimits) {
+  for (const char* diagonals : {"none", "one"}) {
+    const Model model = build_model(test::scene_from_yaml(fmt::format(
+        R"(version: 1
+duration: 1
+objects:
+  - name: sheet
+    mesh: {{grid: {{width: 0.4, height: 0.4, columns: 4, rows: 4, diagonals: {}}}}}
+    material: {{preset: cotton, yield: {{stretch: 50, bending: 0.01}}, breaking: {{force: 200}}}}
+)",
+        diagonals)));
+    ASSERT_TRUE(model.can_tear());
+    int inside = 0;
+    int edge = 0;
+    for (Index b = 0; b < model.bar_count(); ++b) {
+      const Vec3 a = model.node_initial_x[model.bar_nodes[2 * b]];
+      const Vec3 c = model.node_initial_x[model.bar_nodes[2 * b + 1]];
+      if (std::abs((c - a).norm() - 0.1) > 1e-9) {  // a shared side
+        EXPECT_EQ(model.bar_axial_stiffness[b], 0.0);
+        EXPECT_TRUE(std::isinf(model.bar_breaking_force[b]));
+        continue;
+      }
+      const bool on_rim = (std::abs(a.x() - c.x()) < 1e-9 &&
+                           (std::abs(a.x()) < 1e-9 || std::abs(a.x() - 0.4) < 1e-9)) ||
+                          (std::abs(a.y() - c.y()) < 1e-9 &&
+                           (std::abs(a.y()) < 1e-9 || std::abs(a.y() - 0.4) < 1e-9));
+      const double width = on_rim ? 0.05 : 0.1;
+      (on_rim ? edge : inside) += 1;
+      EXPECT_NEAR(model.bar_yield_force[b], 50.0 * width, 1e-12) << diagonals << " bar " << b;
+      EXPECT_NEAR(model.bar_breaking_force[b], 200.0 * width, 1e-12) << diagonals << " bar " << b;
+      EXPECT_NEAR(model.bar_axial_stiffness[b], 1.0e4 * width / 0.1, 1e-9) << diagonals;
+    }
+    EXPECT_EQ(edge, 16);
+    EXPECT_EQ(inside, 24);
+    ASSERT_TRUE(model.bends_yield);
+    // A bending spring across an inside node: the weaker of its bars' moments, 0.01 × 0.1 N·m.
+    EXPECT_NEAR(*std::max_element(model.bend_yield_moment.begin(), model.bend_yield_moment.end(),
+                                  [](double p, double q) {
+                                    return (std::isinf(p) ? -1.0 : p) < (std::isinf(q) ? -1.0 : q);
+                                  }),
+                1e-3, 1e-15);
+  }
+}
+
 }  // namespace
 }  // namespace dinam
