@@ -1,18 +1,30 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package dinam needs to build, test and render, when it is missing.
+# Installs every Debian 12 package dinam needs to build, test and render, when it is missing;
+# with --render, only what building the program and rendering need (the README's first command).
 # Non-interactive and idempotent: a second run with everything present does nothing but check.
 set -euo pipefail
 
+render_only=false
+case "${1:-}" in
+  "") ;;
+  --render) render_only=true ;;
+  *) echo "usage: $0 [--render]" >&2; exit 2 ;;
+esac
+
+# Building the program and rendering a movie.
 packages=(
-  g++ cmake make pkg-config
+  g++ cmake make pkg-config python3
   libeigen3-dev libassimp-dev libosmesa6-dev libgl-dev libpng-dev
   libyaml-cpp-dev libcli11-dev libfmt-dev nlohmann-json3-dev libssl-dev
   # Newton's method and the natural modes: Spectra's Lanczos on Eigen's sparse matrices, and
   # SuiteSparse's CHOLMOD for large models' factorisations, its dense blocks through the
   # single-threaded OpenBLAS (src/solver/CMakeLists.txt).
   libspectra-dev libsuitesparse-dev libopenblas0-serial
-  libgtest-dev libgmock-dev libbenchmark-dev
   ffmpeg
+)
+# The tests and benchmarks.
+$render_only || packages+=(
+  libgtest-dev libgmock-dev libbenchmark-dev
   # Real components the tests use where users meet them: Blender opens the motion cache
   # (tests/cache/blender_open_test.sh), and a one-node Slurm cluster runs the render farm
   # (tests/farm/slurm_farm_test.sh; the test starts and stops its own daemons).
@@ -21,7 +33,7 @@ packages=(
   chromium
   # Real meshes as users download them: the sweep (tests/real_meshes/) reads assimp's own test
   # models with `dinam info`, through a Python script.
-  assimp-testmodels python3
+  assimp-testmodels
 )
 
 missing=()
