@@ -1,10 +1,12 @@
 #include "solver/implicit_cost.hpp"
 
-#include <Eigen/CholmodSupport>
+#include <cholmod.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
+#include "core/error.hpp"
 #include "model/disjoint_sets.hpp"
 #include "model/model.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -132,24 +134,100 @@ const char* motion_text(ImplicitMotion motion) {
 }
 
 HessianFactorSize hessian_factor_size(const Model& model) {
+  // The factor is found from the free nodes' graph, not from the 3n × 3n Hessian: every spring
+  // joins its nodes in 3 × 3 blocks, so the Hessian's pattern is the graph's with each entry a
+  // dense block, and a node's column of the graph's factor with c entries (its diagonal among
+  // them) stands for three columns of the Hessian's with 3(c − 1) + 3, + 2 and + 1. No values
+  // are assembled: the analysis takes memory and time of the order of the springs' count.
   const FreeDofs dofs = free_dofs(model);
   HessianFactorSize size;
   size.unknowns = static_cast<double>(dofs.count);
   if (dofs.count == 0) {
     return size;
   }
-  const State state = make_state(model, false);
-  ForceSwitches springs;
-  springs.gravity = springs.fields = springs.wind = false;
-  springs.axial_dampers = springs.global_damping = springs.object_contact = false;
-  StiffnessAssembly assembly;
-  SparseMatrix pattern = assembly.assemble(model, state, springs, dofs, Definiteness::kExact);
-  pattern.diagonal().array() += 1.0;  // every diagonal entry present
-  Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> analysis;
-  analysis.cholmod().print = 0;
-  analysis.analyzePattern(pattern);
-  size.nonzeros = analysis.cholmod().lnz;
-  size.flops = analysis.cholmod().fl;
+  const Index free_nodes = dofs.count / 3;
+  const auto column_of = [&](Index node) { return dofs.first_dof[node] / 3; };  // −1: pinned
+  // Every pair of free nodes within one spring, as (column, row) of the graph's lower triangle.
+  const auto for_each_pair = [&](const auto& visit) {
+    const auto stencil = [&](const Index* nodes, int count) {
+      for (int a = 0; a < count; ++a) {
+        for (int b = a + 1; b < count; ++b) {
+          const Index u = column_of(nodes[a]);
+          const Index v = column_of(nodes[b]);
+          if (u >= 0 && v >= 0 && u != v) {
+            visit(std::min(u, v), std::max(u, v));
+          }
+        }
+      }
+    };
+    for (Index s = 0; s < model.bar_count(); ++s) {
+      stencil(&model.bar_nodes[2 * s], 2);
+    }
+    for (Index s = 0; s < model.bend_count(); ++s) {
+      stencil(&model.bend_nodes[3 * s], 3);
+    }
+    for (Index s = 0; s < model.torsion_count(); ++s) {
+      stencil(&model.torsion_nodes[4 * s], 4);
+    }
+  };
+  // Compressed columns: the diagonal, then each pair once.
+  std::vector<int> start(static_cast<std::size_t>(free_nodes) + 1, 0);
+  for (Index j = 0; j < free_nodes; ++j) {
+    start[j + 1] = 1;
+  }
+  for_each_pair([&](Index column, Index) { ++start[column + 1]; });
+  for (Index j = 0; j < free_nodes; ++j) {
+    start[j + 1] += start[j];
+  }
+  std::vector<int> rows(static_cast<std::size_t>(start.back()));
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (Index j = 0; j < free_nodes; ++j) {
+    rows[next[j]++] = j;
+  }
+  for_each_pair([&](Index column, Index row) { rows[next[column]++] = row; });
+  int kept = 0;
+  for (Index j = 0; j < free_nodes; ++j) {
+    const auto first = rows.begin() + start[j];
+    auto last = rows.begin() + start[j + 1];
+    std::sort(first, last);
+    last = std::unique(first, last);
+    start[j] = kept;
+    kept = static_cast<int>(std::copy(first, last, rows.begin() + kept) - rows.begin());
+  }
+  start[free_nodes] = kept;
+  rows.resize(static_cast<std::size_t>(kept));
+
+  cholmod_common common;
+  cholmod_start(&common);
+  common.print = 0;
+  common.supernodal = CHOLMOD_SIMPLICIAL;
+  // The best of AMD and METIS orders, as CHOLMOD's default choice for the 3n × 3n Hessian finds
+  // them (on the graph alone its default stops at AMD, whose factor is 23 % larger for a cloth of
+  // 150 000 bars).
+  common.nmethods = 3;
+  cholmod_sparse graph{};
+  graph.nrow = graph.ncol = static_cast<std::size_t>(free_nodes);
+  graph.nzmax = rows.size();
+  graph.p = start.data();
+  graph.i = rows.data();
+  graph.stype = -1;  // symmetric, its lower triangle given
+  graph.itype = CHOLMOD_INT;
+  graph.xtype = CHOLMOD_PATTERN;
+  graph.dtype = CHOLMOD_DOUBLE;
+  graph.sorted = 1;
+  graph.packed = 1;
+  cholmod_factor* factor = cholmod_analyze(&graph, &common);
+  DINAM_CHECK(factor != nullptr);
+  const int* counts = static_cast<const int*>(factor->ColCount);
+  for (Index j = 0; j < free_nodes; ++j) {
+    const double below = 3.0 * (counts[j] - 1);
+    size.nonzeros += 3.0 * below + 6.0;
+    for (int k = 1; k <= 3; ++k) {
+      size.flops += (below + k) * (below + k);  // a simplicial column's: its count squared
+    }
+  }
+  cholmod_free_factor(&factor, &common);
+  cholmod_finish(&common);
   return size;
 }
 

@@ -67,7 +67,8 @@ struct HessianFactorSize {
 };
 
 // The Cholesky factor of the model's stiffness pattern (every spring's blocks, the free nodes'
-// diagonal blocks), fill-reducing ordered as CHOLMOD orders it.
+// diagonal blocks), fill-reducing ordered as CHOLMOD orders it: found from the free nodes' graph
+// without assembling a value, in memory and time of the order of the springs' count.
 HessianFactorSize hessian_factor_size(const Model& model);
 
 struct ImplicitStepCost {

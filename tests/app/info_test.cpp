@@ -86,5 +86,29 @@ objects:
   test::expect_contains(info.output, {"central_difference: 814728 steps"});
 }
 
+// `info` is the cheap command users run first: on a cloth of 190 000 bars it stays within an
+// address space of 1 GB (it took 2 GB when it assembled the whole Hessian to size its factor;
+// bench_info_cost has the figures at 10⁴ to 10⁶ bars). Not under the sanitizers, whose shadow
+// memory no such limit admits.
+TEST(Info, ALargeClothFitsInAGigabyte) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "the address sanitizer reserves terabytes of address space";
+#endif
+  test::TemporaryFolder folder("info-large");
+  const auto scene = folder.path() / "cloth.yaml";
+  std::ofstream(scene) << R"(version: 1
+duration: 1
+objects:
+  - name: cloth
+    mesh: {grid: {width: 1, height: 1, columns: 250, rows: 250, diagonals: one}}
+    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001}
+    pinned: {box: {min: [-0.001, 0.999, -1], max: [1.001, 1.001, 1]}}
+)";
+  const test::CommandResult info = test::run_command(
+      "ulimit -v 1000000 && " + test::dinam_command("info " + test::shell_quoted(scene)));
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  test::expect_contains(info.output, {"bars             188000", "integrators      "});
+}
+
 }  // namespace
 }  // namespace dinam
