@@ -52,7 +52,7 @@ void parse_formats(const std::string& text, CacheRequest& request) {
   if (!request.pc2 && !request.mdd) {
     throw_user_error({},
                      "--format {} names no point cache: a cache holds pc2 or mdd (which 'dinam "
-                     "render --from-cache' reads) beside a USD stage; add pc2, as in pc2,usd",
+                     "render --cache' reads) beside a USD stage; add pc2, as in pc2,usd",
                      text);
   }
 }

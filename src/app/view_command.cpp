@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <charconv>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -24,16 +25,17 @@ using Json = nlohmann::json;
 constexpr std::uint64_t kMostPageBytes = 256ull << 20;
 
 // An object's faces (fanned by the page) and lines from its rest OBJ, as the cache wrote it, in
-// the ids of the whole cache's points.
-void add_elements(const std::filesystem::path& obj, Index first, Json& faces, Json& face_sizes,
-                  Json& lines) {
+// the ids of the whole cache's points. The file is read as untrusted: each index must be a number
+// of one of the object's `count` points, or the line is refused by its number.
+void add_elements(const std::filesystem::path& obj, Index first, Index count, Json& faces,
+                  Json& face_sizes, Json& lines) {
   std::ifstream in(obj);
   if (!in) {
     throw_user_error(FileLoc{obj.string()}, "cannot read the cache's rest mesh: {}",
                      std::strerror(errno));
   }
   std::string line;
-  while (std::getline(in, line)) {
+  for (int number = 1; std::getline(in, line); ++number) {
     if (line.size() < 2 || (line[0] != 'f' && line[0] != 'l') || line[1] != ' ') {
       continue;
     }
@@ -41,7 +43,20 @@ void add_elements(const std::filesystem::path& obj, Index first, Json& faces, Js
     std::string word;
     std::vector<Index> ids;
     while (words >> word) {
-      ids.push_back(first + static_cast<Index>(std::stoll(word.substr(0, word.find('/')))) - 1);
+      const std::string digits = word.substr(0, word.find('/'));
+      long long id = 0;
+      const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), id);
+      if (error != std::errc() || end != digits.data() + digits.size() || id < 1 || id > count) {
+        throw UserError(FileLoc{obj.string(), number, 1},
+                        fmt::format("'{}' is not a point of this object (1 to {}): the cache's "
+                                    "rest mesh was edited or damaged; simulate again",
+                                    word, count));
+      }
+      ids.push_back(first + static_cast<Index>(id) - 1);
+    }
+    if (ids.size() < (line[0] == 'f' ? 3u : 2u)) {
+      throw UserError(FileLoc{obj.string(), number, 1},
+                      "a face needs three points and a line two; simulate again");
     }
     if (line[0] == 'f') {
       face_sizes.push_back(ids.size());
@@ -112,7 +127,8 @@ int run_view(const ViewOptions& options) {
     Json faces = Json::array();
     Json face_sizes = Json::array();
     Json lines = Json::array();
-    add_elements(cache.folder() / entry.obj, entry.first_node, faces, face_sizes, lines);
+    add_elements(cache.folder() / entry.obj, entry.first_node, entry.node_count, faces, face_sizes,
+                 lines);
     if (!entry.look.surface) {  // drawn as wires only: its faces' sides are its bars
       for (std::size_t f = 0, at = 0; f < face_sizes.size(); ++f) {
         const std::size_t size = face_sizes[f].get<std::size_t>();
@@ -160,12 +176,13 @@ int run_view(const ViewOptions& options) {
   static_assert(std::endian::native == std::endian::little, "the page's floats are little-endian");
 
   std::string page = viewer_page_template();
-  // "</" would end the script element that holds the JSON (an object named "</script>"); JSON
-  // reads "<\/" as the same two characters.
-  std::string meta_text = meta.dump();
-  for (std::size_t at = meta_text.find("</"); at != std::string::npos;
-       at = meta_text.find("</", at + 3)) {
-    meta_text.replace(at, 2, "<\\/");
+  // No '<' may stand in the script element that holds the JSON: "</script>" would end it and
+  // "<!--" open a comment that hides its end (an object of any name). '<' is only ever inside a
+  // JSON string, where "\u003c" is the same character. Names not UTF-8 are shown with U+FFFD.
+  std::string meta_text = meta.dump(-1, ' ', false, Json::error_handler_t::replace);
+  for (std::size_t at = meta_text.find('<'); at != std::string::npos;
+       at = meta_text.find('<', at)) {
+    meta_text.replace(at, 1, "\\u003c");
   }
   replace_once(page, "/*DINAM_META*/", meta_text);
   replace_once(

@@ -42,6 +42,20 @@ FrameBounds bounds_from(const Json& j) {
   return b;
 }
 
+// `name` (of `owner`'s `kind` file) is a plain file name in the cache's folder, or empty where
+// `may_be_empty`.
+void require_file_name(const FileLoc& loc, const std::string& name, const std::string& owner,
+                       const char* kind, bool may_be_empty) {
+  if (name.empty() ? !may_be_empty
+                   : name == "." || name == ".." || name.find('/') != std::string::npos ||
+                         name.find('\0') != std::string::npos) {
+    throw UserError(loc, fmt::format("{}'s {} file is named '{}', which is not a file of the "
+                                     "cache's own folder; the manifest was edited or damaged: "
+                                     "simulate again",
+                                     owner, kind, name));
+  }
+}
+
 }  // namespace
 
 std::string canonical_scene_path(const std::filesystem::path& scene) {
@@ -229,10 +243,37 @@ CacheManifest read_manifest(const std::filesystem::path& path) {
         }
       }
     }
+    if (m.frame_count < 1) {
+      throw UserError(loc, fmt::format("the cache holds {} frames: there is nothing to draw or "
+                                       "play; simulate a scene of at least one frame",
+                                       m.frame_count));
+    }
     if (m.frame_bounds.size() != static_cast<std::size_t>(m.frame_count) || m.fps <= 0.0 ||
         m.objects.empty()) {
       throw UserError(loc, "the manifest is inconsistent (frame bounds, fps or objects)");
     }
+    // The files it names are the cache's own: a name with a folder in it (../../etc/passwd)
+    // would have a reader open a file outside the cache.
+    Index next_node = 0;
+    for (const CacheObjectEntry& entry : m.objects) {
+      require_file_name(loc, entry.obj, entry.name, "obj", false);
+      require_file_name(loc, entry.pc2, entry.name, "pc2", true);
+      require_file_name(loc, entry.mdd, entry.name, "mdd", true);
+      if (entry.pc2.empty() && entry.mdd.empty()) {
+        throw UserError(loc,
+                        fmt::format("object '{}' names no point cache (pc2 or mdd)", entry.name));
+      }
+      if (entry.first_node != next_node || entry.node_count < 1 ||
+          entry.first_node + entry.node_count > m.node_count) {
+        throw UserError(loc, fmt::format("object '{}' holds points {} to {} of the cache's {}, "
+                                         "which do not follow the objects before it",
+                                         entry.name, entry.first_node,
+                                         entry.first_node + entry.node_count - 1, m.node_count));
+      }
+      next_node += entry.node_count;
+    }
+    require_file_name(loc, m.usd, "the stage", "usd", true);
+    require_file_name(loc, m.instants.pc2, "the motion blur", "pc2", true);
     return m;
   } catch (const Json::exception& e) {
     throw UserError(

@@ -53,10 +53,10 @@ std::string settings_difference(const std::vector<MotionSetting>& cached,
 MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folder)) {
   std::error_code ec;
   if (!std::filesystem::is_directory(folder_, ec)) {
-    throw_user_error({},
-                     "--cache {}: there is no such folder; make the cache with 'dinam "
+    throw_user_error(FileLoc{folder_.string()},
+                     "there is no such folder, so no motion cache there; make one with 'dinam "
                      "simulate SCENE -o {}'",
-                     folder_.string(), folder_.string());
+                     folder_.string());
   }
   manifest_ = read_manifest(folder_ / "manifest.json");
   for (const CacheObjectEntry& entry : manifest_.objects) {

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "app/browser.hpp"
 #include "core/image.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_file.hpp"
@@ -20,16 +21,10 @@
 namespace dinam {
 namespace {
 
-constexpr const char* kChromium = "/usr/bin/chromium";
+using test::kChromium;
 
-// Chromium as the machine's probe runs it: no sandbox (it may run as root), no GPU, and none of
-// the background services that would reach for the network.
 std::string chromium(const test::TemporaryFolder& folder, const std::string& arguments) {
-  return fmt::format(
-      "{} --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-      "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir='{}' --hide-scrollbars --window-size=480,300 {}",
-      kChromium, (folder.path() / "chromium").string(), arguments);
+  return test::chromium_command(folder.path() / "chromium", arguments);
 }
 
 struct Viewed {

@@ -1,0 +1,126 @@
+// A motion cache read as untrusted input (cache/manifest.cpp, app/view_command.cpp): a cache of
+// no frame, a rest mesh whose indices are not the object's points, a manifest that names a file
+// outside the cache, and names that would break the page `dinam view` writes. Each is refused with
+// exit 2 naming the file (and line), writes nothing, or, for names, plays in a real browser.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "app/browser.hpp"
+#include "test_support.hpp"
+
+namespace dinam {
+namespace {
+
+using Json = nlohmann::json;
+
+// A wire of 4 bars in 2 frames, simulated into `folder`/cache (its scene `folder`/tiny.yaml),
+// objects named as given.
+struct TinyCache {
+  explicit TinyCache(const std::string& scene_name = "tiny",
+                     const std::string& object_name = "wire") {
+    std::ofstream(scene) << "version: 1\nname: " << Json(scene_name).dump()
+                         << "\nduration: 0.2\nfps: 10\nobjects:\n  - name: "
+                         << Json(object_name).dump() << R"(
+    mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]], segments: 4}}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.005}
+    pinned: {indices: [0]}
+)";
+    const test::CommandResult made =
+        test::run_dinam({"simulate", scene.string(), "-o", cache.string(), "--quiet"});
+    EXPECT_EQ(made.exit_code, 0) << made.output;
+  }
+  Json manifest() const {
+    std::ifstream in(cache / "manifest.json");
+    return Json::parse(in);
+  }
+  void write_manifest(const Json& json) const {
+    std::ofstream(cache / "manifest.json") << json.dump(1);
+  }
+  std::filesystem::path obj() const { return cache / manifest()["objects"][0]["files"]["obj"]; }
+  test::CommandResult view() const {
+    return test::run_dinam({"view", cache.string(), "-o", page.string()});
+  }
+
+  test::TemporaryFolder folder{"hostile-cache"};
+  std::filesystem::path scene = folder.path() / "tiny.yaml";
+  std::filesystem::path cache = folder.path() / "cache";
+  std::filesystem::path page = folder.path() / "page.html";
+};
+
+TEST(HostileCache, ACacheOfNoFrameIsRefusedByViewAndRender) {
+  const TinyCache tiny;
+  Json manifest = tiny.manifest();
+  manifest["frame_count"] = 0;
+  manifest["frame_bounds"] = Json::array();
+  tiny.write_manifest(manifest);
+  const test::CommandResult viewed = tiny.view();
+  EXPECT_EQ(viewed.exit_code, 2) << viewed.output;
+  test::expect_contains(viewed.output, {"manifest.json", "holds 0 frames"});
+  EXPECT_FALSE(std::filesystem::exists(tiny.page));
+  const test::CommandResult rendered =
+      test::run_dinam({"render", tiny.scene.string(), "--cache", tiny.cache.string(), "-o",
+                       (tiny.folder.path() / "frames").string(), "--movie", "none", "--quiet"});
+  EXPECT_EQ(rendered.exit_code, 2) << rendered.output;
+  test::expect_contains(rendered.output, {"manifest.json", "holds 0 frames"});
+}
+
+TEST(HostileCache, ARestMeshIndexThatIsNoPointIsRefusedAtItsLine) {
+  for (const char* bad : {"l 1 x 3", "l 1 99", "l 0 2", "f 1 2"}) {
+    const TinyCache tiny;
+    std::ifstream in(tiny.obj());
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    in.close();
+    const std::size_t at = text.find("l 2 3");
+    ASSERT_NE(at, std::string::npos) << text;
+    text.replace(at, 5, bad);
+    std::ofstream(tiny.obj()) << text;
+    // The line's number: the comment, `o`, five `v`, then l 1 2 and this one.
+    const test::CommandResult viewed = tiny.view();
+    EXPECT_EQ(viewed.exit_code, 2) << bad << ": " << viewed.output;
+    test::expect_contains(viewed.output,
+                          {tiny.obj().filename().string() + ":9:1", "simulate again"});
+    EXPECT_FALSE(std::filesystem::exists(tiny.page)) << bad;
+  }
+}
+
+TEST(HostileCache, AManifestNamingAFileOutsideTheCacheIsRefused) {
+  for (const char* key : {"obj", "pc2"}) {
+    const TinyCache tiny;
+    Json manifest = tiny.manifest();
+    manifest["objects"][0]["files"][key] = "../../../../../../etc/os-release";
+    tiny.write_manifest(manifest);
+    const test::CommandResult viewed = tiny.view();
+    EXPECT_EQ(viewed.exit_code, 2) << viewed.output;
+    test::expect_contains(viewed.output, {"manifest.json", "not a file of the cache's own folder"});
+    EXPECT_FALSE(std::filesystem::exists(tiny.page));
+  }
+}
+
+// Names that would end the page's script ("</script>") or hide its end in a comment ("<!--"),
+// in the scene's and the object's name: the page holds no '<' in its data and plays.
+TEST(HostileCache, ThePagePlaysWithAnyName) {
+  const TinyCache tiny("<!--<script>", "</script><!--");
+  const test::CommandResult viewed = tiny.view();
+  ASSERT_EQ(viewed.exit_code, 0) << viewed.output;
+  std::ifstream in(tiny.page);
+  const std::string page{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(page.find("<!--<script>"), std::string::npos);
+  EXPECT_EQ(page.find("</script><!--"), std::string::npos);
+  if (!std::filesystem::exists(test::kChromium)) {
+    GTEST_SKIP() << "chromium is not installed (scripts/install-deps.sh installs it)";
+  }
+  const test::CommandResult dom = test::run_command(
+      test::chromium_command(tiny.folder.path() / "chromium",
+                             fmt::format("--dump-dom 'file://{}#frame=2'", tiny.page.string())));
+  EXPECT_EQ(dom.exit_code, 0) << dom.output;
+  test::expect_contains(dom.output,
+                        {"data-status=\"ready\"", "data-errors=\"0\"", "data-frame=\"2\""});
+}
+
+}  // namespace
+}  // namespace dinam
