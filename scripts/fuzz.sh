@@ -6,7 +6,7 @@
 # (or, when assimp itself crashed or hung on it, in tests/fuzz/assimp-failures/), where CTest
 # replays it.
 #
-#   scripts/fuzz.sh [RUNS] [scene|mesh|mesh_wire]
+#   scripts/fuzz.sh [RUNS] [scene|mesh|mesh_wire|cache_manifest]
 #
 # FUZZ_SECONDS=3600 stops each target after that long instead (whichever comes first).
 #
@@ -26,17 +26,21 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=cl
   -DCMAKE_CXX_COMPILER=clang++ -DDINAM_FUZZ=ON -DDINAM_BUILD_BENCH=OFF -DDINAM_X86_64_V3=OFF \
   -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined" \
   >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene_reader fuzz_mesh fuzz_mesh_wire >/dev/null
+cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene_reader fuzz_mesh fuzz_mesh_wire \
+  fuzz_cache_manifest >/dev/null
 
 # The sanitizers' suppressions are the asan preset's: only leaks inside third-party libraries.
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 corpus=build-fuzz/corpus
-mkdir -p "$corpus/scene" "$corpus/mesh" "$corpus/mesh_wire" build-fuzz/artifacts/scene \
-  build-fuzz/artifacts/mesh build-fuzz/artifacts/mesh_wire
+mkdir -p "$corpus/scene" "$corpus/mesh" "$corpus/mesh_wire" "$corpus/cache_manifest" \
+  build-fuzz/artifacts/scene build-fuzz/artifacts/mesh build-fuzz/artifacts/mesh_wire \
+  build-fuzz/artifacts/cache_manifest
 cp scenes/*.yaml tests/fuzz/regressions/scene/* "$corpus/scene/" 2>/dev/null || true
 cp assets/* tests/data/* tests/fuzz/regressions/mesh/* "$corpus/mesh/" 2>/dev/null || true
 cp tests/fuzz/mesh-wire-seeds/* tests/fuzz/regressions/mesh_wire/* "$corpus/mesh_wire/" 2>/dev/null ||
   true
+cp tests/fuzz/manifest-seeds/* tests/fuzz/regressions/cache_manifest/* "$corpus/cache_manifest/" \
+  2>/dev/null || true
 
 common=(-runs="$runs" -max_total_time="${FUZZ_SECONDS:-0}" -max_len=65536 -timeout=20 -rss_limit_mb=4096 -print_final_stats=1)
 if [ -z "$only" ] || [ "$only" = scene ]; then
@@ -54,4 +58,9 @@ if [ -z "$only" ] || [ "$only" = mesh_wire ]; then
   echo "fuzz.sh: what the importing child sends back, $runs runs"
   build-fuzz/tests/fuzz/fuzz_mesh_wire "${common[@]}" \
     -artifact_prefix=build-fuzz/artifacts/mesh_wire/ "$corpus/mesh_wire"
+fi
+if [ -z "$only" ] || [ "$only" = cache_manifest ]; then
+  echo "fuzz.sh: a motion cache's manifest, $runs runs"
+  build-fuzz/tests/fuzz/fuzz_cache_manifest "${common[@]}" \
+    -artifact_prefix=build-fuzz/artifacts/cache_manifest/ "$corpus/cache_manifest"
 fi

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
@@ -147,17 +148,22 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
 }
 
 CacheManifest read_manifest(const std::filesystem::path& path) {
-  const FileLoc loc{path.string()};
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw UserError(loc,
+    throw UserError(FileLoc{path.string()},
                     "there is no manifest.json here, so this folder is not a complete motion "
                     "cache (an interrupted 'dinam simulate' leaves none); make one with "
                     "'dinam simulate SCENE -o FOLDER'");
   }
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return parse_manifest(text, path);
+}
+
+CacheManifest parse_manifest(const std::string& text, const std::filesystem::path& path) {
+  const FileLoc loc{path.string()};
   Json json;
   try {
-    json = Json::parse(in);
+    json = Json::parse(text);
   } catch (const Json::parse_error& e) {
     throw UserError(loc, fmt::format("the manifest is not valid JSON: {}", e.what()));
   }

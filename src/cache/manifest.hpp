@@ -106,4 +106,8 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& mani
 // dinam cache manifest of this format version.
 CacheManifest read_manifest(const std::filesystem::path& path);
 
+// The same from the manifest's text; `path` names it in messages. Any bytes are refused with a
+// UserError or read (tests/fuzz/cache_manifest_fuzz.cpp).
+CacheManifest parse_manifest(const std::string& text, const std::filesystem::path& path);
+
 }  // namespace dinam
