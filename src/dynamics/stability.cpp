@@ -50,6 +50,12 @@ TimeStep choose_timestep(const Model& model, std::optional<double> requested, do
   }
   // Relative slack so that 0.05 s / 0.0005 s counts as exactly 100 steps despite rounding.
   const double steps = std::ceil(frame_interval / target * (1.0 - 1e-9));
+  if (steps > 1e8 && requested) {
+    throw_user_error(where,
+                     "the time step {:.3g} s would take {:.3g} steps a frame, more than any run "
+                     "can; give a step of at least {:.3g} s, or 'timestep: auto'",
+                     *requested, steps, frame_interval / 1e8);
+  }
   if (steps > 1e8) {
     throw_user_error(where,
                      "this model needs a time step of {:.3g} s, over {:.3g} steps per frame; "

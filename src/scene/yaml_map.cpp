@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 namespace dinam {
@@ -92,6 +93,35 @@ Vec3 as_vec3(const YAML::Node& node, const std::string& file, const std::string&
   }
   return {as_double(node[0], file, what + "[0]"), as_double(node[1], file, what + "[1]"),
           as_double(node[2], file, what + "[2]")};
+}
+
+void require_utf8(const std::string& text, const FileLoc& loc, const std::string& what) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    // The length of the sequence and the least its value may be (shorter forms are not UTF-8).
+    const std::size_t length = lead < 0x80           ? 1
+                               : (lead >> 5) == 0x6  ? 2
+                               : (lead >> 4) == 0xE  ? 3
+                               : (lead >> 3) == 0x1E ? 4
+                                                     : 0;
+    bool valid = length > 0 && i + length <= text.size();
+    std::uint32_t code = length == 1 ? lead : lead & (0x7Fu >> length);
+    for (std::size_t k = 1; valid && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      valid = (next >> 6) == 0x2;
+      code = (code << 6) | (next & 0x3Fu);
+    }
+    constexpr std::uint32_t kLeast[] = {0, 0, 0x80, 0x800, 0x10000};
+    valid = valid && code >= kLeast[length] && code <= 0x10FFFF && (code < 0xD800 || code > 0xDFFF);
+    if (!valid) {
+      throw_user_error(loc,
+                       "'{}' is not UTF-8 text (byte {} of it is not): write the name in UTF-8, "
+                       "as every editor saves it by default",
+                       what, i + 1);
+    }
+    i += length;
+  }
 }
 
 void check_no_duplicate_keys(const YAML::Node& root, const std::string& file) {

@@ -23,6 +23,10 @@ bool as_bool(const YAML::Node& node, const std::string& file, const std::string&
 std::string as_string(const YAML::Node& node, const std::string& file, const std::string& what);
 Vec3 as_vec3(const YAML::Node& node, const std::string& file, const std::string& what);
 
+// Throws UserError at `loc` unless `text` is UTF-8: names go into JSON manifests, USD stages and
+// web pages, which hold nothing else.
+void require_utf8(const std::string& text, const FileLoc& loc, const std::string& what);
+
 // Throws UserError at the second occurrence of a key within one map, anywhere in the document,
 // naming the first: YAML forbids it, yet the parser keeps both and a reader would silently use one.
 void check_no_duplicate_keys(const YAML::Node& root, const std::string& file);

@@ -153,6 +153,23 @@ TEST(Stability, ExplicitStepAboveTheLimitIsRefusedWithBothNumbers) {
   }
 }
 
+// A step given so short that a frame would take over 10⁸ of them is refused as the scene's own
+// choice, with the shortest step that a run can take; nothing to stiffen (the implicit integrator
+// takes any step).
+TEST(Stability, AStepTooShortForAnyRunNamesTheStepGiven) {
+  const Model model = build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+integrator: implicit
+timestep: 1.0e-300
+objects:
+  - mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]], segments: 4}}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.005}
+)"));
+  test::expect_user_error(
+      [&] { choose_timestep(model, 1.0e-300, 20.0, {"scene.yaml", 4, 11}); }, 4,
+      {"the time step 1e-300 s would take", "at least 5e-10 s", "'timestep: auto'"});
+}
+
 TEST(Stability, ChosenStepFitsWholeStepsIntoEachFrame) {
   const Model model =
       model_of("{polyline: {points: [[0, 0, 0], [1, 0, 0]], segments: 10}}", "{indices: [0]}");
