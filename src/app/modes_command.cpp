@@ -15,8 +15,10 @@
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 #include "dynamics/stability.hpp"
+#include "model/frequency_bound.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/initial_state.hpp"
 #include "solver/natural_modes.hpp"
 #include "solver/settle.hpp"
 
@@ -89,16 +91,23 @@ std::vector<double> amplitudes(const std::vector<NaturalMode>& modes, double siz
   return result;
 }
 
-void print_table(const std::vector<NaturalMode>& modes) {
+// |ω²| below this share of the model's highest ω² (its bound) is round-off about zero: a motion
+// that nothing resists (a body free to slide or turn), not an unstable equilibrium. The
+// eigensolver's ω² of such a mode come out near 1e-8 of ω_max² at worst.
+constexpr double kRoundOffShare = 1e-7;
+
+void print_table(const std::vector<NaturalMode>& modes, double round_off) {
   fmt::print("mode  frequency (Hz)  period (s)   mass share x      y      z\n");
   for (std::size_t m = 0; m < modes.size(); ++m) {
     const NaturalMode& mode = modes[m];
-    const std::string period =
-        mode.frequency > 0.0 ? fmt::format("{:10.4g}", 1.0 / mode.frequency) : "         -";
+    const bool free_motion = std::abs(mode.omega_squared) <= round_off;
+    const std::string period = mode.frequency > 0.0 && !free_motion
+                                   ? fmt::format("{:10.4g}", 1.0 / mode.frequency)
+                                   : "         -";
     const std::string frequency =
-        mode.omega_squared >= 0.0
-            ? fmt::format("{:14.5g}", mode.frequency)
-            : fmt::format("{:>14}", "unstable");  // ω² < 0: the equilibrium is not stable
+        free_motion                  ? fmt::format("{:>14}", "0 (free)")  // a rigid-body motion
+        : mode.omega_squared >= 0.0 ? fmt::format("{:14.5g}", mode.frequency)
+                                    : fmt::format("{:>14}", "unstable");  // ω² < 0
     fmt::print("{:4}  {}  {}   {:9.1f} % {:5.1f} % {:5.1f} %\n", m + 1, frequency, period,
                100.0 * mode.mass_share.x(), 100.0 * mode.mass_share.y(),
                100.0 * mode.mass_share.z());
@@ -135,7 +144,7 @@ int run_modes(const ModesOptions& options) {
   const auto start = Clock::now();
 
   State state = make_state(model, false);
-  settle_under_gravity(model, timestep.dt, {}, state);
+  settle_under_gravity(model, settling_step(model, timestep.dt), {}, state);
   ForceSwitches quiet;
   quiet.fields = false;
   quiet.wind = false;
@@ -146,7 +155,7 @@ int run_modes(const ModesOptions& options) {
   }
   if (!options.quiet) {
     fmt::print("dinam: {}\n", settle_summary(state.settled, timestep.dt));
-    print_table(modes);
+    print_table(modes, kRoundOffShare * max_frequency_squared_bound(model));
   }
 
   const Model shown = mode_objects(model, state.x, modes);

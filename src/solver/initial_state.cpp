@@ -6,16 +6,17 @@
 
 namespace dinam {
 
+double settling_step(const Model& model, double dt) {
+  return model.integrator == IntegratorKind::kImplicit
+             ? kAutoTimestepSafety * critical_timestep(model)
+             : dt;
+}
+
 State initial_state(const Model& model, double dt, const ForceSwitches& switches, bool track_energy,
                     Settling settling) {
   State state = make_state(model, track_energy);
   if (settling == Settling::kRun) {
-    // Relaxation steps by central differences: with the implicit integrator's long step, at the
-    // automatic explicit one instead.
-    const double settle_dt = model.integrator == IntegratorKind::kImplicit
-                                 ? kAutoTimestepSafety * critical_timestep(model)
-                                 : dt;
-    settle_under_gravity(model, settle_dt, switches, state);
+    settle_under_gravity(model, settling_step(model, dt), switches, state);
   }
   if (model.integrator == IntegratorKind::kCentralDifference) {
     start_leapfrog(model, dt, switches, state);
