@@ -164,7 +164,7 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
   Json json;
   try {
     json = Json::parse(text);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // a syntax error, or a number beyond a double's range
     throw UserError(loc, fmt::format("the manifest is not valid JSON: {}", e.what()));
   }
   try {
