@@ -163,6 +163,8 @@ int run_simulate(const SimulateOptions& options) {
     manifest.timestep = timestep.dt;
     manifest.steps_per_frame = timestep.steps_per_frame;
     manifest.simulate_seconds = seconds_since(start);
+    // A signal after the last frame's check still stops the run before the cache takes its name.
+    stop_if_asked();
     writer.commit(std::move(manifest), drawn_wire_radii(model, writer.frame_bounds()));
   } catch (const Interrupted&) {
     throw;
