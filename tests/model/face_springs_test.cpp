@@ -56,10 +56,10 @@ std::string ring_indices(int cells) {
   return fmt::format("[{}]", fmt::join(ring, ", "));
 }
 
-// A 1 m square of sheet in `cells` × `cells`, its grain turned `degrees` about z from x, its
-// outer ring pinned; no gravity. `diagonals`: none (quads) or one (triangles).
-Model sheet_patch(int cells, const std::string& diagonals, double degrees,
-                  const std::string& material) {
+// A sheet of `mesh` and `material` (YAML flow maps) with the nodes `pinned` (a YAML list of
+// vertex ids) held, more object keys in `extra`; no gravity, no ground.
+Model pinned_patch(const std::string& mesh, const std::string& material, const std::string& pinned,
+                   const std::string& extra = "") {
   return build_model(test::scene_from_yaml(fmt::format(
       R"(version: 1
 duration: 1
@@ -67,13 +67,22 @@ gravity: [0, 0, 0]
 ground: {{contact: false}}
 objects:
   - name: sheet
-    mesh:
-      grid: {{width: 1, height: 1, columns: {0}, rows: {0}, diagonals: {1}}}
-      rotation: [0, 0, {2}]
-    material: {3}
-    pinned: {{indices: {4}}}
-)",
-      cells, diagonals, degrees, material, ring_indices(cells))));
+    mesh: {}
+    material: {}
+    pinned: {{indices: {}}}
+{})",
+      mesh, material, pinned, extra)));
+}
+
+// A 1 m square of sheet in `cells` × `cells`, its grain turned `degrees` about z from x, its
+// outer ring pinned. `diagonals`: none (quads) or one (triangles).
+Model sheet_patch(int cells, const std::string& diagonals, double degrees,
+                  const std::string& material) {
+  return pinned_patch(
+      fmt::format("{{grid: {{width: 1, height: 1, columns: {0}, rows: {0}, diagonals: {1}}}, "
+                  "rotation: [0, 0, {2}]}}",
+                  cells, diagonals, degrees),
+      material, ring_indices(cells));
 }
 
 // The elastic energy per area of the patch strained by the displacement gradient H (x ↦ x + H x
@@ -175,18 +184,8 @@ TEST(Sheet, EquilateralTrianglesStretchAlikeInEveryDirection) {
   }
   const std::filesystem::path mesh = folder.path() / "lattice.obj";
   std::ofstream(mesh) << obj;
-  const Model model = build_model(test::scene_from_yaml(fmt::format(
-      R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-ground: {{contact: false}}
-objects:
-  - name: sheet
-    mesh: {{file: {}}}
-    material: {}
-    pinned: {{indices: [{}]}}
-)",
-      mesh.string(), kCotton, fmt::join(ring, ", "))));
+  const Model model = pinned_patch(fmt::format("{{file: {}}}", mesh.string()), kCotton,
+                                   fmt::format("[{}]", fmt::join(ring, ", ")));
   EXPECT_TRUE(std::any_of(model.warnings.begin(), model.warnings.end(), [](const std::string& w) {
     return w.find("not halves of a rectangle") != std::string::npos;
   }));
@@ -367,22 +366,12 @@ TEST(FaceShear, WireQuadsResistShearAsTheirTriangulationDoes) {
   EXPECT_NEAR(triangles / (64 * 0.5 * axial / diagonal * std::pow(diagonal * kAngle / 2, 2)), 1.0,
               2e-3);
 
-  const Model net = build_model(test::scene_from_yaml(fmt::format(
-      R"(version: 1
-duration: 1
-gravity: [0, 0, 0]
-ground: {{contact: false}}
-objects:
-  - name: sheet
-    mesh: {{grid: {{width: 1, height: 1, columns: 8, rows: 8, diagonals: none}}}}
-    material: {}
-    faces: net
-    pinned: {{indices: {}}}
-)",
-      kWire, ring_indices(8))));
+  const Model net =
+      pinned_patch("{grid: {width: 1, height: 1, columns: 8, rows: 8, diagonals: none}}", kWire,
+                   ring_indices(8), "    faces: net\n");
   EXPECT_LT(energy_per_area(net, gradient), 1e-3 * quads);
   ASSERT_FALSE(net.warnings.empty());
-  test::expect_contains(net.warnings.back(), {"inline.yaml:9:12", "faces: net", "64 faces"});
+  test::expect_contains(net.warnings.back(), {"inline.yaml:10:12", "faces: net", "64 faces"});
 }
 
 // A sheet's limits per width become each bar's for the width it stands for: on a grid of 0.1 m
