@@ -3,10 +3,14 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/output_file.hpp"
@@ -41,6 +45,32 @@ FrameBounds bounds_from(const Json& j) {
     b.subject_max[c] = has_subject ? j.at(at + 9).get<float>() : b.max[c];
   }
   return b;
+}
+
+// An integer of the manifest, as a whole number within the type's range: JSON's 1e20 or 2.5
+// where a count belongs is refused (converting it would be undefined behaviour, not an error).
+template <class T>
+T integer(const Json& value) {
+  if (!value.is_number_integer()) {
+    throw std::invalid_argument(fmt::format("{} where a whole number belongs", value.dump()));
+  }
+  const auto wide = value.get<std::int64_t>();
+  if (value.is_number_unsigned() && value.get<std::uint64_t>() > std::uint64_t{INT64_MAX}) {
+    throw std::invalid_argument(fmt::format("{} is out of range", value.dump()));
+  }
+  if (wide < std::numeric_limits<T>::min() || wide > std::numeric_limits<T>::max()) {
+    throw std::invalid_argument(fmt::format("{} is out of range", value.dump()));
+  }
+  return static_cast<T>(wide);
+}
+
+template <class T>
+std::vector<T> integers(const Json& list) {
+  std::vector<T> values;
+  for (const Json& value : list) {
+    values.push_back(integer<T>(value));
+  }
+  return values;
 }
 
 // `name` (of `owner`'s `kind` file) is a plain file name in the cache's folder, or empty where
@@ -171,7 +201,7 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
     if (json.at("format").get<std::string>() != CacheManifest::kFormat) {
       throw UserError(loc, "this is not the manifest of a dinam motion cache");
     }
-    const int version = json.at("format_version").get<int>();
+    const int version = integer<int>(json.at("format_version"));
     if (version != CacheManifest::kFormatVersion) {
       throw UserError(loc, fmt::format("cache format version {} is not the {} this dinam reads; "
                                        "simulate again to make a new cache",
@@ -188,23 +218,26 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
       m.motion_settings.push_back({key, value.get<std::string>()});
     }
     m.fps = json.at("fps").get<double>();
-    m.frame_count = json.at("frame_count").get<int>();
+    m.frame_count = integer<int>(json.at("frame_count"));
     m.timestep = json.at("timestep_s").get<double>();
-    m.steps_per_frame = json.at("steps_per_frame").get<int>();
+    m.steps_per_frame = integer<int>(json.at("steps_per_frame"));
     m.simulate_seconds = json.at("simulate_seconds").get<double>();
-    m.node_count = json.at("node_count").get<Index>();
+    m.node_count = integer<Index>(json.at("node_count"));
     for (const Json& o : json.at("objects")) {
       CacheObjectEntry entry;
       entry.name = o.at("name").get<std::string>();
-      entry.first_node = o.at("first_node").get<Index>();
-      entry.node_count = o.at("node_count").get<Index>();
-      entry.bar_count = o.at("bar_count").get<Index>();
+      entry.first_node = integer<Index>(o.at("first_node"));
+      entry.node_count = integer<Index>(o.at("node_count"));
+      entry.bar_count = integer<Index>(o.at("bar_count"));
       const Json& files = o.at("files");
       entry.obj = files.at("obj").get<std::string>();
       entry.pc2 = files.value("pc2", "");
       entry.mdd = files.value("mdd", "");
-      entry.source_vertex_count = o.value("source_vertex_count", Index{0});
-      entry.source_vertices = o.value("source_vertices", std::vector<Index>{});
+      entry.source_vertex_count =
+          o.contains("source_vertex_count") ? integer<Index>(o.at("source_vertex_count")) : 0;
+      entry.source_vertices = o.contains("source_vertices")
+                                  ? integers<Index>(o.at("source_vertices"))
+                                  : std::vector<Index>{};
       if (o.contains("look")) {
         const Json& look = o.at("look");
         entry.look.surface = look.at("surface").get<bool>();
@@ -222,7 +255,7 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
     if (json.contains("tears")) {
       for (const Json& tear : json.at("tears")) {
         m.tears.push_back(
-            {tear.at(0).get<int>(), tear.at(1).get<Index>(), tear.at(2).get<Index>()});
+            {integer<int>(tear.at(0)), integer<Index>(tear.at(1)), integer<Index>(tear.at(2))});
         const CacheTear& t = m.tears.back();
         if (t.frame < 1 || t.n0 < 0 || t.n1 < 0 || t.n0 >= m.node_count || t.n1 >= m.node_count) {
           throw UserError(loc, "the manifest names a tear outside the frames or the nodes");
@@ -231,9 +264,9 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
     }
     if (json.contains("motion_blur")) {
       const Json& blur = json.at("motion_blur");
-      m.instants.per_frame = blur.at("samples").get<int>();
+      m.instants.per_frame = integer<int>(blur.at("samples"));
       m.instants.shutter = blur.at("shutter").get<double>();
-      m.instants.offsets = blur.at("offsets_steps").get<std::vector<int>>();
+      m.instants.offsets = integers<int>(blur.at("offsets_steps"));
       m.instants.pc2 = blur.at("pc2").get<std::string>();
       if (m.instants.per_frame < 1 ||
           m.instants.offsets.size() != static_cast<std::size_t>(m.instants.per_frame)) {
@@ -284,6 +317,8 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
   } catch (const Json::exception& e) {
     throw UserError(
         loc, fmt::format("the manifest lacks a value or has one of the wrong type: {}", e.what()));
+  } catch (const std::invalid_argument& e) {
+    throw UserError(loc, fmt::format("the manifest has a count that is not one: {}", e.what()));
   }
 }
 
