@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 #include <string_view>
+#include <type_traits>
 
 #include "model/contact_builder.hpp"
 #include "model/derived_checks.hpp"
@@ -66,6 +67,8 @@ struct ObjectNodes {
   // corners in node ids.
   FaceSprings faces;
 };
+// The objects' list moves them as it grows, which keeps sheet_bars where bar_materials point.
+static_assert(std::is_nothrow_move_constructible_v<ObjectNodes>);
 
 // The nodes a selection names, in increasing order. A listed vertex on no edge is an error.
 std::vector<Index> select_nodes(const NodeSelection& selection, const ObjectNodes& object,
