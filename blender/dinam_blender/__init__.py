@@ -65,9 +65,10 @@ class Simulation:
         inputs = os.path.join(folder, "input")
         os.makedirs(inputs, exist_ok=True)
         described = []
+        stems = set()
         for obj in self.objects:
             scene_export.check_mesh(obj)
-            path = os.path.join(inputs, scene_export.object_file_stem(obj.name) + ".obj")
+            path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
             scene_export.write_obj(obj, path)
             described.append((obj.name, path, scene_export.pinned_indices(obj, settings.pin_group)))
         scene = context.scene

@@ -5,6 +5,7 @@ coordinates, so that gravity points down whatever the object's transform), its f
 edges as line elements. dinam numbers the nodes of an OBJ file in the order of its `v` lines, so
 point k of the cache dinam writes is the object's vertex k.
 """
+import hashlib
 import json
 import os
 
@@ -39,10 +40,21 @@ class ExportError(Exception):
     """A reason the selection cannot be simulated, worded for the artist."""
 
 
-def object_file_stem(name):
-    """A file name for an object: letters, digits, '-', '_' and '.' kept, anything else '_'."""
-    stem = "".join(c if c.isalnum() or c in "-_." else "_" for c in name)
-    return stem if stem and not stem.startswith(".") else "object" + stem
+def object_file_stem(name, taken=None):
+    """A file name for an object: letters, digits, '-', '_' and '.' kept, anything else '_', at
+    most 100 characters (a longer name ends in a digest of the whole); where `taken` (a set of
+    stems already used) holds it, a number follows, so that "a b" and "a_b" get files of their
+    own. The stem is added to `taken`."""
+    stem = "".join(c if c.isascii() and (c.isalnum() or c in "-_.") else "_" for c in name)
+    stem = stem if stem and not stem.startswith(".") else "object" + stem
+    if len(stem) > 100:
+        stem = stem[:83] + "-" + hashlib.sha256(name.encode("utf-8")).hexdigest()[:16]
+    if taken is not None:
+        base, number = stem, 1
+        while stem in taken:
+            stem, number = f"{base}_{number}", number + 1
+        taken.add(stem)
+    return stem
 
 
 def check_mesh(obj):

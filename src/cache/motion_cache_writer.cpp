@@ -17,6 +17,7 @@
 #include "cache/obj_file.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
+#include "core/sha256.hpp"
 #include "core/subject_box.hpp"
 #include "core/version.hpp"
 #include "model/model.hpp"
@@ -157,6 +158,11 @@ std::string cache_file_stem(const std::string& object_name) {
   if (stem.empty() || stem.front() == '.') {
     stem.insert(0, "object");
   }
+  // File systems take 255 bytes a name: a longer name keeps its start and ends in a digest of the
+  // whole, so two long names that share their start still get files of their own.
+  if (stem.size() > kLongestCacheStem) {
+    stem = stem.substr(0, kLongestCacheStem - 17) + "-" + sha256_hex(object_name).substr(0, 16);
+  }
   return stem;
 }
 
@@ -192,10 +198,12 @@ void MotionCacheWriter::open_files(const Model& model) {
   }
   for (std::size_t o = 0; o < model.objects.size(); ++o) {
     const ModelObject& object = model.objects[o];
+    // Names that map to one stem ("a b" and "a_b") get the object's number after it, and more
+    // where that too is taken.
     std::string stem = cache_file_stem(object.name);
-    if (!stems.insert(stem).second) {
-      stem = fmt::format("{}_{}", stem, o);
-      stems.insert(stem);
+    for (int more = 0; !stems.insert(stem).second; ++more) {
+      stem = fmt::format("{}_{}{}", cache_file_stem(object.name), o,
+                         more == 0 ? "" : "_" + std::to_string(more));
     }
     CacheObjectEntry entry{object.name,
                            object.first_node,

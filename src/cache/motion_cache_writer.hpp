@@ -5,6 +5,7 @@
 // ("DIR.part-HOST-PID"), and only a complete cache is moved to the final name, replacing an older
 // cache there in one step; so a cache is complete or absent, and an interrupted run leaves no
 // folder that looks like a cache.
+#include <cstddef>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -87,7 +88,8 @@ class MotionCacheWriter {
 };
 
 // A file name for an object's files from its name: letters, digits, '-', '_' and '.' kept, any
-// other character made '_', never empty or hidden.
+// other character made '_', never empty or hidden, and at most kLongestCacheStem bytes.
+inline constexpr std::size_t kLongestCacheStem = 100;
 std::string cache_file_stem(const std::string& object_name);
 
 }  // namespace dinam

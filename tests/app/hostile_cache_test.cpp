@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 #include "app/browser.hpp"
@@ -120,6 +121,41 @@ TEST(HostileCache, ThePagePlaysWithAnyName) {
   EXPECT_EQ(dom.exit_code, 0) << dom.output;
   test::expect_contains(dom.output,
                         {"data-status=\"ready\"", "data-errors=\"0\"", "data-frame=\"2\""});
+}
+
+// Object names a file system cannot take as they are: 300 characters (over its 255 a name), and
+// names that map to one file name ("a b" and "a_b"). Each object gets files of its own, at most
+// 100 characters a stem, and keeps its name in the manifest.
+TEST(HostileCache, LongAndClashingNamesGetFilesOfTheirOwn) {
+  const test::TemporaryFolder folder("names");
+  const std::string long_name(300, 'x');
+  std::string scene = "version: 1\nduration: 0.2\nfps: 10\nobjects:\n";
+  for (const std::string& name :
+       {std::string("a b"), std::string("a_b"), long_name, long_name.substr(0, 299) + "y"}) {
+    scene += "  - name: " + Json(name).dump() +
+             "\n    mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]]}}\n"
+             "    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.005}\n"
+             "    pinned: {indices: [0]}\n";
+  }
+  std::ofstream(folder.path() / "names.yaml") << scene;
+  const auto cache = folder.path() / "cache";
+  const test::CommandResult made = test::run_dinam(
+      {"simulate", (folder.path() / "names.yaml").string(), "-o", cache.string(), "--quiet"});
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  std::ifstream in(cache / "manifest.json");
+  const Json manifest = Json::parse(in);
+  std::set<std::string> files;
+  for (const Json& object : manifest["objects"]) {
+    const std::string obj = object["files"]["obj"];
+    EXPECT_LE(obj.size(), 104u) << obj;
+    EXPECT_TRUE(files.insert(obj).second) << obj;
+    EXPECT_TRUE(std::filesystem::is_regular_file(cache / obj)) << obj;
+  }
+  EXPECT_EQ(files.size(), 4u);
+  EXPECT_EQ(manifest["objects"][2]["name"], long_name);
+  const test::CommandResult viewed =
+      test::run_dinam({"view", cache.string(), "-o", (folder.path() / "page.html").string()});
+  EXPECT_EQ(viewed.exit_code, 0) << viewed.output;
 }
 
 }  // namespace
