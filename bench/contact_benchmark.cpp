@@ -1,4 +1,4 @@
-// The cost of contact (docs/performance.md), as whole steps with and without it, on 1 and 2
+// The cost of contact (bench/notes/performance.md), as whole steps with and without it, on 1 and 2
 // threads:
 //  - the large flag (about 100 000 bars, torsion on) falling from its corner, without contact,
 //    with self-contact (contact radius 5 mm, a quarter of its cells: the cost of watching for

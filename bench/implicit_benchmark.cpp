@@ -1,5 +1,5 @@
 // The implicit integrator against central differences on one scene, frame by frame (issue 33's
-// figures; docs/implicit-integrator.md):
+// figures; bench/notes/implicit-integrator.md):
 //   cmake --build build --target bench_implicit && build/bench/bench_implicit [SCENE] [--until S]
 //       [--explicit-steps N] [--scheme backward_euler|bdf2] [--step S|auto] [--energy] [--costs]
 //       [--threads N]

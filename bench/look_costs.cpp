@@ -1,5 +1,5 @@
 // What each feature of the look costs per 1280 × 720 frame (issue 14): the table of
-// docs/performance.md ("The look"). A plain program, one run prints it all:
+// bench/notes/performance.md ("The look"). A plain program, one run prints it all:
 //   cmake --build build --target bench_look_costs && build/bench/bench_look_costs
 // --only=flag, wire or movies runs one part. Given the path of a dinam program it also times the
 // 120-frame flag movie end to end at each quality; --before=PATH adds the same run of another dinam

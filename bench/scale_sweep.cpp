@@ -1,5 +1,5 @@
 // How every stage's cost grows with the model (issue 16): the log-log table of
-// docs/performance.md ("A million bars"). A plain program, one run prints it all:
+// bench/notes/performance.md ("A million bars"). A plain program, one run prints it all:
 //   cmake --build build --target bench_scale_sweep && build/bench/bench_scale_sweep
 // Options: --sizes=1e4,1e5,1e6,3e6 (bars), --kinds=cloth,wire, --no-draw, --repeats=N.
 // Two structures at each size (bench_scenes.hpp): a cloth (a grid with one diagonal per cell,

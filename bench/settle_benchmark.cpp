@@ -1,5 +1,5 @@
 // The settling phase by Newton's method against dynamic relaxation, and the natural modes, in one
-// run on this machine (issue 30's figures; docs/performance.md, "Settling and modes"):
+// run on this machine (issue 30's figures; bench/notes/performance.md, "Settling and modes"):
 //   cmake --build build --target bench_settle && build/bench/bench_settle [--large] [--modes]
 // For the paper's flag: each method's time, its work (iterations or steps), the potential energy
 // it reached, the largest distance of a node from relaxation's shape, and the settle against the

@@ -1,4 +1,4 @@
-// The whole-run figures of docs/performance.md, measured in one run on this machine:
+// The whole-run figures of bench/notes/performance.md, measured in one run on this machine:
 //   cmake --build build --target bench_whole_run && build/bench/bench_whole_run [path/to/dinam]
 // Each time is the median of several repetitions; the machine is shared, so compare figures
 // from one run only.

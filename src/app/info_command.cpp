@@ -109,7 +109,7 @@ void print_integrator_choice(const IntegratorChoice& choice) {
       "integrators      central_difference: {} steps, about {}; implicit: {} steps ({}), about {} "
       "at {:g} Newton iterations, {:g} iterations of their solves "
       "and {:g} factorisations a step, as {} ({:.3g} ms a factorisation, of a factor of {:.3g} "
-      "nonzeros for {:.0f} unknowns; docs/implicit-integrator.md, \"Which integrator\")\n",
+      "nonzeros for {:.0f} unknowns; bench/notes/implicit-integrator.md, \"Which integrator\")\n",
       choice.central_difference.steps, duration_text(choice.central_difference.seconds),
       choice.implicit.steps,
       choice.contact_envelope

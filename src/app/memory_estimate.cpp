@@ -21,7 +21,7 @@ namespace dinam {
 namespace {
 
 // The figures that are not counted from the model were measured as peak resident memory
-// (/usr/bin/time -f %M, Debian 12, Mesa 22.3 llvmpipe); docs/performance.md has the runs.
+// (/usr/bin/time -f %M, Debian 12, Mesa 22.3 llvmpipe); bench/notes/performance.md has the runs.
 //  - `dinam info` on a 121-node scene: 63 MB, the program, its libraries and their start-up.
 constexpr std::uint64_t kProgramBytes = 64'000'000;
 //  - OSMesa's context, llvmpipe's threads and compiled shaders, beside the per-pixel buffers:

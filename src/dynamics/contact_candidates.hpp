@@ -28,7 +28,7 @@ namespace dinam {
 struct Model;
 
 // Checking a candidate against searching again, per primitive (bar or node) of the contact;
-// measured with bench_contact (docs/performance.md).
+// measured with bench_contact (bench/notes/performance.md).
 inline constexpr double kSearchCostInChecks = 80.0;
 
 // Finds the candidates again (state.object_contact.candidates, at the skin the last interval

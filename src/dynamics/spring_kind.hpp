@@ -41,7 +41,7 @@ struct SpringKind {
   std::vector<double> EnergyWorkspace::*flow;  // J its flow dissipated in the last step
   std::vector<std::uint8_t> State::*broken;    // tearing: 1 for a broken one (empty: cannot)
   // Nanoseconds per spring on one thread, elastic and of a kind that can yield, from
-  // `build/bench/bench_force_costs` (docs/performance.md, "Every force kind against the springs");
+  // `build/bench/bench_force_costs` (bench/notes/performance.md, "Every force kind against the springs");
   // only the run-time estimate (step_cost.hpp) reads them. Measure again when a kernel changes.
   double ns_per_item;
   double ns_per_item_yielding;

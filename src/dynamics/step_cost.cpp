@@ -10,7 +10,7 @@ namespace dinam {
 namespace {
 
 // Nanoseconds per item on one thread, from `build/bench/bench_force_costs` (the large flag and
-// its lattice, about 100 000 of each kind; docs/performance.md, "Every force kind against the
+// its lattice, about 100 000 of each kind; bench/notes/performance.md, "Every force kind against the
 // springs"). Measure again and update them when a kernel changes: nothing else depends on them
 // but the estimates that `info` prints and `render` and `simulate` refuse long runs on.
 // The springs' costs are their kinds' (spring_kind.hpp).

@@ -4,7 +4,7 @@
 // benchmark (bench/force_costs.cpp, one thread) and kept here. The estimate does not depend on
 // how busy the machine is now, so the same scene gets the same answer on a quiet machine and on
 // a shared one (a test or a refusal can rest on it); it is the time on a machine like the one the
-// costs were measured on (docs/performance.md), which a faster or slower machine scales.
+// costs were measured on (bench/notes/performance.md), which a faster or slower machine scales.
 #include <string>
 #include <vector>
 

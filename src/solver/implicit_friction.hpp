@@ -39,7 +39,7 @@ class ImplicitFriction {
   // to be solved on. The others keep the cap they joined with, μs times their normal force at
   // the iterate they joined at, for this step, as the nodes held from the step's start keep
   // theirs from x_n: taking it again from x and solving on wherever it moved by a tenth cost the
-  // Wuson's fall a quarter of its Newton iterations (docs/implicit-integrator.md).
+  // Wuson's fall a quarter of its Newton iterations (bench/notes/implicit-integrator.md).
   bool add_new_touches(const Model& model, const std::vector<Vec3>& x_start,
                        const std::vector<Vec3>& x);
 

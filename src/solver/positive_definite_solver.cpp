@@ -29,7 +29,7 @@ namespace {
 
 // Debian's CHOLMOD opens OpenMP parallel regions of four threads in its supernodal factorisation,
 // whatever share of the machine the process has, and libgomp's threads spin before they sleep:
-// the collapse on a shared machine that the thread team replaced (docs/threads.md). With no
+// the collapse on a shared machine that the thread team replaced (bench/notes/threads.md). With no
 // active level allowed, every region runs on the thread that opens it. The setting is the calling
 // thread's (OpenMP's max-active-levels-var), so it is made before each call into CHOLMOD.
 void keep_cholmod_on_this_thread() {

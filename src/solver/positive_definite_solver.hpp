@@ -17,10 +17,10 @@ namespace dinam {
 // modes), so that a scene's motion and its snapshots are the same on every machine: simplicial
 // below 16 000 unknowns (every shipped scene), CHOLMOD above, several times faster at that size
 // (a 100 000-bar cloth: 6.7 s a factorisation against 23 s with the reference BLAS;
-// docs/performance.md, "Settling and modes").
+// bench/notes/performance.md, "Settling and modes").
 inline constexpr Eigen::Index kSupernodalFrom = 16000;
 // Where speed is all that counts (the implicit integrator's steps): CHOLMOD through OpenBLAS
-// factorises and solves faster from a couple of hundred unknowns on (docs/implicit-integrator.md,
+// factorises and solves faster from a couple of hundred unknowns on (bench/notes/implicit-integrator.md,
 // "CHOLMOD through OpenBLAS").
 inline constexpr Eigen::Index kFastestSupernodalFrom = 100;
 

@@ -1,6 +1,6 @@
 // `dinam info`'s choice of integrator (app/integrator_choice.hpp): the implicit integrator where
 // its estimate is under half of central differences', which bench_implicit confirms for the
-// scenes used here (docs/implicit-integrator.md, "Which integrator").
+// scenes used here (bench/notes/implicit-integrator.md, "Which integrator").
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -63,7 +63,7 @@ TEST(Info, CountsTheContactsSpeedEnvelopeInTheImplicitEstimate) {
 
 // And a 1 mm steel cable let fall onto a pinned steel bar, contact between objects too: central
 // differences need some 814 700 steps of 1.2 µs (2.1 s measured), the implicit integrator 779 (0.24
-// s; docs/implicit-integrator.md), so it is recommended.
+// s; bench/notes/implicit-integrator.md), so it is recommended.
 TEST(Info, RecommendsTheImplicitIntegratorForASteelCableOnABar) {
   test::TemporaryFolder folder("info");
   const auto scene = folder.path() / "drape.yaml";

@@ -1,7 +1,7 @@
 // The sparse Cholesky solver (solver/positive_definite_solver.hpp): both of its factorisations
 // solve, and CHOLMOD's runs on the calling thread alone, starting no threads of its own (Debian's
 // CHOLMOD opens OpenMP regions of four threads in a large supernodal factorisation, which would
-// spin against the thread team on a shared machine: docs/threads.md).
+// spin against the thread team on a shared machine: bench/notes/threads.md).
 #include "solver/positive_definite_solver.hpp"
 
 #include <gtest/gtest.h>
