@@ -1,6 +1,6 @@
 // The cost of every force kind per step, on the large flag, on 1 and 2 threads: the table of
-// bench/notes/performance.md ("Every force kind against the springs"). A plain program, one run prints
-// it all:
+// bench/notes/performance.md ("Every force kind against the springs"). A plain program, one run
+// prints it all:
 //   cmake --build build --target bench_force_costs && build/bench/bench_force_costs
 // With the path of a dinam program (build/bench/bench_force_costs build/dinam) it also times
 // whole renders of windy cloths (report_whole_renders); --only=TEXT measures only the kinds whose

@@ -3,9 +3,7 @@
 // info is the command users run first, so it must stay a small multiple of building the model:
 //   cmake --build build --target bench_info_cost && build/bench/bench_info_cost build/dinam
 // Options after the program: --sizes=1e4,1e5,1e6 (bars, about).
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,7 +17,7 @@
 #include <string>
 #include <vector>
 
-extern char** environ;
+#include "child_process.hpp"
 
 namespace {
 
@@ -29,27 +27,18 @@ struct Measure {
   int status = -1;
 };
 
-// Runs `dinam info SCENE` with its output to /dev/null.
+// Runs `dinam info SCENE`.
 Measure run_info(const std::string& dinam, const std::filesystem::path& scene) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  std::string program = dinam;
-  std::string command = "info";
-  std::string path = scene.string();
-  char* argv[] = {program.data(), command.data(), path.data(), nullptr};
   const auto start = std::chrono::steady_clock::now();
-  pid_t pid = 0;
   Measure measure;
-  if (posix_spawn(&pid, program.c_str(), &actions, nullptr, argv, environ) != 0) {
+  const pid_t pid = dinam::bench::start_quietly(dinam, {"info", scene.string()});
+  if (pid == 0) {
     return measure;
   }
   rusage usage{};
   wait4(pid, &measure.status, 0, &usage);
   measure.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   measure.peak_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
-  posix_spawn_file_actions_destroy(&actions);
   return measure;
 }
 

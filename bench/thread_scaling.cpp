@@ -1,6 +1,6 @@
 // How the step scales with threads, on an idle machine and on one that other work shares
-// (issue 29): the table of bench/notes/performance.md ("Threads on a shared machine"). A plain program,
-// one run prints it all:
+// (issue 29): the table of bench/notes/performance.md ("Threads on a shared machine"). A plain
+// program, one run prints it all:
 //   cmake --build build --target bench_threads && build/bench/bench_threads
 // Options: --models=wuson,cloth,lattice (a subset), --repeats=N (batches a figure, default 5),
 // --busy=N (busy processes for the shared half, default one per core).

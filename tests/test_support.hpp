@@ -2,6 +2,7 @@
 // Helpers shared by the tests: where the data lives, inline scenes, and checks on user errors.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <stdlib.h>
 #include <sys/wait.h>
@@ -156,6 +157,21 @@ class DinamArgv {
   std::vector<std::string> strings_;
   std::vector<char*> pointers_;
 };
+
+// Starts dinam with `arguments` in the background, its stderr written to `log`; returns its
+// process id (0 when it could not start), for a test that signals it and waits.
+inline pid_t spawn_dinam(const std::vector<std::string>& arguments,
+                         const std::filesystem::path& log) {
+  const DinamArgv argv(arguments);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, DINAM_PROGRAM, &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  return spawned == 0 ? pid : 0;
+}
 
 // Runs dinam with `arguments`, each passed as it is (no shell: names with spaces, quotes or a
 // leading dash arrive unchanged), with `environment` entries ("NAME=value") added, and collects

@@ -56,11 +56,19 @@ Model build_model_telling_warnings(const SceneDescription& scene) {
 
 namespace {
 
-volatile std::sig_atomic_t stop_signal_received = 0;
-
 extern "C" void ask_to_stop(int signal) {
-  stop_signal_received = signal;
-  std::signal(signal, SIG_DFL);  // a second one ends the program
+  request_stop(signal);
+  // A second signal ends the program; SA_RESETHAND (below) restores the default before this runs.
+}
+
+void handle_signal(int signal, void (*handler)(int)) {
+  struct sigaction action {};
+  action.sa_handler = handler;
+  sigemptyset(&action.sa_mask);
+  // Interrupted system calls resume (a write of a frame, a wait for ffmpeg); the loops see the
+  // request at their next check.
+  action.sa_flags = SA_RESTART | (handler == SIG_DFL ? 0 : SA_RESETHAND);
+  sigaction(signal, &action, nullptr);
 }
 
 }  // namespace
@@ -125,34 +133,14 @@ std::string movie_file_name(const std::string& name, MovieFormat format, int fir
   return movie_file_name(fmt::format("{}_frames_{}-{}", name, first, last), format);
 }
 
-Interrupted::Interrupted(int signal, const std::string& outcome)
-    : std::runtime_error(fmt::format(
-          "stopped by {}: {}",
-          signal == SIGINT    ? "SIGINT"
-          : signal == SIGTERM ? "SIGTERM"
-                              : strsignal(signal),
-          outcome.empty() ? "finished files are kept, unfinished ones removed" : outcome)),
-      signal_(signal) {}
-
 StopOnSignals::StopOnSignals() {
-  stop_signal_received = 0;
-  std::signal(SIGINT, ask_to_stop);
-  std::signal(SIGTERM, ask_to_stop);
+  handle_signal(SIGINT, ask_to_stop);
+  handle_signal(SIGTERM, ask_to_stop);
 }
 
 StopOnSignals::~StopOnSignals() {
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-}
-
-int stop_signal() {
-  return stop_signal_received;
-}
-
-void stop_if_asked() {
-  if (stop_signal_received != 0) {
-    throw Interrupted(stop_signal_received);
-  }
+  handle_signal(SIGINT, SIG_DFL);
+  handle_signal(SIGTERM, SIG_DFL);
 }
 
 }  // namespace dinam

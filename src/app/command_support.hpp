@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/stop_request.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
@@ -33,20 +34,8 @@ std::string movie_file_name(const std::string& name, MovieFormat format);
 std::string movie_file_name(const std::string& name, MovieFormat format, int first, int last,
                             int frame_count);
 
-// Thrown between frames after SIGINT or SIGTERM, so that the command unwinds and its destructors
-// remove what it had not finished (a temporary cache folder, a partial movie, ffmpeg itself).
-class Interrupted : public std::runtime_error {
- public:
-  // `outcome` says what was kept and what was not made; a generic sentence without it.
-  explicit Interrupted(int signal, const std::string& outcome = "");
-  int signal() const { return signal_; }
-
- private:
-  int signal_;
-};
-
-// While one exists, SIGINT and SIGTERM only ask the command to stop (the first one; a second
-// ends the program at once, as without it).
+// While one exists, SIGINT and SIGTERM only ask the command to stop (core/stop_request.hpp;
+// the first one; a second ends the program at once, as without it).
 class StopOnSignals {
  public:
   StopOnSignals();
@@ -54,11 +43,5 @@ class StopOnSignals {
   StopOnSignals(const StopOnSignals&) = delete;
   StopOnSignals& operator=(const StopOnSignals&) = delete;
 };
-
-// The signal that asked to stop, or 0.
-int stop_signal();
-
-// Throws Interrupted when a signal has asked to stop.
-void stop_if_asked();
 
 }  // namespace dinam

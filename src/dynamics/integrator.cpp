@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "core/stop_request.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/contact_candidates.hpp"
 #include "dynamics/energy.hpp"
@@ -389,6 +390,7 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
   if (switches.object_contact && model.contact.enabled) {
     // Contact between objects searches for its pairs between two jobs of the team.
     for (std::int64_t s = 0; s < steps && !diverged.load(std::memory_order_relaxed); ++s) {
+      stop_if_asked();  // the pair search of a large model can take a while each step
       state.dt = dt;
       thread_team().run(
           [&](const TeamMember& member) {

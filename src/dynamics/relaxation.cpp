@@ -5,6 +5,7 @@
 #include <limits>
 #include <tuple>
 
+#include "core/stop_request.hpp"
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 
@@ -73,6 +74,7 @@ std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches&
   for (std::int64_t s = 1; s <= max_steps; ++s) {
     step(model, dt, switches, state, damped);
     if (s % kViscousCheckInterval == 0 || s == max_steps) {
+      stop_if_asked();
       std::vector<Vec3> velocities = state.v_half;
       compute_static_forces(model, switches, state);
       std::tie(outcome.residual, outcome.worst_node) = relative_residual(model, state);
@@ -97,6 +99,9 @@ SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const Forc
   for (std::int64_t s = 1; s <= max_steps; ++s) {
     step(model, dt, switches, state, options);
     outcome.steps = s;
+    if (s % kViscousCheckInterval == 0) {
+      stop_if_asked();
+    }
     double kinetic = kinetic_measure(model, state);
     const bool peak = kinetic < previous_kinetic;
     if (peak || s - last_check >= kCheckInterval || s == max_steps) {

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -24,6 +25,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "core/stop_request.hpp"
 #include "scene/assimp_mesh.hpp"
 #include "scene/mesh_wire.hpp"
 
@@ -114,6 +116,7 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
         fmt::format("cannot make a pipe to import {}: {}", path.string(), std::strerror(errno)));
   }
   std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     close(ends[0]);
@@ -122,19 +125,34 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
         fmt::format("cannot fork to import {}: {}", path.string(), std::strerror(errno)));
   }
   if (pid == 0) {
+    // The child is a copy of dinam, so nothing may return from here into dinam's own code (an
+    // exception thrown by the import would have run the rest of the command a second time,
+    // beside the parent): every path ends in _exit. It also ends with the parent, whatever
+    // stops that (a signal's default action leaves no one to read the reply).
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) {
+      _exit(1);
+    }
     close(ends[0]);
-    std::error_code size_error;
-    const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
-    limit_address_space(size_error ? 0 : bytes);
-    limit_processor_time(size_error ? 0 : bytes);
-    Assimp::Importer importer;
-    // No post-processing at all: triangulating would add diagonals that are not edges of the
-    // model, and model/ welds coincident vertices itself. Node transforms are applied here.
-    const aiScene* scene = importer.ReadFile(path.string(), 0);
-    const bool sent =
-        scene == nullptr
-            ? write_all(ends[1], 'E' + std::string(importer.GetErrorString()))
-            : write_all(ends[1], 'M' + encode_mesh(mesh_from_scene(*scene, path.parent_path())));
+    bool sent = false;
+    try {
+      std::error_code size_error;
+      const std::uintmax_t bytes = std::filesystem::file_size(path, size_error);
+      limit_address_space(size_error ? 0 : bytes);
+      limit_processor_time(size_error ? 0 : bytes);
+      Assimp::Importer importer;
+      // No post-processing at all: triangulating would add diagonals that are not edges of the
+      // model, and model/ welds coincident vertices itself. Node transforms are applied here.
+      const aiScene* scene = importer.ReadFile(path.string(), 0);
+      sent =
+          scene == nullptr
+              ? write_all(ends[1], 'E' + std::string(importer.GetErrorString()))
+              : write_all(ends[1], 'M' + encode_mesh(mesh_from_scene(*scene, path.parent_path())));
+    } catch (const std::exception& e) {
+      sent = write_all(ends[1], 'E' + std::string(e.what()));
+    } catch (...) {
+      sent = write_all(ends[1], std::string("Eunknown failure"));
+    }
     _exit(sent ? 0 : 1);
   }
   close(ends[1]);
@@ -148,12 +166,25 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
   std::string reply;
   std::array<char, 65536> buffer{};
   bool timed_out = false;
+  int stopped_by = 0;
   while (true) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
         deadline - std::chrono::steady_clock::now());
+    // Woken every 100 ms to see whether a signal asked to stop (core/stop_request.hpp).
     pollfd readable{ends[0], POLLIN, 0};
-    const int ready = left.count() > 0 ? poll(&readable, 1, static_cast<int>(left.count())) : 0;
+    const int ready =
+        left.count() > 0
+            ? poll(&readable, 1, static_cast<int>(std::min<std::int64_t>(left.count(), 100)))
+            : 0;
+    if (stop_signal() != 0) {
+      stopped_by = stop_signal();
+      kill(pid, SIGKILL);
+      break;
+    }
     if (ready < 0 && errno == EINTR) {
+      continue;
+    }
+    if (ready == 0 && left.count() > 100) {
       continue;
     }
     if (ready == 0) {
@@ -174,6 +205,9 @@ RawMesh import_in_child(const std::filesystem::path& path, const FileLoc& where)
   int status = 0;
   rusage usage{};
   while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+  }
+  if (stopped_by != 0) {
+    throw Interrupted(stopped_by, "the scene was still being read, so nothing was written");
   }
   const double cpu_used =
       static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +

@@ -7,12 +7,13 @@
 #include <tuple>
 #include <vector>
 
+#include "core/stop_request.hpp"
 #include "dynamics/relaxation.hpp"
 #include "model/model.hpp"
-#include "solver/sufficient_decrease.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
+#include "solver/sufficient_decrease.hpp"
 
 namespace dinam {
 namespace {
@@ -82,6 +83,7 @@ EquilibriumOutcome find_equilibrium(const Model& model, const ForceSwitches& swi
   while (outcome.iterations < options.max_iterations &&
          attempts < kAttemptsPerIteration * options.max_iterations) {
     attempts += 1;
+    stop_if_asked();
     if (!assembled) {
       state.x = x;
       k = assembly.assemble(model, state, switches, dofs, definiteness);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/stop_request.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/tearing.hpp"
@@ -170,6 +171,7 @@ void ImplicitIntegrator::step_adaptively(State& state, double h) {
   constexpr std::int64_t kWhole = std::int64_t{1} << kMostSplits;
   std::int64_t done = 0;
   while (done < kWhole) {
+    stop_if_asked();
     const double sub_step = std::ldexp(h, -level_);
     // Past kErrorSplits halvings only Newton's convergence splits a step: an impact's jump in
     // acceleration is no error that a shorter step would remove.

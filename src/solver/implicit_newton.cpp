@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/stop_request.hpp"
 #include "solver/stiffness_matrix.hpp"
 #include "solver/sufficient_decrease.hpp"
 #include "solver/truncated_cg.hpp"
@@ -143,6 +144,7 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
       return true;
     }
     counts.iterations += 1;
+    stop_if_asked();  // a large model's iteration takes seconds
     if (!factored && !factor_here()) {
       return false;
     }

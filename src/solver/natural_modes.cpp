@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "core/error.hpp"
+#include "core/stop_request.hpp"
 #include "model/model.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -49,6 +50,7 @@ class ShiftSolve {
     }
   }
   void perform_op(const double* x, double* y) const {
+    stop_if_asked();  // Spectra's iterations: one solve each
     const Eigen::Map<const Vector> in(x, a_.rows());
     Eigen::Map<Vector>(y, a_.rows()) = definite_ ? cholesky_.solve(in) : indefinite_.solve(in);
   }

@@ -1,4 +1,5 @@
 #include "solver/truncated_cg.hpp"
+#include "core/stop_request.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,9 @@ int TruncatedCg::build(const Vector& g, double radius, bool widen, int most,
   double d_norm2 = along;  // |d_k|²_P
   double model = 0.0;      // m(s_k)
   for (int k = 0; k < most; ++k) {
+    if (k % 64 == 63) {
+      stop_if_asked();
+    }
     operators.hessian_times(direction_, product_);
     const double curvature = direction_.dot(product_);
     Segment& segment = next_segment();
