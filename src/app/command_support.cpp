@@ -91,8 +91,9 @@ void create_folder(const std::filesystem::path& folder) {
                      folder.string(), ec.message());
   }
   if (ec) {
-    throw RuntimeError(
-        fmt::format("cannot create the output folder {}: {}", folder.string(), ec.message()));
+    throw_user_error({},
+                     "the output folder {} cannot be made: {}; give -o a folder you can write to",
+                     folder.string(), ec.message());
   }
 }
 

@@ -105,7 +105,7 @@ void print_table(const std::vector<NaturalMode>& modes, double round_off) {
                                    ? fmt::format("{:10.4g}", 1.0 / mode.frequency)
                                    : "         -";
     const std::string frequency =
-        free_motion                  ? fmt::format("{:>14}", "0 (free)")  // a rigid-body motion
+        free_motion                 ? fmt::format("{:>14}", "0 (free)")  // a rigid-body motion
         : mode.omega_squared >= 0.0 ? fmt::format("{:14.5g}", mode.frequency)
                                     : fmt::format("{:>14}", "unstable");  // ω² < 0
     fmt::print("{:4}  {}  {}   {:9.1f} % {:5.1f} % {:5.1f} %\n", m + 1, frequency, period,
@@ -139,6 +139,8 @@ int run_modes(const ModesOptions& options) {
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   CacheRequest request;
   request.folder = options.output.value_or(scene.output / "modes");
+  check_output_place(request.folder, OutputPlace::kBeside,
+                     options.output ? "-o" : "the cache folder");
   request.fps = kCycleFps;
   request.frame_count = kCycleFrames;
   const auto start = Clock::now();

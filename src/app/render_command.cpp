@@ -45,6 +45,7 @@ int run_render(const RenderOptions& options) {
   const Model& model = input.model;
   const std::optional<TimeStep>& timestep = input.timestep;
   const std::filesystem::path folder = options.output.value_or(scene.output);
+  check_output_place(folder, OutputPlace::kInside, options.output ? "-o" : "the output folder");
   create_folder(folder);
   // Every name the run will write, refused now if one is a link or a special file, rather than
   // after minutes of simulation (core/output_file.hpp checks each again as it is written).

@@ -14,6 +14,7 @@
 #include "app/run_estimate.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -90,6 +91,8 @@ int run_simulate(const SimulateOptions& options) {
   parse_formats(options.formats, request);
   request.looks = object_looks(scene);
   request.folder = options.output.value_or(scene.output / "cache");
+  check_output_place(request.folder, OutputPlace::kBeside,
+                     options.output ? "-o" : "the cache folder");
   request.fps = scene.fps;
   request.frame_count = scene.frame_count();
   // With motion blur in the scene, the instants its frames average go into the cache too, so

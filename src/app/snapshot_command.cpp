@@ -13,6 +13,7 @@
 #include "app/frame_range.hpp"
 #include "app/frame_source.hpp"
 #include "core/error.hpp"
+#include "core/output_file.hpp"
 #include "dynamics/stability.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_file.hpp"
@@ -59,6 +60,10 @@ int run_snapshot(const SnapshotOptions& options) {
   std::vector<Image> textures = read_textures(scene);
   const std::filesystem::path output =
       options.output.value_or(std::filesystem::path("out/snapshot") / scene.name);
+  check_output_place(output, OutputPlace::kInside, options.output ? "-o" : "the output folder");
+  if (options.update) {
+    check_output_place(options.golden, OutputPlace::kInside, "--golden");
+  }
 
   // The whole motion frames the camera, so a frame looks as it does in the movie.
   const SimulatedFrames frames =

@@ -107,6 +107,8 @@ std::filesystem::path default_view_path(const std::filesystem::path& cache) {
 
 int run_view(const ViewOptions& options) {
   const MotionCache cache(options.cache);
+  const std::filesystem::path output = options.output.value_or(default_view_path(options.cache));
+  check_output_place(output, OutputPlace::kBeside, options.output ? "-o" : "the page");
   const CacheManifest& manifest = cache.manifest();
   std::vector<int> frames;
   for (int frame = 1; frame <= manifest.frame_count; frame += options.every) {
@@ -188,7 +190,6 @@ int run_view(const ViewOptions& options) {
   replace_once(
       page, "/*DINAM_FRAMES*/",
       base64(reinterpret_cast<const unsigned char*>(values.data()), values.size() * sizeof(float)));
-  const std::filesystem::path output = options.output.value_or(default_view_path(options.cache));
   write_output_file(output, page, "the viewer page");
   if (!options.quiet) {
     fmt::print("dinam: {} frames of {} in {} ({:.1f} MB); open it in a web browser\n",

@@ -85,6 +85,38 @@ void check_output_folder_name(const std::filesystem::path& folder) {
   }
 }
 
+void check_output_place(const std::filesystem::path& path, OutputPlace place, const char* what) {
+  std::filesystem::path existing = place == OutputPlace::kInside ? path : path.parent_path();
+  std::error_code ec;
+  while (!existing.empty() && !std::filesystem::exists(existing, ec)) {
+    existing = existing.parent_path();
+  }
+  if (existing.empty()) {
+    existing = ".";
+  }
+  // The option to change: the one named, else -o (a default place is changed with -o).
+  const std::string option = what[0] == '-' ? what : "-o";
+  if (!std::filesystem::is_directory(existing, ec)) {
+    throw_user_error({},
+                     "{} {} cannot be written: {} is a file, not a folder; give {} a path in a "
+                     "folder",
+                     what, path.string(), existing.string(), option);
+  }
+  // A file of a random name, made and removed: whether the folder is writable, on a writable
+  // file system, to this user (root included), as the real outputs will be made.
+  const std::filesystem::path probe =
+      existing / fmt::format(".dinam-write-test.{}", random_suffix());
+  const int fd = open(probe.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    throw_user_error({},
+                     "{} {} cannot be written: dinam cannot create files in {} ({}); give {} a "
+                     "folder you can write to",
+                     what, path.string(), existing.string(), std::strerror(errno), option);
+  }
+  close(fd);
+  unlink(probe.c_str());
+}
+
 int create_exclusive_file(const std::filesystem::path& stem, std::filesystem::path& created) {
   // 48 random bits: a clash with a planted name is all but impossible, and harmless (O_EXCL
   // fails and the next name is tried).

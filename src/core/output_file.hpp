@@ -23,6 +23,17 @@ void check_output_name(const std::filesystem::path& path);
 // Throws UserError when `folder` exists as a symbolic link or as anything but a folder.
 void check_output_folder_name(const std::filesystem::path& folder);
 
+// Where an output goes, for check_output_place: written inside `path` (a folder of frames), or
+// made beside it and renamed to it (a file, or a cache folder replaced whole).
+enum class OutputPlace { kInside, kBeside };
+
+// Checks, before any work, that the output the user named (`-o`) can be written: the nearest
+// folder that exists on its way must be a folder (not a file) in which dinam can create a file
+// (tried with a file made and removed at once). Throws UserError (exit 2) naming `path` as the
+// user gave it, after `what` ("-o", or "the output folder" for a default), with what is wrong and
+// what to do.
+void check_output_place(const std::filesystem::path& path, OutputPlace place, const char* what);
+
 // A file being written: a new temporary beside the final name until commit() renames it there.
 class OutputFile {
  public:

@@ -165,6 +165,28 @@ TEST_F(HostileOutput, NamesThatLookLikeOptionsAreFolders) {
   EXPECT_TRUE(std::filesystem::is_regular_file(path("-out dir/rope.mp4")));
 }
 
+TEST_F(HostileOutput, AnOutputThatCannotBeWrittenIsAUsageErrorNamingTheUsersPath) {
+  write("rope.yaml", rope_scene());
+  ASSERT_EQ(run_here("simulate rope.yaml -o cache -q").exit_code, 0);
+  write("a_file", "in the way\n");
+  // Each command with -o, before any work: a path under a file, and one in a folder where no
+  // file can be made (/proc refuses new files to root too). Each was exit 1 and named a
+  // temporary name of dinam's own ("cache.part-…", "page.tmp.…"), or was found only after the
+  // simulation.
+  for (const std::string command : {"simulate rope.yaml", "render rope.yaml", "modes rope.yaml",
+                                    "view cache", "snapshot rope.yaml --golden goldens"}) {
+    for (const std::string place : {"a_file/out", "/proc/dinam_out"}) {
+      const test::CommandResult run = run_here(command + " -o " + place);
+      EXPECT_EQ(run.exit_code, 2) << command << " -o " << place << "\n" << run.output;
+      expect_message(run, {"-o " + place + " cannot be written",
+                           place == "a_file/out" ? "a_file is a file" : "in /proc"});
+      EXPECT_EQ(run.output.find(".part"), std::string::npos) << run.output;
+      EXPECT_EQ(run.output.find(".tmp"), std::string::npos) << run.output;
+    }
+  }
+  EXPECT_EQ(read_text(path("a_file")), "in the way\n");
+}
+
 TEST_F(HostileOutput, AnFfmpegThatNeverReadsIsStoppedAndTheFramesAreKept) {
   write("rope.yaml", rope_scene());
   const std::filesystem::path stand_in = write("tools/ffmpeg", "#!/bin/sh\nexec sleep 600\n");
