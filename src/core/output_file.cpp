@@ -97,10 +97,9 @@ void check_output_place(const std::filesystem::path& path, OutputPlace place, co
   // The option to change: the one named, else -o (a default place is changed with -o).
   const std::string option = what[0] == '-' ? what : "-o";
   if (!std::filesystem::is_directory(existing, ec)) {
-    throw_user_error({},
-                     "{} {} cannot be written: {} is a file, not a folder; give {} a path in a "
-                     "folder",
-                     what, path.string(), existing.string(), option);
+    throw_user_error({}, "{} {} cannot be written: {} is a file, not a folder; give {} {}", what,
+                     path.string(), existing.string(), option,
+                     place == OutputPlace::kInside ? "a folder" : "a path in a folder");
   }
   // A file of a random name, made and removed: whether the folder is writable, on a writable
   // file system, to this user (root included), as the real outputs will be made.

@@ -290,9 +290,8 @@ TEST_F(BadPlace, ReadOnlyFolderIsRefusedBeforeAnythingRuns) {
   const test::CommandResult run =
       test::run_dinam({"render", scene.string(), "-o", path("read-only/out").string()});
   EXPECT_EQ(run.exit_code, 2) << run.output;
-  expect_message(run, {"the output folder " + path("read-only/out").string() +
-                           " cannot be made: Read-only file system",
-                       "give -o a folder you can write to"});
+  expect_message(run, {"-o " + path("read-only/out").string() + " cannot be written",
+                       "(Read-only file system)", "give -o a folder you can write to"});
 }
 
 TEST_F(BadPlace, FullDiskKeepsWholeFramesOnlyAndSaysWhatIsLeft) {
