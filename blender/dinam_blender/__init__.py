@@ -79,7 +79,12 @@ class Simulation:
             f.write(scene_export.scene_text(settings, described, frames, fps))
         self.cache = os.path.join(folder, "cache")
         self.local = os.path.join(folder, "local")
-        self.run = dinam_run.DinamRun(program, scene_file, self.cache)
+        try:
+            self.run = dinam_run.DinamRun(program, scene_file, self.cache)
+        except OSError as e:  # it exists, but the system cannot run it
+            raise scene_export.ExportError(
+                f"cannot run the dinam program '{program}': {e.strerror or e}; set the path of a "
+                "dinam built on this machine in the panel") from None
 
     def finish(self, context, code):
         """Attaches the cache after a successful run; returns an error message or None."""

@@ -2,7 +2,7 @@
 
 dinam writes a progress line to standard error each tenth of the frames when it is not a terminal
 ("simulate frame 36/120 (30%), ..."), which is read here on a thread so that Blender's interface
-never waits for it. Stopping sends SIGTERM: dinam stops within a step and removes its unfinished
+never waits for it. Stopping sends SIGTERM: dinam stops within a second and removes its unfinished
 cache, and an older cache in the folder stays as it was.
 """
 import queue
@@ -54,10 +54,18 @@ class DinamRun:
         self._process.wait()
         return self.poll()
 
-    def cancel(self):
-        """Stops dinam (SIGTERM) and waits for it; returns its exit code."""
+    def cancel(self, grace=5.0):
+        """Stops dinam (SIGTERM) and waits for it; returns its exit code.
+
+        dinam honours SIGTERM within a second in any of its loops; one that has not ended after
+        `grace` seconds is killed, so Blender never waits longer than that.
+        """
         if self._process.poll() is None:
             self._process.terminate()
+            try:
+                self._process.wait(timeout=grace)
+            except subprocess.TimeoutExpired:
+                self._process.kill()
         return self.wait()
 
     def message(self):

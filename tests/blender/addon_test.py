@@ -11,7 +11,8 @@
 #     last frame and places them by the object's transform, with the cache's PC2 read here with
 #     Python's struct module: to 1e-5 m (single precision through one more transform); the pins
 #     stay where they were, and the rest moved;
-#  5. refuses an object with a loose vertex, saying how to mend it, and leaves it as it was;
+#  5. refuses an object with a loose vertex, saying how to mend it, and leaves it as it was, and
+#     names a dinam program that exists but cannot run;
 #  6. runs dinam as the panel does, its progress read from dinam's stderr up to 100 %, and cancels
 #     a long run: dinam stops (exit 143, SIGTERM) and the cache of step 3 is as it was.
 # The panel's own loop (a modal operator on a timer) needs Blender's interface, which a headless
@@ -93,6 +94,23 @@ except RuntimeError as e:
     assert "Delete Loose" in str(e), e
     print("addon: a loose vertex is refused: " + str(e).strip().splitlines()[-1])
 assert len(loose.modifiers) == 0
+
+# A program that exists but cannot run (not built for this machine, a broken script) is said so,
+# with no Python traceback.
+not_a_program = os.path.join(work, "not-a-program")
+with open(not_a_program, "w") as f:
+    f.write("this is no program\n")
+os.chmod(not_a_program, 0o755)
+settings.program = not_a_program
+bpy.ops.object.select_all(action="DESELECT")
+banner.select_set(True)
+try:
+    bpy.ops.dinam.simulate()
+    raise AssertionError("a program that cannot run was run")
+except RuntimeError as e:
+    assert "cannot run the dinam program" in str(e) and "Traceback" not in str(e), e
+    print("addon: a program that cannot run is named: " + str(e).strip().splitlines()[-1])
+settings.program = dinam
 
 # The progress the panel shows comes from dinam's lines on stderr.
 short = dinam_run.DinamRun(dinam_run.find_dinam(dinam), os.path.join(work, "input", "scene.yaml"),
