@@ -96,22 +96,18 @@ const char* integrator_key(IntegratorKind kind) {
 
 // What each integrator would need, and the one recommended.
 void print_integrator_choice(const IntegratorChoice& choice) {
-  if (!choice.implicit_refused.empty()) {
-    fmt::print(
-        "integrators      central_difference: {} steps, about {}; implicit: not for this scene "
-        "({})\nrecommended      integrator: central_difference\n",
-        choice.central_difference.steps, duration_text(choice.central_difference.seconds),
-        choice.implicit_refused);
-    return;
-  }
   const ImplicitStepCost& step = choice.implicit.implicit;
   fmt::print(
-      "integrators      central_difference: {} steps, about {}; implicit: {} steps ({}), about {} "
+      "integrators      central_difference: {} steps{}, about {}; implicit: {} steps ({}), about "
+      "{} "
       "at {:g} Newton iterations, {:g} iterations of their solves "
       "and {:g} factorisations a step, as {} ({:.3g} ms a factorisation, of a factor of {:.3g} "
       "nonzeros for {:.0f} unknowns; bench/notes/implicit-integrator.md, \"Which integrator\")\n",
-      choice.central_difference.steps, duration_text(choice.central_difference.seconds),
-      choice.implicit.steps,
+      choice.central_difference.steps,
+      choice.central_difference_unscaled
+          ? " (without the mass scaling that would lengthen them: no memory for its model)"
+          : "",
+      duration_text(choice.central_difference.seconds), choice.implicit.steps,
       choice.contact_envelope
           ? "at most: contact between objects moves no node more than half its smallest radius "
             "a step, and this counts a fall through the scene's height for the whole run"
@@ -381,10 +377,14 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
                                               "without --force",
                                               duration_text(kLongRunSeconds))
                                 : "");
-    fmt::print(
-        "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
-        "now\n",
-        1e3 * run.measured.seconds_per_step, run.measured.steps);
+    if (run.measured.steps > 0) {
+      fmt::print(
+          "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
+          "now\n",
+          1e3 * run.measured.seconds_per_step, run.measured.steps);
+    } else {
+      fmt::print("measured now     not measured: a run's memory is more than this machine has\n");
+    }
   }
   print_integrator_choice(run.choice);
   const MemoryFigures memory = memory_figures(scene, model);
@@ -404,13 +404,21 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   const SceneDescription scene = read_scene(scene_path);
   const Model model = build_model_telling_warnings(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  // info allocates beyond the model only within the memory budget, as render does: the probe's
+  // state where a run's would fit, and a second model (central differences', for an implicit
+  // scene) where there is room for it beside the first.
+  const MemoryEstimate simulate = estimate_memory(scene, model, {2, false, 0, 0});
+  const std::uint64_t available = available_memory().bytes;
+  const bool room_for_a_run = simulate.peak() <= available;
+  const bool room_for_another_model = simulate.peak() + 2 * simulate.model <= available;
   // A step of the implicit integrator is a Newton solve, which the probe (central differences'
   // step) does not measure.
   const RunFigures run{estimate_run(scene, model, timestep, thread_count()),
-                       model.integrator == IntegratorKind::kImplicit
+                       model.integrator == IntegratorKind::kImplicit || !room_for_a_run
                            ? MeasuredStep{}
                            : measure_step_now(model, timestep),
-                       threads, compare_integrators(scene, model, thread_count())};
+                       threads,
+                       compare_integrators(scene, model, thread_count(), room_for_another_model)};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     pinned += model.pinned(i) ? 1 : 0;

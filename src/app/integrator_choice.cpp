@@ -2,44 +2,52 @@
 
 #include <optional>
 
-#include "core/error.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
 
-IntegratorChoice compare_integrators(const SceneDescription& scene, const Model& model,
-                                     int threads) {
-  const auto run = [&](const SceneDescription& run_scene, const Model& built) {
-    const TimeStep step =
-        choose_timestep(built, run_scene.timestep, run_scene.fps, run_scene.timestep_loc);
-    // The motion alone: settling, by Newton's method unless it fails, is the same for both.
-    RunEstimate estimate = estimate_run(run_scene, built, step, threads);
+IntegratorChoice compare_integrators(const SceneDescription& scene, const Model& model, int threads,
+                                     bool room_for_another_model) {
+  // The motion alone: settling, by Newton's method unless it fails, is the same for both. The
+  // other integrator at its automatic step: a `timestep` chosen for one says nothing of the
+  // other's.
+  const auto run = [&](const Model& built, IntegratorKind integrator) {
+    const bool own = integrator == model.integrator;
+    const std::optional<double> requested = own ? scene.timestep : std::nullopt;
+    const TimeStep step = choose_timestep(built, integrator, requested, scene.fps,
+                                          own ? scene.timestep_loc : FileLoc{});
+    RunEstimate estimate = estimate_run(scene, built, integrator, step, threads);
     estimate.steps -= estimate.settle_steps;
     estimate.settle_steps = 0;
     estimate.seconds = estimate.step.seconds * static_cast<double>(estimate.steps);
     return estimate;
   };
-  // The other integrator at its automatic step: a `timestep` chosen for one says nothing of the
-  // other's.
-  const bool implicit = model.integrator == IntegratorKind::kImplicit;
-  SceneDescription other_scene = scene;
-  other_scene.timestep.reset();
-  other_scene.integrator =
-      implicit ? IntegratorKind::kCentralDifference : IntegratorKind::kImplicit;
   IntegratorChoice choice;
-  std::optional<Model> other;
-  try {
-    other.emplace(build_model(other_scene));
-  } catch (const UserError& e) {
-    // What the implicit integrator does not handle yet (model_builder.cpp says which).
-    choice.implicit_refused = e.message();
-    choice.central_difference = run(scene, model);
-    return choice;
-  }
-  choice.central_difference = implicit ? run(other_scene, *other) : run(scene, model);
-  choice.implicit = implicit ? run(scene, model) : run(other_scene, *other);
   choice.contact_envelope = model.contact.enabled;
+  if (model.integrator == IntegratorKind::kCentralDifference) {
+    // The implicit integrator's cost is counted from the model's springs and the pattern of its
+    // Hessian, which are the same for both (its model differs only in masses central
+    // differences scale and the ground's stiffness): the same model serves, and info stays
+    // cheap at any size.
+    choice.central_difference = run(model, IntegratorKind::kCentralDifference);
+    choice.implicit = run(model, IntegratorKind::kImplicit);
+  } else {
+    // Central differences' step depends on the masses it scales to lengthen it: their model is
+    // built, where the machine has room for a second one; else estimated from this one, without
+    // the scaling (so a little long).
+    std::optional<Model> other;
+    if (room_for_another_model) {
+      SceneDescription other_scene = scene;
+      other_scene.timestep.reset();
+      other_scene.integrator = IntegratorKind::kCentralDifference;
+      other.emplace(build_model(other_scene));
+    } else {
+      choice.central_difference_unscaled = true;
+    }
+    choice.central_difference = run(other ? *other : model, IntegratorKind::kCentralDifference);
+    choice.implicit = run(model, IntegratorKind::kImplicit);
+  }
   choice.recommended = choice.implicit.seconds < 0.5 * choice.central_difference.seconds
                            ? IntegratorKind::kImplicit
                            : IntegratorKind::kCentralDifference;

@@ -3,8 +3,6 @@
 // time, both from counts (app/run_estimate.hpp, solver/implicit_cost.hpp), and the one
 // recommended: the implicit integrator where its estimate is under half of central differences',
 // which are exact and cheap per step, so the default otherwise.
-#include <string>
-
 #include "app/run_estimate.hpp"
 #include "scene/scene_description.hpp"
 
@@ -17,14 +15,16 @@ struct IntegratorChoice {
   RunEstimate central_difference;  // at its automatic step (or the scene's), with mass scaling
   RunEstimate implicit;            // at the scene's `timestep` or a quarter of a frame (its
                                    // `implicit` says what a step is made of)
-  std::string implicit_refused;    // why the scene cannot take it; empty where it can
-  bool contact_envelope = false;   // the implicit steps count contact's speed envelope
+  bool central_difference_unscaled = false;  // estimated without its mass scaling (no room)
+  bool contact_envelope = false;             // the implicit steps count contact's speed envelope
   IntegratorKind recommended = IntegratorKind::kCentralDifference;
 };
 
-// `model` is the scene's, built for its own integrator; the other integrator's model is built
-// here (it differs in the mass scaling added to lengthen central differences' step).
-IntegratorChoice compare_integrators(const SceneDescription& scene, const Model& model,
-                                     int threads);
+// `model` is the scene's, built for its own integrator. Central differences' step depends on the
+// masses it scales, so for an implicit scene their model is built here when
+// `room_for_another_model` (the memory budget allows a second model); an implicit estimate needs
+// no model of its own.
+IntegratorChoice compare_integrators(const SceneDescription& scene, const Model& model, int threads,
+                                     bool room_for_another_model);
 
 }  // namespace dinam

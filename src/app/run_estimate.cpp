@@ -33,11 +33,16 @@ long long steps_in_all(const SceneDescription& scene, const Model& model,
 
 RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
                          const TimeStep& timestep, int threads) {
+  return estimate_run(scene, model, model.integrator, timestep, threads);
+}
+
+RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
+                         IntegratorKind integrator, const TimeStep& timestep, int threads) {
   RunEstimate estimate;
   estimate.steps = steps_in_all(scene, model, timestep);
   estimate.settle_steps = settle_steps(model, timestep);
   estimate.step = estimate_step_cost(model, threads);
-  if (model.integrator == IntegratorKind::kImplicit) {
+  if (integrator == IntegratorKind::kImplicit) {
     // A Newton solve a step (solver/implicit_cost.hpp), on one thread: the factorisation is.
     estimate.implicit = estimate_implicit_step(model, estimate_step_cost(model, 1));
     double seconds = estimate.implicit.seconds;

@@ -34,6 +34,9 @@ long long steps_in_all(const SceneDescription& scene, const Model& model, const 
 // The estimate for `threads` threads.
 RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
                          const TimeStep& timestep, int threads);
+// The same for `integrator` in place of the model's own (`dinam info` weighs the other one).
+RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
+                         IntegratorKind integrator, const TimeStep& timestep, int threads);
 
 // A step's time on this machine as busy as it is now: the model stepped from its mesh positions
 // (no settling) for about `probe_seconds` or `max_probe_steps` steps, whichever comes first. For

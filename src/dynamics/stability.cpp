@@ -25,12 +25,17 @@ double critical_timestep(const Model& model) {
 
 TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,
                          const FileLoc& where) {
+  return choose_timestep(model, model.integrator, requested, fps, where);
+}
+
+TimeStep choose_timestep(const Model& model, IntegratorKind integrator,
+                         std::optional<double> requested, double fps, const FileLoc& where) {
   TimeStep step;
   step.critical = critical_timestep(model);
   step.automatic = !requested.has_value();
   const double frame_interval = 1.0 / fps;
   double target = 0.0;
-  if (model.integrator == IntegratorKind::kImplicit) {
+  if (integrator == IntegratorKind::kImplicit) {
     // Stable at any step: `timestep` is the longest it takes (a share of it where the error asks,
     // solver/implicit_integrator.hpp), by default a quarter of a frame.
     target = requested.value_or(frame_interval / kImplicitStepsPerFrame);

@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "model/frequency_bound.hpp"
+#include "scene/scene_description.hpp"
 
 namespace dinam {
 
@@ -29,5 +30,8 @@ struct TimeStep {
 // is shortened, if needed, so that a whole number of steps fills each frame.
 TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,
                          const FileLoc& where);
+// The same for `integrator` in place of the model's own (`dinam info` weighs the other one).
+TimeStep choose_timestep(const Model& model, IntegratorKind integrator,
+                         std::optional<double> requested, double fps, const FileLoc& where);
 
 }  // namespace dinam

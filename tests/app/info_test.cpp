@@ -110,5 +110,42 @@ objects:
   test::expect_contains(info.output, {"bars             188000", "integrators      "});
 }
 
+// info allocates beyond the model only within the memory budget: with too little for a run, no
+// step is measured and no second model (central differences', for an implicit scene) is built;
+// the estimates are still given, from counts.
+TEST(Info, AllocatesNothingBeyondTheModelWhenTheBudgetHasNoRoom) {
+  test::TemporaryFolder folder("info-budget");
+  const auto scene = folder.path() / "cable.yaml";
+  const std::string cable = R"(version: 1
+duration: 3
+ground: {contact: false}
+objects:
+  - name: cable
+    mesh: {polyline: {points: [[0, 0, 2], [1, 0, 2]], segments: 100}}
+    material: {density: 7850, youngs_modulus: 2.0e11, radius: 0.001}
+    pinned: {indices: [0]}
+)";
+  std::ofstream(scene) << cable;
+  const test::CommandResult explicit_info =
+      test::run_dinam({"info", scene.string()}, {"DINAM_MEMORY_LIMIT=1M"});
+  ASSERT_EQ(explicit_info.exit_code, 0) << explicit_info.output;
+  test::expect_contains(explicit_info.output,
+                        {"measured now     not measured", "central_difference: 1995696 steps",
+                         "implicit: 288 steps"});
+  std::ofstream(scene) << test::replaced(cable, "duration: 3\n",
+                                         "duration: 3\nintegrator: implicit\n");
+  const test::CommandResult implicit_info =
+      test::run_dinam({"info", scene.string()}, {"DINAM_MEMORY_LIMIT=1M"});
+  ASSERT_EQ(implicit_info.exit_code, 0) << implicit_info.output;
+  test::expect_contains(implicit_info.output,
+                        {"(without the mass scaling that would lengthen them: no memory for its "
+                         "model)",
+                         "implicit: 288 steps"});
+  // With room, the same scene's central differences are those of their own model.
+  const test::CommandResult roomy = test::run_dinam({"info", scene.string()});
+  ASSERT_EQ(roomy.exit_code, 0) << roomy.output;
+  EXPECT_EQ(roomy.output.find("without the mass scaling"), std::string::npos) << roomy.output;
+}
+
 }  // namespace
 }  // namespace dinam
