@@ -20,7 +20,7 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 namespace {

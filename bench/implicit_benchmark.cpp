@@ -30,10 +30,10 @@
 #include "scene/scene_description.hpp"
 #include "solver/implicit_cost.hpp"
 #include "solver/implicit_integrator.hpp"
-#include "solver/initial_state.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 namespace {

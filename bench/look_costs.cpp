@@ -25,6 +25,7 @@
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
+#include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {

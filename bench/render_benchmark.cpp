@@ -13,6 +13,7 @@
 #include "render/osmesa_renderer.hpp"
 #include "rest_frame.hpp"
 #include "scene/scene_description.hpp"
+#include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {

@@ -25,7 +25,7 @@
 #include "model_measures.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "rest_frame.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {

@@ -25,6 +25,7 @@
 #include "solver/potential.hpp"
 #include "solver/settle.hpp"
 #include "solver/stiffness_matrix.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 namespace {

@@ -33,7 +33,7 @@
 #include "model/model.hpp"
 #include "model_measures.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 namespace {

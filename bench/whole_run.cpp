@@ -28,7 +28,7 @@
 #include "model_measures.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {

@@ -13,8 +13,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/implicit_integrator.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/stepper.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
@@ -60,13 +59,9 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
   if (instants > 0) {
     final_step = std::max(final_step, instant_step(instants - 1));
   }
-  State state = initial_state(model, timestep.dt, {}, track_energy);
+  const std::unique_ptr<Stepper> stepper = make_stepper(model, timestep);
+  State state = stepper->start(track_energy);
   const std::int64_t steps_between_checks = steps_between_stop_checks(model);
-  std::optional<ImplicitIntegrator> implicit;
-  if (model.integrator == IntegratorKind::kImplicit) {
-    implicit.emplace(model);
-    implicit->report_energy(state);
-  }
   int frame = 1;
   std::size_t instant = 0;
   for (std::int64_t n = 0;;) {
@@ -91,11 +86,7 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
       next = std::min(next, frame_step(frame));
     }
     stop_if_asked();
-    if (implicit) {
-      implicit->advance(state, timestep.dt, next - n);
-    } else {
-      advance_steps(model, timestep.dt, {}, state, next - n);
-    }
+    stepper->advance(state, next - n);
     n = next;
   }
 }

@@ -12,9 +12,7 @@
 
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
-#include "app/integrator_choice.hpp"
 #include "app/memory_estimate.hpp"
-#include "app/run_estimate.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -22,6 +20,10 @@
 #include "scene/material_presets.hpp"
 #include "scene/scene_description.hpp"
 #include "solver/implicit_damping.hpp"
+#include "stepping/integrator_choice.hpp"
+#include "stepping/integrator_notes.hpp"
+#include "stepping/run_estimate.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 namespace {
@@ -58,41 +60,12 @@ nlohmann::ordered_json json_vec3(const Vec3& v) {
 
 // What `info` says about the run's time: the estimate from the model and what a step measures
 // on this machine now.
-// Central differences keep a shadow of the energy, not the energy itself: in a mode of frequency ω
-// the measured energy swings by a share that grows as (ω Δt)². How much of it shows in the
-// balance depends on how much motion reaches the stiffest modes, so the figure is scaled from a
-// measured scene: the paper's flag undamped (a 20 × 12 cloth, E = 2e7 Pa, r = 1 mm, pushed
-// sideways, 100 000 steps at its automatic step, ω_max Δt = 1.6) keeps its balance within 2.3 % of
-// its peak kinetic energy, 0.6 % at half the step and 0.13 % at a quarter (docs/scene-format.md,
-// "Output").
-constexpr double kReferenceOmegaDt = 1.6;
-constexpr double kReferenceBalance = 0.023;
-
-struct EnergyBalanceGuide {
-  double omega_dt = 0.0;      // ω_max Δt, ω_max the stability bound's
-  double balance = 0.0;       // expected worst |total − start| / peak kinetic energy
-  double step_for_0_1 = 0.0;  // s, the step that brings it to 0.1 %
-};
-
-EnergyBalanceGuide energy_balance_guide(const Model& model, const TimeStep& timestep) {
-  EnergyBalanceGuide guide;
-  guide.omega_dt = std::sqrt(max_frequency_squared_bound(model)) * timestep.dt;
-  const double ratio = guide.omega_dt / kReferenceOmegaDt;
-  guide.balance = kReferenceBalance * ratio * ratio;
-  guide.step_for_0_1 = timestep.dt * std::min(1.0, std::sqrt(0.001 / guide.balance));
-  return guide;
-}
-
 struct RunFigures {
   RunEstimate estimate;
   MeasuredStep measured;
   ThreadChoice threads;
   IntegratorChoice choice;
 };
-
-const char* integrator_key(IntegratorKind kind) {
-  return kind == IntegratorKind::kImplicit ? "implicit" : "central_difference";
-}
 
 // What each integrator would need, and the one recommended.
 void print_integrator_choice(const IntegratorChoice& choice) {
@@ -116,32 +89,7 @@ void print_integrator_choice(const IntegratorChoice& choice) {
       step.counts.factorizations, motion_text(step.motion), 1e3 * step.factorization_seconds,
       step.factor.nonzeros, step.factor.unknowns);
   fmt::print("recommended      integrator: {} ({})\n", integrator_key(choice.recommended),
-             choice.recommended == IntegratorKind::kImplicit
-                 ? "its estimate is under half of central differences'"
-                 : "the implicit integrator's estimate is not under half of central "
-                   "differences', which are exact and cheap per step");
-}
-
-// The implicit integrator's numerical damping at the scene's step, for modes resolved by these
-// many steps a period (a frequency each, at that step).
-constexpr std::array<int, 3> kStepsPerPeriod = {8, 16, 32};
-
-struct ModeDamping {
-  int steps_per_period = 0;
-  double frequency = 0.0;       // Hz
-  double backward_euler = 0.0;  // share of the amplitude kept over a period
-  double bdf2 = 0.0;
-};
-
-std::vector<ModeDamping> implicit_mode_damping(const TimeStep& timestep) {
-  std::vector<ModeDamping> modes;
-  modes.reserve(kStepsPerPeriod.size());
-  for (const int steps : kStepsPerPeriod) {
-    modes.push_back({steps, 1.0 / (steps * timestep.dt),
-                     amplitude_kept_per_period(ImplicitScheme::kBackwardEuler, steps),
-                     amplitude_kept_per_period(ImplicitScheme::kBdf2, steps)});
-  }
-  return modes;
+             recommendation_reason(choice));
 }
 
 void print_json(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
@@ -214,9 +162,10 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"output", scene.output.string()},
       {"movie", movie_format_name(scene.movie)},
   };
-  if (model.integrator == IntegratorKind::kImplicit) {
+  if (const std::vector<ModeDamping> damping = numerical_damping(model, timestep);
+      !damping.empty()) {
     nlohmann::ordered_json modes = nlohmann::ordered_json::array();
-    for (const ModeDamping& mode : implicit_mode_damping(timestep)) {
+    for (const ModeDamping& mode : damping) {
       modes.push_back({{"steps_per_period", mode.steps_per_period},
                        {"frequency_hz", mode.frequency},
                        {"backward_euler", mode.backward_euler},
@@ -255,34 +204,6 @@ void print_step_limits(const Model& model) {
             ? fmt::format(", aiming at {:.3g} s", scaling.target_step)
             : (scaling.capped ? std::string(", stopped at the added-mass limit") : std::string()));
   }
-}
-
-void print_energy_balance(const Model& model, const TimeStep& timestep) {
-  if (model.integrator == IntegratorKind::kImplicit) {
-    const bool bdf2 = model.implicit_scheme == ImplicitScheme::kBdf2;
-    std::vector<std::string> kept;
-    std::vector<std::string> other;
-    for (const ModeDamping& mode : implicit_mode_damping(timestep)) {
-      kept.push_back(fmt::format("{:.3g} Hz ({} steps) {:.0f} %", mode.frequency,
-                                 mode.steps_per_period,
-                                 100.0 * (bdf2 ? mode.bdf2 : mode.backward_euler)));
-      other.push_back(fmt::format("{:.0f} %", 100.0 * (bdf2 ? mode.backward_euler : mode.bdf2)));
-    }
-    fmt::print(
-        "energy balance   the implicit integrator books what its scheme takes out as energy.csv's "
-        "numerical_dissipation_J, and total_J holds to what Newton's method leaves out of "
-        "balance; at steps of {:.3g} s {} keeps of a mode's amplitude a period: {} ('{}': {})\n",
-        timestep.dt, bdf2 ? "BDF2" : "backward Euler", fmt::join(kept, ", "),
-        bdf2 ? "integrator: implicit" : "integrator: implicit_bdf2", fmt::join(other, ", "));
-    return;
-  }
-  const EnergyBalanceGuide guide = energy_balance_guide(model, timestep);
-  fmt::print(
-      "energy balance   ω_max·Δt = {:.2f}; central differences' energy error grows as (ω·Δt)²: "
-      "where the motion shakes the stiffest bars, energy.csv's total_J may stray by up to about "
-      "{:.2g} % of the peak kinetic energy (scaled from an undamped cloth flag's 2.3 % at 1.6), "
-      "far less in gentle motion; 'timestep: {:.3g}' brings that to about 0.1 %\n",
-      guide.omega_dt, 100.0 * guide.balance, guide.step_for_0_1);
 }
 
 void print_text(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
@@ -328,15 +249,7 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
   print_step_limits(model);
   fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
              timestep.critical);
-  const bool implicit = model.integrator == IntegratorKind::kImplicit;
-  fmt::print("time step        {:.6g} s ({})\n", timestep.dt,
-             implicit ? fmt::format("implicit, backward Euler: stable at any step; {}, halved "
-                                    "where a step needs it",
-                                    timestep.automatic ? fmt::format("auto: 1/{} of a frame",
-                                                                     kImplicitStepsPerFrame)
-                                                       : "from the scene")
-             : timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
-                                  : "from the scene, fitted to whole steps per frame");
+  fmt::print("time step        {:.6g} s ({})\n", timestep.dt, timestep_note(model, timestep));
   fmt::print("steps per frame  {}\n", timestep.steps_per_frame);
   const long long steps_to_last_frame =
       static_cast<long long>(frames - 1) * timestep.steps_per_frame;
@@ -362,21 +275,8 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
              cost.threads < run.threads.threads
                  ? std::string("; this model's steps run on 1, too small to share")
                  : std::string());
-  if (model.integrator == IntegratorKind::kImplicit) {
-    fmt::print(
-        "run time         about {} to simulate ({:.3g} ms a step, a Newton solve, estimated from "
-        "the model's springs and the size of its Hessian's factor; drawing comes on top)\n",
-        duration_text(run.estimate.seconds), 1e3 * cost.seconds);
-  } else {
-    fmt::print(
-        "run time         about {} to simulate ({:.3g} ms a step on {} thread{}, estimated from "
-        "the model's springs and nodes; drawing comes on top){}\n",
-        duration_text(run.estimate.seconds), 1e3 * cost.seconds, cost.threads,
-        cost.threads == 1 ? "" : "s",
-        run.estimate.long_run() ? fmt::format("; over {}, so render and simulate refuse it "
-                                              "without --force",
-                                              duration_text(kLongRunSeconds))
-                                : "");
+  fmt::print("run time         {}\n", run_time_note(model, run.estimate));
+  if (step_can_be_timed(model)) {
     if (run.measured.steps > 0) {
       fmt::print(
           "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
@@ -413,12 +313,11 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   const bool room_for_another_model = simulate.peak() + 2 * simulate.model <= available;
   // A step of the implicit integrator is a Newton solve, which the probe (central differences'
   // step) does not measure.
-  const RunFigures run{estimate_run(scene, model, timestep, thread_count()),
-                       model.integrator == IntegratorKind::kImplicit || !room_for_a_run
-                           ? MeasuredStep{}
-                           : measure_step_now(model, timestep),
-                       threads,
-                       compare_integrators(scene, model, thread_count(), room_for_another_model)};
+  const RunFigures run{
+      estimate_run(scene, model, timestep, thread_count()),
+      !step_can_be_timed(model) || !room_for_a_run ? MeasuredStep{}
+                                                   : measure_step_now(model, timestep),
+      threads, compare_integrators(scene, model, thread_count(), room_for_another_model)};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     pinned += model.pinned(i) ? 1 : 0;
@@ -428,7 +327,7 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   } else {
     print_text(scene, model, timestep, pinned, run);
     if (energy) {
-      print_energy_balance(model, timestep);
+      fmt::print("energy balance   {}\n", energy_balance_note(model, timestep));
     }
   }
   return kExitOk;

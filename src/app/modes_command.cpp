@@ -18,9 +18,9 @@
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/initial_state.hpp"
 #include "solver/natural_modes.hpp"
 #include "solver/settle.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 namespace {

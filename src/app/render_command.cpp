@@ -18,7 +18,6 @@
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
 #include "app/render_input.hpp"
-#include "app/run_estimate.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
@@ -29,6 +28,7 @@
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
+#include "stepping/run_estimate.hpp"
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_drawing.hpp"
 

@@ -6,9 +6,10 @@
 #include "app/energy_csv.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
-#include "app/run_estimate.hpp"
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
+#include "stepping/run_estimate.hpp"
+#include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {

@@ -11,7 +11,6 @@
 #include "app/frame_source.hpp"
 #include "app/memory_estimate.hpp"
 #include "app/progress.hpp"
-#include "app/run_estimate.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
@@ -19,6 +18,8 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "stepping/run_estimate.hpp"
+#include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 #include "visual/torn_drawing.hpp"
 

@@ -43,8 +43,8 @@ struct StepOptions {
 
 // Every array of the state for `model` allocated in this one place (state_arrays.hpp lists them),
 // at x_0 and v_0 from the model (driven pins where their paths start); the energy ledger's arrays
-// only with `track_energy`. Computes no force: start_leapfrog does (solver/initial_state.hpp makes
-// the state at t = 0, settled as the scene asks).
+// only with `track_energy`. Computes no force: start_leapfrog does (initial_state in
+// stepping/time_step.hpp makes the state at t = 0, settled as the scene asks).
 State make_state(const Model& model, bool track_energy);
 
 // Starts leapfrog from rest or from v_0 at the state's positions: the forces at (x_0, v_0) into

@@ -23,36 +23,29 @@ double critical_timestep(const Model& model) {
   return 2.0 / omega * (std::sqrt(1.0 + zeta * zeta) - zeta);
 }
 
-TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,
-                         const FileLoc& where) {
-  return choose_timestep(model, model.integrator, requested, fps, where);
+TimeStep choose_explicit_timestep(const Model& model, std::optional<double> requested, double fps,
+                                  const FileLoc& where) {
+  const double critical = critical_timestep(model);
+  if (requested && *requested > critical) {
+    throw_user_error(where,
+                     "the time step {:.6g} s is above this model's stability limit {:.6g} s "
+                     "(from its highest frequency and damping); the central-difference "
+                     "integration would blow up. "
+                     "Use "
+                     "'timestep: auto' or a step of at most {:.6g} s",
+                     *requested, critical, critical);
+  }
+  TimeStep step = fit_timestep_to_frames(requested.value_or(kAutoTimestepSafety * critical), fps,
+                                         requested, where);
+  step.critical = critical;
+  step.automatic = !requested.has_value();
+  return step;
 }
 
-TimeStep choose_timestep(const Model& model, IntegratorKind integrator,
-                         std::optional<double> requested, double fps, const FileLoc& where) {
+TimeStep fit_timestep_to_frames(double target, double fps, std::optional<double> requested,
+                                const FileLoc& where) {
   TimeStep step;
-  step.critical = critical_timestep(model);
-  step.automatic = !requested.has_value();
   const double frame_interval = 1.0 / fps;
-  double target = 0.0;
-  if (integrator == IntegratorKind::kImplicit) {
-    // Stable at any step: `timestep` is the longest it takes (a share of it where the error asks,
-    // solver/implicit_integrator.hpp), by default a quarter of a frame.
-    target = requested.value_or(frame_interval / kImplicitStepsPerFrame);
-  } else if (requested) {
-    if (*requested > step.critical) {
-      throw_user_error(where,
-                       "the time step {:.6g} s is above this model's stability limit {:.6g} s "
-                       "(from its highest frequency and damping); the central-difference "
-                       "integration would blow up. "
-                       "Use "
-                       "'timestep: auto' or a step of at most {:.6g} s",
-                       *requested, step.critical, step.critical);
-    }
-    target = *requested;
-  } else {
-    target = kAutoTimestepSafety * step.critical;
-  }
   // Relative slack so that 0.05 s / 0.0005 s counts as exactly 100 steps despite rounding.
   const double steps = std::ceil(frame_interval / target * (1.0 - 1e-9));
   if (steps > 1e8 && requested) {

@@ -6,7 +6,6 @@
 
 #include "core/error.hpp"
 #include "model/frequency_bound.hpp"
-#include "scene/scene_description.hpp"
 
 namespace dinam {
 
@@ -25,13 +24,17 @@ struct TimeStep {
   bool automatic = false;
 };
 
-// Chooses the step: `auto` (empty `requested`) takes kAutoTimestepSafety × critical; an explicit
-// step above the critical one is refused with both numbers, naming `where`. Either way the step
-// is shortened, if needed, so that a whole number of steps fills each frame.
-TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,
-                         const FileLoc& where);
-// The same for `integrator` in place of the model's own (`dinam info` weighs the other one).
-TimeStep choose_timestep(const Model& model, IntegratorKind integrator,
-                         std::optional<double> requested, double fps, const FileLoc& where);
+// Central differences' step: `auto` (empty `requested`) takes kAutoTimestepSafety × critical; an
+// explicit step above the critical one is refused with both numbers, naming `where`. Either way
+// the step is fitted to the frames (fit_timestep_to_frames). stepping/time_step.hpp chooses the
+// step of whichever integrator the model has.
+TimeStep choose_explicit_timestep(const Model& model, std::optional<double> requested, double fps,
+                                  const FileLoc& where);
+
+// A step of at most `target` s, shortened so that a whole number of steps fills each frame; a
+// step that would take more than 10⁸ steps a frame is refused at `where` (the `requested` one, or
+// the model's). `critical` and `automatic` are left for the caller.
+TimeStep fit_timestep_to_frames(double target, double fps, std::optional<double> requested,
+                                const FileLoc& where);
 
 }  // namespace dinam

@@ -17,7 +17,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 #include "visual/draw_list_from_model.hpp"
 

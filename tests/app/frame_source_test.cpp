@@ -7,6 +7,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "render/camera.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_drawing.hpp"

@@ -1,5 +1,5 @@
-// `dinam info`'s choice of integrator (app/integrator_choice.hpp): the implicit integrator where
-// its estimate is under half of central differences', which bench_implicit confirms for the
+// `dinam info`'s choice of integrator (stepping/integrator_choice.hpp): the implicit integrator
+// where its estimate is under half of central differences', which bench_implicit confirms for the
 // scenes used here (bench/notes/implicit-integrator.md, "Which integrator").
 #include <gtest/gtest.h>
 

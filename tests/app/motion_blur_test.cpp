@@ -12,6 +12,7 @@
 #include "render/camera.hpp"
 #include "render/draw_list.hpp"
 #include "render/osmesa_renderer.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_drawing.hpp"

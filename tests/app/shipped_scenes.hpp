@@ -8,6 +8,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam::test {
 

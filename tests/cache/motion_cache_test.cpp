@@ -12,6 +12,7 @@
 #include "cache/motion_cache_writer.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -1,5 +1,5 @@
 #include "dynamics/integrator.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam::test {
 

@@ -16,7 +16,7 @@
 #include "dynamics/restitution.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

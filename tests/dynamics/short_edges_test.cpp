@@ -10,6 +10,7 @@
 #include "dynamics/modal_support.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

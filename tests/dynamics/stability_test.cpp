@@ -7,6 +7,7 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/modal_support.hpp"
 #include "model/model.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
@@ -166,8 +167,10 @@ objects:
     material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.005}
 )"));
   test::expect_user_error(
-      [&] { choose_timestep(model, 1.0e-300, 20.0, {"scene.yaml", 4, 11}); }, 4,
-      {"the time step 1e-300 s would take", "at least 5e-10 s", "'timestep: auto'"});
+      [&] {
+        choose_timestep(model, 1.0e-300, 20.0, {"scene.yaml", 4, 11});
+      },
+      4, {"the time step 1e-300 s would take", "at least 5e-10 s", "'timestep: auto'"});
 }
 
 TEST(Stability, ChosenStepFitsWholeStepsIntoEachFrame) {

@@ -13,7 +13,7 @@
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace {

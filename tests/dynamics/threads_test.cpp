@@ -18,7 +18,7 @@
 #include "dynamics/work_split.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -6,7 +6,7 @@
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "model/vertex_welding.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

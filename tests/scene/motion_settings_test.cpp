@@ -10,6 +10,7 @@
 #include "app/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

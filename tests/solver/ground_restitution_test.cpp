@@ -12,7 +12,7 @@
 #include "dynamics/restitution.hpp"
 #include "model/model.hpp"
 #include "solver/implicit_integrator.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -14,9 +14,9 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "solver/implicit_integrator.hpp"
-#include "solver/initial_state.hpp"
 #include "solver/natural_modes.hpp"
 #include "solver_support.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 namespace {

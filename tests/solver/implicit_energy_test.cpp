@@ -13,8 +13,8 @@
 #include "dynamics/energy.hpp"
 #include "model/model.hpp"
 #include "solver/implicit_integrator.hpp"
-#include "solver/initial_state.hpp"
 #include "solver_support.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "model/model.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

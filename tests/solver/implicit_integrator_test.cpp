@@ -16,8 +16,8 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "solver/equilibrium.hpp"
-#include "solver/initial_state.hpp"
 #include "solver_support.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -23,8 +23,8 @@
 #include "solver/ground_restitution.hpp"
 #include "solver/implicit_integrator.hpp"
 #include "solver/implicit_object_contact.hpp"
-#include "solver/initial_state.hpp"
 #include "solver_support.hpp"
+#include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -1,9 +1,10 @@
-#include "app/integrator_choice.hpp"
+#include "stepping/integrator_choice.hpp"
 
 #include <optional>
 
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 
@@ -52,6 +53,13 @@ IntegratorChoice compare_integrators(const SceneDescription& scene, const Model&
                            ? IntegratorKind::kImplicit
                            : IntegratorKind::kCentralDifference;
   return choice;
+}
+
+const char* recommendation_reason(const IntegratorChoice& choice) {
+  return choice.recommended == IntegratorKind::kImplicit
+             ? "its estimate is under half of central differences'"
+             : "the implicit integrator's estimate is not under half of central differences', "
+               "which are exact and cheap per step";
 }
 
 }  // namespace dinam

@@ -1,10 +1,10 @@
 #pragma once
 // Which integrator fits a scene (`dinam info`): the steps each would take and an estimate of its
-// time, both from counts (app/run_estimate.hpp, solver/implicit_cost.hpp), and the one
+// time, both from counts (stepping/run_estimate.hpp, solver/implicit_cost.hpp), and the one
 // recommended: the implicit integrator where its estimate is under half of central differences',
 // which are exact and cheap per step, so the default otherwise.
-#include "app/run_estimate.hpp"
 #include "scene/scene_description.hpp"
+#include "stepping/run_estimate.hpp"
 
 namespace dinam {
 
@@ -26,5 +26,8 @@ struct IntegratorChoice {
 // no model of its own.
 IntegratorChoice compare_integrators(const SceneDescription& scene, const Model& model, int threads,
                                      bool room_for_another_model);
+
+// Why `choice.recommended` is recommended, in a few words for `dinam info`.
+const char* recommendation_reason(const IntegratorChoice& choice);
 
 }  // namespace dinam

@@ -1,18 +1,18 @@
-#include "app/run_estimate.hpp"
+#include "stepping/run_estimate.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
-#include "app/command_support.hpp"
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
 #include "solver/implicit_object_contact.hpp"
-#include "solver/initial_state.hpp"
+#include "stepping/time_step.hpp"
 
 namespace dinam {
 
@@ -71,12 +71,12 @@ MeasuredStep measure_step_now(const Model& model, const TimeStep& timestep, doub
   MeasuredStep measured;
   State state = initial_state(model, timestep.dt, {}, false, Settling::kSkip);
   step(model, timestep.dt, {}, state);  // the first step touches every array once: not timed
-  const auto start = Clock::now();
+  const auto start = std::chrono::steady_clock::now();
   double elapsed = 0.0;
   while (measured.steps < std::max(max_probe_steps, 1) && elapsed < probe_seconds) {
     step(model, timestep.dt, {}, state);
     ++measured.steps;
-    elapsed = seconds_since(start);
+    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   measured.seconds_per_step = elapsed / measured.steps;
   return measured;

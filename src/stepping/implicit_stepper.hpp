@@ -1,0 +1,26 @@
+#pragma once
+// The implicit schemes (backward Euler, BDF2: solver/implicit_integrator.hpp): each step a
+// minimisation by Newton's method, stable at any step. State::v_half holds v_n, not leapfrog's
+// v_{n−½}.
+#include "solver/implicit_integrator.hpp"
+#include "stepping/stepper.hpp"
+
+namespace dinam {
+
+class ImplicitStepper final : public Stepper {
+ public:
+  ImplicitStepper(const Model& model, const TimeStep& timestep)
+      : Stepper(model, timestep), integrator_(model) {}
+
+  // v_0 itself; the settling phase relaxes by the automatic explicit step (settling_step), the
+  // run's being far longer than relaxation can take.
+  State start(bool track_energy, Settling settling = Settling::kRun) override;
+  void advance(State& state, std::int64_t steps) override;
+
+  const ImplicitStats& stats() const { return integrator_.stats(); }
+
+ private:
+  ImplicitIntegrator integrator_;
+};
+
+}  // namespace dinam
