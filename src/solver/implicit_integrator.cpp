@@ -73,6 +73,51 @@ double median_bar(const Model& model) {
 
 }  // namespace
 
+// The incremental potential a step minimises (implicit_integrator.hpp), over the free nodes:
+//   E(x) = Σ m/(2h²)|x − x̂|² + α m/(2h)|x − x_b|² + ½ (x − x_b)ᵀ D (x − x_b) − f_pᵀ(x − x_b)
+//          + V(x) + the friction springs' and the contact's potentials,
+// with h the step solved for, D the dampers' Hessian at x_n and f_p the dampers' pull from
+// supports that move. Its gradient and energy evaluate the model's forces at state.x.
+struct IncrementalPotential {
+  const Model& model;
+  State& state;
+  const FreeDofs& dofs;
+  const Vector& mass;                // (dofs)
+  const std::vector<Vec3>& x_start;  // x_n, for the springs' flow from their plastic sets
+  ImplicitFriction& friction;
+  ImplicitObjectContact& objects;
+  double hs = 0.0;                        // s, the step solved for (2h/3 for BDF2's two-step steps)
+  double alpha = 0.0;                     // 1/s, the global damping
+  Vector predicted = Vector();            // x̂
+  Vector start = Vector();                // x_b
+  SparseMatrix damping = SparseMatrix();  // D
+  Vector pinned_damping = Vector();       // f_p
+  Vector inertia = Vector();  // M/h² + α M/h, the Hessian's diagonal beside the stiffness
+  ForceSwitches switches = potential_switches();
+
+  // g = M(x − x̂)/h² − F(x) + ∇hD; leaves the potential's forces at x in state.force.
+  void gradient(Vector& g) const {
+    compute_static_forces(model, switches, state);
+    friction.add_forces(state.x, state.force);
+    objects.add_forces(model, state);
+    const Vector x = free_part(dofs, state.x);
+    const Vector moved = x - start;
+    g = (mass / (hs * hs)).cwiseProduct(x - predicted) + (alpha / hs) * mass.cwiseProduct(moved) -
+        free_part(dofs, state.force) + damping * moved - pinned_damping;
+  }
+
+  double energy() const {
+    const Vector x = free_part(dofs, state.x);
+    const Vector off = x - predicted;
+    const Vector moved = x - start;
+    return potential_energy(model, state, switches, x_start, SpringEnergy::kWithFlow).energy +
+           friction.energy(state.x) + objects.energy(model, state) +
+           (0.5 / (hs * hs)) * mass.dot(off.cwiseProduct(off)) +
+           (0.5 * alpha / hs) * mass.dot(moved.cwiseProduct(moved)) +
+           0.5 * moved.dot(damping * moved) - pinned_damping.dot(moved);
+  }
+};
+
 struct ImplicitIntegrator::Workspace {
   FreeDofs dofs;
   Vector mass;  // (dofs)
@@ -103,10 +148,10 @@ struct ImplicitIntegrator::Workspace {
   // Assembles and factorises the incremental potential's Hessian at state.x: the stiffness as it
   // is, which M/h² makes definite unless a step is long against a buckling structure's
   // instability; else with each element's matrix made definite (a descent still, if slower).
-  bool factor(const Model& model, State& state, double h, const SparseMatrix& damping,
+  bool factor(const Model& model, State& state, double step, const SparseMatrix& damping,
               const Vector& inertia) {
     factored = false;
-    factored_h = h;
+    factored_h = step;
     for (const Definiteness definiteness : {Definiteness::kExact, Definiteness::kProjected}) {
       SparseMatrix system =
           assembly.assemble(model, state, potential_switches(), dofs, definiteness);
@@ -129,6 +174,276 @@ struct ImplicitIntegrator::Workspace {
     }
     return factored;
   }
+
+  // The step being tried: its length h, the length hs the minimisation takes (2h/3 for BDF2's
+  // two-step steps) and the time it ends at.
+  double h = 0.0;
+  double hs = 0.0;
+  double t_next = 0.0;
+
+  // 1. Bars strained past their breaking limit at x_n break, with what stands on them, as at the
+  // start of a step of central differences (serially, so the same bars on any thread count; a
+  // step tried again from the same x_n breaks nothing more).
+  void break_bars(const Model& model, State& state) const {
+    if (model.can_tear()) {
+      break_overloaded_bars(model, state);
+    }
+  }
+
+  // 2. The state the step is solved from. BDF2 on M v' = F, x' = v: (3 y_{n+1} − 4 y_n +
+  // y_{n−1}) / 2h = y'_{n+1} for y = x and v, which is backward Euler's step of 2h/3 from the base
+  // y_b = (4 y_n − y_{n−1})/3. It needs the step before to have been as long as this one; the
+  // first step, and one after a split, is backward Euler's.
+  void set_base(const Model& model, const State& state, double step) {
+    h = step;
+    x_start = state.x;
+    v_start = state.v_half;  // v_n: the implicit integrator keeps full-step velocities there
+    t_next = state.time + h;
+    const bool two_step = model.implicit_scheme == ImplicitScheme::kBdf2 && before_h == h;
+    hs = two_step ? 2.0 * h / 3.0 : h;
+    x_base = x_start;
+    v_base = v_start;
+    if (two_step) {
+      for (std::size_t i = 0; i < x_start.size(); ++i) {
+        x_base[i] = (4.0 * x_start[i] - x_before[i]) / 3.0;
+        v_base[i] = (4.0 * v_start[i] - v_before[i]) / 3.0;
+      }
+    }
+  }
+
+  // 3. The forces outside the potential: the fields, which depend on the time alone, at t_{n+1},
+  // as the scheme takes every force (taken at t_n they lagged a ramped load by a whole step); the
+  // wind, which depends on the velocities, at (x_n, v_n).
+  void take_loads(const Model& model, State& state) {
+    const std::size_t n = state.x.size();
+    state.dt = 0.0;
+    const double t_start = state.time;
+    state.time = t_next;
+    compute_forces(model, only_fields(), state);
+    state.time = t_start;
+    explicit_force = state.force;
+    if (state.energy_workspace.enabled) {
+      field_force = state.force;
+      wind_force.assign(n, Vec3::Zero());
+    }
+    if (!model.wind.faces.empty() || !model.wind.bars.empty()) {
+      compute_forces(model, only_wind(), state);
+      for (std::size_t i = 0; i < n; ++i) {
+        explicit_force[i] += state.force[i];
+      }
+      if (state.energy_workspace.enabled) {
+        wind_force = state.force;
+      }
+    }
+  }
+
+  // 4. The friction springs of the nodes on the ground, and the contact between objects, at x_n.
+  // Central differences' own friction, which compute_static_forces applies to the nodes marked
+  // touching, is no potential: the solve sees none marked (the marks come back with the step).
+  void start_contact(const Model& model, State& state) {
+    friction.start_step(model, state);
+    objects.start_step(model, state);
+    touching_start = state.contact_touching;
+    std::fill(state.contact_touching.begin(), state.contact_touching.end(), 0);
+  }
+
+  // 5. x̂ = x_b + h v_b + h² M⁻¹ F_e (h: the step solved for); driven pins go to their places at
+  // t_{n+1}.
+  void predict(const Model& model, State& state) {
+    const std::size_t n = state.x.size();
+    predicted.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      predicted[i] =
+          x_base[i] + hs * v_base[i] + (hs * hs * model.node_inv_mass[i]) * explicit_force[i];
+    }
+    place_driven_nodes(model, t_next, state);
+  }
+
+  // 6. The incremental potential of this step: the dampers' Hessian, with the bars' directions at
+  // x_n (implicit_dampers.hpp), and α m / h on the diagonal; the dampers' pull from supports
+  // that move, their ends placed at t_{n+1} above.
+  IncrementalPotential incremental_potential(const Model& model, State& state) {
+    const bool global = model.global_damping > 0.0;
+    IncrementalPotential potential{model, state, dofs, mass, x_start, friction, objects};
+    potential.hs = hs;
+    potential.alpha = global ? model.global_damping : 0.0;
+    damper_triplets.clear();
+    add_damper_hessian(model, state, dofs, x_start, hs, damper_triplets);
+    potential.damping = SparseMatrix(dofs.count, dofs.count);
+    potential.damping.setFromTriplets(damper_triplets.begin(), damper_triplets.end());
+    potential.pinned_damping = pinned_damper_forces(model, state, dofs, x_start, x_base, hs);
+    potential.inertia = mass / (hs * hs) + (global ? model.global_damping / hs : 0.0) * mass;
+    potential.predicted = free_part(dofs, predicted);
+    potential.start = free_part(dofs, x_base);
+    return potential;
+  }
+
+  // Whether positions `x` carry a node of the contact between objects past the speed envelope
+  // (implicit_object_contact.hpp).
+  bool past_envelope(const Model& model, const std::vector<Vec3>& x) {
+    return model.contact.enabled && objects.longest_move(model, x) > envelope;
+  }
+
+  // The state as it was before the step was tried.
+  void restore(State& state) const {
+    state.contact_touching = touching_start;
+    state.x = x_start;
+    state.v_half = v_start;
+    state.time = t_next - h;
+  }
+
+  // 7. Newton's method from x̂ (the free nodes; the driven ones are placed); false where it did
+  // not converge.
+  bool minimise(const Model& model, State& state, const IncrementalPotential& potential,
+                ImplicitStats& stats) {
+    for (std::size_t i = 0; i < state.x.size(); ++i) {
+      if (dofs.first_dof[i] >= 0) {
+        state.x[i] = predicted[i];
+      }
+    }
+    if (factored_h != hs) {  // the kept Hessian, and the trust region in its norm, are of another h
+      factored = false;
+      trust_radius = 0.0;
+    }
+    const StepPotential step{
+        .gradient = [&](Vector& g) { potential.gradient(g); },
+        .energy = [&] { return potential.energy(); },
+        .factor = [&] { return factor(model, state, hs, potential.damping, potential.inertia); },
+        .precondition = [&](const Vector& r) { return solver.solve(r); },
+        .join_new_touches = [&] { return friction.join_new_touches(model, x_start, state.x); },
+        .add_new_touches = [&] { return friction.add_new_touches(model, x_start, state.x); },
+    };
+    NewtonCounts counts;
+    const bool done =
+        minimise_step(state.x, dofs, mass, hs, bar, step, factored, trust_radius, counts);
+    stats.iterations += counts.iterations;
+    stats.solve_iterations += counts.solve_iterations;
+    stats.factorizations += counts.factorizations;
+    return done;
+  }
+
+  // 8. The step's ends for the energy ledger (implicit_energy.hpp), while it is kept: P, with the
+  // friction springs the step ended with, at x_{n+1} and at x_n, and its forces at x_{n+1}.
+  std::optional<ImplicitStepEnds> measure_ends(const Model& model, State& state,
+                                               const IncrementalPotential& potential) {
+    if (!state.energy_workspace.enabled) {
+      return std::nullopt;
+    }
+    std::optional<ImplicitStepEnds> ends;
+    ImplicitStepEnds& measured = ends.emplace();
+    auto step_potential = [&] {  // P and its friction springs' share, at state.x
+      const double ground_friction = friction.energy(state.x);
+      return std::pair{
+          potential_energy(model, state, potential.switches, x_start, SpringEnergy::kWithFlow)
+                  .energy +
+              ground_friction + objects.energy(model, state),
+          ground_friction + objects.friction_energy(state.x)};
+    };
+    Vector g_end;
+    potential.gradient(g_end);  // leaves the potential's forces at x_{n+1} in state.force
+    measured.potential_force = free_part(dofs, state.force);
+    for (std::size_t i = 0; i < state.x.size(); ++i) {
+      if (dofs.first_dof[i] < 0) {  // a pinned node: its support's work
+        measured.support_work += state.force[i].dot(x_start[i] - state.x[i]);
+      }
+    }
+    std::tie(measured.potential_end, measured.friction_end) = step_potential();
+    const std::vector<Vec3> x_end = state.x;
+    state.x = x_start;
+    std::tie(measured.potential_start, measured.friction_start) = step_potential();
+    state.x = x_end;
+    measured.mass = mass;
+    measured.x_start = free_part(dofs, x_start);
+    measured.v_start = free_part(dofs, v_start);
+    measured.x_base = potential.start;
+    measured.v_base = free_part(dofs, v_base);
+    measured.x_end = free_part(dofs, state.x);
+    const Vector moved = measured.x_end - potential.start;
+    measured.v_end = moved / hs;
+    measured.damper_force = -(potential.alpha / hs) * mass.cwiseProduct(moved) -
+                            potential.damping * moved + potential.pinned_damping;
+    measured.field_force = free_part(dofs, field_force);
+    measured.wind_force = free_part(dofs, wind_force);
+    return ends;
+  }
+
+  // 9. v_{n+1} = (x_{n+1} − x_b)/h; the local error h²/2 |a_{n+1} − a_n|, a_n = (v_{n+1} − v_n)/h
+  // over the whole step: false (to be split) where, with `check_error`, it passes
+  // kImplicitErrorShare of the median bar. A step in which a node meets or leaves the ground has
+  // a jump in acceleration that no shorter step would smooth (an impact ends within it): it is
+  // not judged, nor is the next against it.
+  bool accept(const Model& model, State& state, bool check_error) {
+    const std::size_t n = state.x.size();
+    contact_changed = false;
+    if (model.ground.enabled) {
+      for (std::size_t i = 0; i < n && !contact_changed; ++i) {
+        const auto node = static_cast<Index>(i);
+        contact_changed = (model.ground.clearance(node, x_start[i]) < 0.0) !=
+                          (model.ground.clearance(node, state.x[i]) < 0.0);
+      }
+    }
+    contact_changed = objects.touching_changed(model, state) || contact_changed;
+    double error = 0.0;
+    accel.assign(n, Vec3::Zero());
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 v = (state.x[i] - x_base[i]) / hs;
+      accel[i] = (v - v_start[i]) / h;
+      if (have_accel && !model.pinned(static_cast<Index>(i))) {
+        error = std::max(error, 0.5 * h * h * (accel[i] - accel_before[i]).norm());
+      }
+      state.v_half[i] = v;
+    }
+    return !(check_error && !contact_changed && error > kImplicitErrorShare * bar);
+  }
+
+  // 10. The step kept: its works booked; the nodes that landed leave with the ground's
+  // restitution (ground_restitution.hpp), and the pairs of primitives that met with the
+  // contact's (implicit_object_contact.hpp). The energy the rebound gives back is the scheme's:
+  // backward Euler's step into the penalty took it. The springs that flowed keep their new
+  // plastic sets (the return mapping at x_{n+1}).
+  void book_and_rebound(const Model& model, State& state,
+                        const std::optional<ImplicitStepEnds>& ends) {
+    state.contact_touching = touching_start;
+    if (ends) {
+      const EnergyAccounts step = implicit_step_accounts(*ends);
+      state.energy.add_works(step, 1.0);
+      state.energy.numerical_dissipation += step.numerical_dissipation;
+    }
+    const double kinetic_before = ends ? kinetic_energy(model, state.v_half) : 0.0;
+    const bool landed = rebound_landing_nodes(model, x_start, v_start, state);
+    rebounded = objects.rebound_pairs(model, v_start, h, state) || landed;
+    if (ends) {
+      state.energy.numerical_dissipation -= kinetic_energy(model, state.v_half) - kinetic_before;
+    }
+    friction.finish_step(model, state);
+    objects.finish_step(model, h, state);
+    if (any_yield) {
+      ForceSwitches springs = potential_switches();
+      springs.gravity = springs.ground = false;
+      const std::vector<Vec3> velocities = state.v_half;
+      compute_forces(model, springs, state, true);
+      state.v_half = velocities;
+    }
+  }
+
+  // 11. What the next step is judged and based on: this step's accelerations, and BDF2's history,
+  // which starts again after a rebound (the velocity before the impact is no longer the
+  // motion's). The state moves on to t_{n+1}.
+  void keep_history(const Model& model, State& state) {
+    std::swap(accel_before, accel);
+    have_accel = !contact_changed;
+    if (model.implicit_scheme == ImplicitScheme::kBdf2) {
+      x_before = x_start;
+      v_before = v_start;
+      before_h = rebounded ? 0.0 : h;
+    }
+    state.time = t_next;
+    state.step += 1;
+  }
+
+  std::vector<Vec3> accel;       // this step's accelerations, while it is judged
+  bool contact_changed = false;  // a node met or left the ground, or a pair touched or parted
+  bool rebounded = false;        // a node or a pair of the contact rebounded
 };
 
 ImplicitIntegrator::ImplicitIntegrator(const Model& model)
@@ -205,263 +520,34 @@ void ImplicitIntegrator::step_adaptively(State& state, double h) {
 bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   Workspace& w = *work_;
   const Model& model = model_;
-  // Bars strained past their breaking limit at x_n break, with what stands on them, as at the
-  // start of a step of central differences (serially, so the same bars on any thread count; a
-  // step tried again from the same x_n breaks nothing more).
-  if (model.can_tear()) {
-    break_overloaded_bars(model, state);
-  }
-  const FreeDofs& dofs = w.dofs;
-  const auto n = static_cast<std::size_t>(model.node_count());
-  w.x_start = state.x;
-  w.v_start = state.v_half;  // v_n: the implicit integrator keeps full-step velocities there
-  const double t_next = state.time + h;
-
-  // BDF2 on M v' = F, x' = v: (3 y_{n+1} − 4 y_n + y_{n−1}) / 2h = y'_{n+1} for y = x and v, which
-  // is backward Euler's step of 2h/3 from the base y_b = (4 y_n − y_{n−1})/3. It needs the step
-  // before to have been as long as this one; the first step, and one after a split, is backward
-  // Euler's.
-  const bool two_step = model.implicit_scheme == ImplicitScheme::kBdf2 && w.before_h == h;
-  const double hs = two_step ? 2.0 * h / 3.0 : h;  // the step the minimisation takes
-  w.x_base = w.x_start;
-  w.v_base = w.v_start;
-  if (two_step) {
-    for (std::size_t i = 0; i < n; ++i) {
-      w.x_base[i] = (4.0 * w.x_start[i] - w.x_before[i]) / 3.0;
-      w.v_base[i] = (4.0 * w.v_start[i] - w.v_before[i]) / 3.0;
-    }
-  }
-
-  // The forces outside the potential: the fields, which depend on the time alone, at t_{n+1}, as
-  // the scheme takes every force (taken at t_n they lagged a ramped load by a whole step); the
-  // wind, which depends on the velocities, at (x_n, v_n). Then the friction springs of the nodes
-  // on the ground at x_n.
-  state.dt = 0.0;
-  const double t_start = state.time;
-  state.time = t_next;
-  compute_forces(model, only_fields(), state);
-  state.time = t_start;
-  w.explicit_force = state.force;
-  const bool ledger = state.energy_workspace.enabled;
-  if (ledger) {
-    w.field_force = state.force;
-    w.wind_force.assign(n, Vec3::Zero());
-  }
-  if (!model.wind.faces.empty() || !model.wind.bars.empty()) {
-    compute_forces(model, only_wind(), state);
-    for (std::size_t i = 0; i < n; ++i) {
-      w.explicit_force[i] += state.force[i];
-    }
-    if (ledger) {
-      w.wind_force = state.force;
-    }
-  }
-  w.friction.start_step(model, state);
-  w.objects.start_step(model, state);
-  // Central differences' own friction, which compute_static_forces applies to the nodes marked
-  // touching, is no potential: the solve sees none marked (the marks come back with the step).
-  w.touching_start = state.contact_touching;
-  std::fill(state.contact_touching.begin(), state.contact_touching.end(), 0);
-
-  // x̂ = x_b + h v_b + h² M⁻¹ F_e (h: the step solved for); driven pins go to their places at
-  // t_{n+1}.
-  w.predicted.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    w.predicted[i] =
-        w.x_base[i] + hs * w.v_base[i] + (hs * hs * model.node_inv_mass[i]) * w.explicit_force[i];
-  }
-  place_driven_nodes(model, t_next, state);
-
-  // The dampers' Hessian, with the bars' directions at x_n (implicit_dampers.hpp), and α m / h
-  // on the diagonal.
-  const bool global = model.global_damping > 0.0;
-  w.damper_triplets.clear();
-  add_damper_hessian(model, state, dofs, w.x_start, hs, w.damper_triplets);
-  SparseMatrix damping(dofs.count, dofs.count);
-  damping.setFromTriplets(w.damper_triplets.begin(), w.damper_triplets.end());
-  // The dampers' pull from supports that move, their ends placed at t_{n+1} above.
-  const Vector pinned_damping = pinned_damper_forces(model, state, dofs, w.x_start, w.x_base, hs);
-
-  // The incremental potential's gradient g = M(x − x̂)/h² − F(x) + ∇hD, and the energy E, with
-  // the dampers' velocities (x − x_b)/h.
-  const ForceSwitches switches = potential_switches();
-  const Vector inertia = w.mass / (hs * hs) + (global ? model.global_damping / hs : 0.0) * w.mass;
-  const Vector predicted = free_part(dofs, w.predicted);
-  const Vector start = free_part(dofs, w.x_base);
-  const double alpha = global ? model.global_damping : 0.0;
-  auto gradient = [&](Vector& g) {
-    compute_static_forces(model, switches, state);
-    w.friction.add_forces(state.x, state.force);
-    w.objects.add_forces(model, state);
-    const Vector x = free_part(dofs, state.x);
-    const Vector moved = x - start;
-    g = (w.mass / (hs * hs)).cwiseProduct(x - predicted) +
-        (alpha / hs) * w.mass.cwiseProduct(moved) - free_part(dofs, state.force) + damping * moved -
-        pinned_damping;
-  };
-  auto energy = [&]() {
-    const Vector x = free_part(dofs, state.x);
-    const Vector off = x - predicted;
-    const Vector moved = x - start;
-    return potential_energy(model, state, switches, w.x_start, SpringEnergy::kWithFlow).energy +
-           w.friction.energy(state.x) + w.objects.energy(model, state) +
-           (0.5 / (hs * hs)) * w.mass.dot(off.cwiseProduct(off)) +
-           (0.5 * alpha / hs) * w.mass.dot(moved.cwiseProduct(moved)) +
-           0.5 * moved.dot(damping * moved) - pinned_damping.dot(moved);
-  };
-  auto restore = [&] {
-    state.contact_touching = w.touching_start;
-    state.x = w.x_start;
-    state.v_half = w.v_start;
-    state.time = t_next - h;
-  };
+  w.break_bars(model, state);
+  w.set_base(model, state, h);
+  w.take_loads(model, state);
+  w.start_contact(model, state);
+  w.predict(model, state);
+  const IncrementalPotential potential = w.incremental_potential(model, state);
   // A step that would carry a node of the contact between objects past the speed envelope even
   // without the forces of the potential is split before it is solved.
-  if (model.contact.enabled && w.objects.longest_move(model, w.predicted) > w.envelope) {
-    restore();
+  if (w.past_envelope(model, w.predicted)) {
+    w.restore(state);
     return false;
   }
-
-  // Newton's method from x̂ (the free nodes; the driven ones are placed).
-  for (std::size_t i = 0; i < n; ++i) {
-    if (dofs.first_dof[i] >= 0) {
-      state.x[i] = w.predicted[i];
-    }
-  }
-  if (w.factored_h != hs) {  // the kept Hessian, and the trust region in its norm, are of another h
-    w.factored = false;
-    w.trust_radius = 0.0;
-  }
-  const StepPotential potential{
-      .gradient = gradient,
-      .energy = energy,
-      .factor = [&] { return w.factor(model, state, hs, damping, inertia); },
-      .precondition = [&](const Vector& r) { return w.solver.solve(r); },
-      .join_new_touches = [&] { return w.friction.join_new_touches(model, w.x_start, state.x); },
-      .add_new_touches = [&] { return w.friction.add_new_touches(model, w.x_start, state.x); },
-  };
-  NewtonCounts counts;
-  const bool done = minimise_step(state.x, dofs, w.mass, hs, w.bar, potential, w.factored,
-                                  w.trust_radius, counts);
-  stats_.iterations += counts.iterations;
-  stats_.solve_iterations += counts.solve_iterations;
-  stats_.factorizations += counts.factorizations;
-  if (!done) {
-    restore();
+  if (!w.minimise(model, state, potential, stats_) || w.past_envelope(model, state.x)) {
+    w.restore(state);
     return false;
   }
-  // The speed envelope of contact between objects (implicit_object_contact.hpp), at any depth.
-  if (model.contact.enabled && w.objects.longest_move(model, state.x) > w.envelope) {
-    restore();
+  const std::optional<ImplicitStepEnds> ends = w.measure_ends(model, state, potential);
+  if (!w.accept(model, state, check_error)) {
+    w.restore(state);
     return false;
   }
-
-  // The step's ends for the energy ledger (implicit_energy.hpp): P, with the friction springs
-  // the step ended with, at x_{n+1} and at x_n, and its forces at x_{n+1}.
-  std::optional<ImplicitStepEnds> ends;
-  if (ledger) {
-    ImplicitStepEnds& measured = ends.emplace();
-    auto step_potential = [&] {  // P and its friction springs' share, at state.x
-      const double ground_friction = w.friction.energy(state.x);
-      return std::pair{
-          potential_energy(model, state, switches, w.x_start, SpringEnergy::kWithFlow).energy +
-              ground_friction + w.objects.energy(model, state),
-          ground_friction + w.objects.friction_energy(state.x)};
-    };
-    Vector g_end;
-    gradient(g_end);  // leaves the potential's forces at x_{n+1} in state.force
-    measured.potential_force = free_part(dofs, state.force);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (dofs.first_dof[i] < 0) {  // a pinned node: its support's work
-        measured.support_work += state.force[i].dot(w.x_start[i] - state.x[i]);
-      }
-    }
-    std::tie(measured.potential_end, measured.friction_end) = step_potential();
-    const std::vector<Vec3> x_end = state.x;
-    state.x = w.x_start;
-    std::tie(measured.potential_start, measured.friction_start) = step_potential();
-    state.x = x_end;
-    measured.mass = w.mass;
-    measured.x_start = free_part(dofs, w.x_start);
-    measured.v_start = free_part(dofs, w.v_start);
-    measured.x_base = start;
-    measured.v_base = free_part(dofs, w.v_base);
-    measured.x_end = free_part(dofs, state.x);
-    const Vector moved = measured.x_end - start;
-    measured.v_end = moved / hs;
-    measured.damper_force =
-        -(alpha / hs) * w.mass.cwiseProduct(moved) - damping * moved + pinned_damping;
-    measured.field_force = free_part(dofs, w.field_force);
-    measured.wind_force = free_part(dofs, w.wind_force);
-  }
-
-  // v_{n+1} = (x_{n+1} − x_b)/h; the local error h²/2 |a_{n+1} − a_n|, a_n = (v_{n+1} − v_n)/h
-  // over the whole step.
-  // A step in which a node meets or leaves the ground has a jump in acceleration that no shorter
-  // step would smooth (an impact ends within it): it is not judged, nor is the next against it.
-  bool contact_changed = false;
-  if (model.ground.enabled) {
-    for (std::size_t i = 0; i < n && !contact_changed; ++i) {
-      const auto node = static_cast<Index>(i);
-      contact_changed = (model.ground.clearance(node, w.x_start[i]) < 0.0) !=
-                        (model.ground.clearance(node, state.x[i]) < 0.0);
-    }
-  }
-  contact_changed = w.objects.touching_changed(model, state) || contact_changed;
-  double error = 0.0;
-  std::vector<Vec3> accel(n, Vec3::Zero());
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 v = (state.x[i] - w.x_base[i]) / hs;
-    accel[i] = (v - w.v_start[i]) / h;
-    if (w.have_accel && !model.pinned(static_cast<Index>(i))) {
-      error = std::max(error, 0.5 * h * h * (accel[i] - w.accel_before[i]).norm());
-    }
-    state.v_half[i] = v;
-  }
-  if (check_error && !contact_changed && error > kImplicitErrorShare * w.bar) {
-    restore();
-    return false;
-  }
-  state.contact_touching = w.touching_start;
-  if (ends) {
-    const EnergyAccounts step = implicit_step_accounts(*ends);
-    state.energy.add_works(step, 1.0);
-    state.energy.numerical_dissipation += step.numerical_dissipation;
-  }
-  // The nodes that landed leave with the ground's restitution (ground_restitution.hpp), and the
-  // pairs of primitives that met with the contact's (implicit_object_contact.hpp); BDF2's history
-  // then starts again, its velocity before the impact being no longer the motion's. The energy
-  // the rebound gives back is the scheme's: backward Euler's step into the penalty took it.
-  const double kinetic_before = ends ? kinetic_energy(model, state.v_half) : 0.0;
-  const bool landed = rebound_landing_nodes(model, w.x_start, w.v_start, state);
-  const bool rebounded = w.objects.rebound_pairs(model, w.v_start, h, state) || landed;
-  if (ends) {
-    state.energy.numerical_dissipation -= kinetic_energy(model, state.v_half) - kinetic_before;
-  }
-  w.friction.finish_step(model, state);
-  w.objects.finish_step(model, h, state);
-  if (w.any_yield) {
-    // The springs that flowed keep their new plastic sets (the return mapping at x_{n+1}).
-    ForceSwitches springs = potential_switches();
-    springs.gravity = springs.ground = false;
-    const std::vector<Vec3> velocities = state.v_half;
-    compute_forces(model, springs, state, true);
-    state.v_half = velocities;
-  }
-  w.accel_before = std::move(accel);
-  w.have_accel = !contact_changed;
-  if (model.implicit_scheme == ImplicitScheme::kBdf2) {
-    w.x_before = w.x_start;
-    w.v_before = w.v_start;
-    w.before_h = rebounded ? 0.0 : h;
-  }
-  state.time = t_next;
-  state.step += 1;
+  w.book_and_rebound(model, state, ends);
+  w.keep_history(model, state);
   stats_.steps += 1;
   if (ends) {
     state.energy_workspace.last = energy_report(model, state, state.v_half);
   }
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < state.x.size(); ++i) {
     if (!state.x[i].allFinite() || !state.v_half[i].allFinite()) {
       throw RuntimeError(
           fmt::format("the motion diverged at node {} at t = {:.6g} s", i, state.time));
