@@ -1,6 +1,8 @@
 // `dinam info`: the model summary, for a person or (--json) for a script such as the Slurm farm.
 #include <fmt/format.h>
+
 #include <fmt/ranges.h>
+#include <memory>
 
 #include <array>
 #include <cmath>
@@ -10,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "app/memory_estimate.hpp"
@@ -331,6 +334,29 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
     }
   }
   return kExitOk;
+}
+
+Command add_info_command(CLI::App& app, std::optional<int>& threads) {
+  struct Parsed {
+    std::filesystem::path scene;
+    bool json = false;
+    bool energy = false;
+  };
+  auto parsed = std::make_shared<Parsed>();
+  CLI::App* info_command =
+      app.add_subcommand("info",
+                         "Print the model summary of a scene: nodes, bars, springs, "
+                         "mass, time step");
+  info_command->add_option("scene", parsed->scene, "Scene file (YAML)")->required();
+  info_command->add_flag("--json", parsed->json, "Print one JSON object, for scripts");
+  info_command->add_flag("--energy", parsed->energy,
+                         "Also say what energy balance the time step gives (energy.csv's "
+                         "total_J) and what step gives 0.1 %");
+  add_threads_option(*info_command, threads);
+
+  return {info_command, [parsed](const ThreadChoice& thread_choice) {
+            return run_info(parsed->scene, parsed->json, thread_choice, parsed->energy);
+          }};
 }
 
 }  // namespace dinam

@@ -4,10 +4,13 @@
 // per mode, each oscillating in its shape, that Blender opens like any other cache.
 #include <fmt/format.h>
 
+#include <memory>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "app/frame_source.hpp"
@@ -190,6 +193,34 @@ int run_modes(const ModesOptions& options) {
         modes.size(), request.folder.string(), kCycleFrames, kCycleFps, seconds_since(start));
   }
   return kExitOk;
+}
+
+Command add_modes_command(CLI::App& app, std::optional<int>& threads) {
+  struct Parsed {
+    ModesOptions options;
+    std::string output;
+  };
+  auto parsed = std::make_shared<Parsed>();
+  CLI::App* modes_command = app.add_subcommand(
+      "modes",
+      "Print the lowest natural frequencies and mode shapes of a scene's structure at rest under "
+      "gravity, and write them as a motion cache (one object per mode)");
+  modes_command->add_option("scene", parsed->options.scene, "Scene file (YAML)")->required();
+  modes_command->add_option("--count", parsed->options.count, "How many of the lowest modes")
+      ->default_val(parsed->options.count)
+      ->check(CLI::Range(1, 1000));
+  modes_command->add_option("-o,--output", parsed->output,
+                            "Cache folder to write (default: the scene's output folder/modes)");
+  modes_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
+  add_threads_option(*modes_command, threads);
+
+  return {modes_command, [parsed](const ThreadChoice&) {
+            ModesOptions options = parsed->options;
+            if (!parsed->output.empty()) {
+              options.output = parsed->output;
+            }
+            return run_modes(options);
+          }};
 }
 
 }  // namespace dinam

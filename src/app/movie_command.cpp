@@ -2,6 +2,9 @@
 // become the movie, encoded exactly as `dinam render` encodes it.
 #include <fmt/format.h>
 
+#include <memory>
+
+#include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "app/frame_folder.hpp"
@@ -79,6 +82,32 @@ int run_movie(const MovieOptions& options) {
                seconds_since(start));
   }
   return kExitOk;
+}
+
+Command add_movie_command(CLI::App& app) {
+  struct Parsed {
+    MovieOptions options;
+    std::string format;
+  };
+  auto parsed = std::make_shared<Parsed>();
+  CLI::App* movie_command = app.add_subcommand(
+      "movie",
+      "Assemble the frames in a folder (drawn by 'dinam render', at once or in chunks) into "
+      "the movie; missing or extra frames are named and nothing is made");
+  movie_command
+      ->add_option("folder", parsed->options.folder, "Folder of frame_NNNN.png and frames.json")
+      ->required();
+  movie_command->add_option("--movie", parsed->format,
+                            "mp4 or gif (default: the scene's 'movie', else mp4)");
+  movie_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
+
+  return {movie_command, [parsed](const ThreadChoice&) {
+            MovieOptions options = parsed->options;
+            if (!parsed->format.empty()) {
+              options.movie = parsed->format;
+            }
+            return run_movie(options);
+          }};
 }
 
 }  // namespace dinam

@@ -1,4 +1,5 @@
 // dinam render: a scene (or a motion cache) drawn frame by frame into PNG files and a movie.
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 
 #include <fmt/format.h>
@@ -151,6 +152,60 @@ int run_render(const RenderOptions& options) {
                cache ? "read the cache" : "simulate", frames.seconds, draw_seconds);
   }
   return exit_code;
+}
+
+Command add_render_command(CLI::App& app, std::optional<int>& threads) {
+  struct Parsed {
+    RenderOptions options;
+    std::string output;
+    bool no_video = false;
+    std::string cache;
+  };
+  auto parsed = std::make_shared<Parsed>();
+  CLI::App* render_command =
+      app.add_subcommand("render", "Simulate a scene and write its frames (PNG) and movie (mp4)");
+  render_command->add_option("scene", parsed->options.scene, "Scene file (YAML)")->required();
+  render_command->add_option("-o,--output", parsed->output,
+                             "Output folder (default: the scene's 'output', else out/<name>)");
+  render_command->add_option("--frames", parsed->options.frames,
+                             "Frames to write, A-B (1-based, inclusive); each is the frame of the "
+                             "whole movie (the whole motion is simulated, or read with --cache)");
+  render_command->add_option("--size", parsed->options.size, "Image size WxH, e.g. 640x360");
+  render_command->add_option("--movie", parsed->options.movie,
+                             "Movie format: mp4 (H.264), gif, or none (default: the scene's "
+                             "'movie', else mp4)");
+  render_command->add_flag("--no-video", parsed->no_video,
+                           "Write the PNG frames only (--movie none)");
+  render_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
+  render_command->add_flag("--energy", parsed->options.energy_csv,
+                           "Also write DIR/energy.csv: kinetic, elastic, gravitational and contact "
+                           "energy, and what damping, plasticity, friction, wind and fields did, "
+                           "one row per frame");
+  render_command->add_option("--cache", parsed->cache,
+                             "Draw from this motion cache (made by 'dinam simulate') instead of "
+                             "simulating; refused when the scene's motion has changed since");
+  render_command->add_flag(
+      "--preview", parsed->options.preview,
+      "A quick look: draft quality, 320 pixels wide, about 30 frames spread over the motion, as "
+      "DIR/NAME_preview.gif and a contact sheet DIR/NAME_preview.png");
+  render_command->add_flag("--force", parsed->options.force,
+                           "Run even when the memory the run needs (see 'dinam info') passes "
+                           "what the machine has available, or its run time an hour");
+  add_threads_option(*render_command, threads);
+
+  return {render_command, [parsed](const ThreadChoice&) {
+            RenderOptions options = parsed->options;
+            if (!parsed->output.empty()) {
+              options.output = parsed->output;
+            }
+            if (parsed->no_video) {
+              options.movie = "none";
+            }
+            if (!parsed->cache.empty()) {
+              options.cache = parsed->cache;
+            }
+            return run_render(options);
+          }};
 }
 
 }  // namespace dinam

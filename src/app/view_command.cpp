@@ -1,5 +1,7 @@
 // `dinam view`: a motion cache as one self-contained web page that plays it (web/viewer.html).
 #include <fmt/format.h>
+
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include <array>
@@ -9,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "app/command_line.hpp"
 #include "app/commands.hpp"
 #include "app/viewer_page.hpp"
 #include "cache/motion_cache.hpp"
@@ -197,6 +200,35 @@ int run_view(const ViewOptions& options) {
                static_cast<double>(page.size()) / 1e6);
   }
   return kExitOk;
+}
+
+Command add_view_command(CLI::App& app) {
+  struct Parsed {
+    ViewOptions options;
+    std::string output;
+  };
+  auto parsed = std::make_shared<Parsed>();
+  CLI::App* view_command = app.add_subcommand(
+      "view",
+      "Write a motion cache as one web page that plays it (orbit, timeline, play/pause): open it "
+      "in any browser, offline");
+  view_command->add_option("cache", parsed->options.cache, "Motion cache folder (dinam simulate)")
+      ->required();
+  view_command->add_option("-o,--output", parsed->output,
+                           "The page to write (default: the cache folder's name with .html)");
+  view_command
+      ->add_option("--every", parsed->options.every, "Keep every Nth frame (a smaller page)")
+      ->default_val(parsed->options.every)
+      ->check(CLI::Range(1, 100000));
+  view_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
+
+  return {view_command, [parsed](const ThreadChoice&) {
+            ViewOptions options = parsed->options;
+            if (!parsed->output.empty()) {
+              options.output = parsed->output;
+            }
+            return run_view(options);
+          }};
 }
 
 }  // namespace dinam

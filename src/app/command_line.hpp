@@ -1,0 +1,31 @@
+#pragma once
+// The program's command line. Each command registers its own subcommand and options (in its
+// *_command.cpp) and says how it runs once they are parsed; main.cpp lists the commands, parses
+// and runs the one named.
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <optional>
+
+#include "core/cpu_share.hpp"
+
+namespace dinam {
+
+struct Command {
+  CLI::App* subcommand = nullptr;  // parsed() once the command line names it
+  // Runs the command with the options as parsed, on the threads chosen (--threads, else the
+  // process's share of the machine).
+  std::function<int(const ThreadChoice&)> run;
+};
+
+// --threads, on the commands that simulate: stored in `threads`, which outlives the parse.
+void add_threads_option(CLI::App& command, std::optional<int>& threads);
+
+Command add_render_command(CLI::App& app, std::optional<int>& threads);
+Command add_simulate_command(CLI::App& app, std::optional<int>& threads);
+Command add_movie_command(CLI::App& app);
+Command add_snapshot_command(CLI::App& app, std::optional<int>& threads);
+Command add_modes_command(CLI::App& app, std::optional<int>& threads);
+Command add_view_command(CLI::App& app);
+Command add_info_command(CLI::App& app, std::optional<int>& threads);
+
+}  // namespace dinam
