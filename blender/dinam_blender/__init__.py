@@ -46,6 +46,8 @@ class DinamSettings(bpy.types.PropertyGroup):
     wind: bpy.props.FloatVectorProperty(name="Wind (m/s)", default=(0.0, 0.0, 0.0))
     progress: bpy.props.FloatProperty(name="Progress", subtype="PERCENTAGE", min=0, max=100)
     running: bpy.props.BoolProperty(default=False)
+    # What dinam said in the last run (its warnings and notes, its summary), shown in the panel.
+    last_report: bpy.props.StringProperty(default="")
     cancel_requested: bpy.props.BoolProperty(default=False)
 
 
@@ -61,16 +63,36 @@ class Simulation:
         if program is None:
             raise scene_export.ExportError(
                 f"cannot find the dinam program '{settings.program}': set its path in the panel")
+        if settings.folder.startswith("//") and not bpy.data.filepath:
+            raise scene_export.ExportError(
+                f"the folder '{settings.folder}' is relative to the .blend file, which is not saved "
+                "yet: save the file first, or choose a folder for dinam's files in the panel")
         folder = bpy.path.abspath(settings.folder)
         inputs = os.path.join(folder, "input")
         os.makedirs(inputs, exist_ok=True)
         described = []
         stems = set()
+        self.notes = []  # what to say before dinam runs
         for obj in self.objects:
             scene_export.check_mesh(obj)
+        if settings.pin_group:
+            for obj in self.objects:
+                if obj.vertex_groups.get(settings.pin_group) is None:
+                    raise scene_export.ExportError(
+                        f"'{obj.name}' has no vertex group '{settings.pin_group}' (its groups: "
+                        f"{', '.join(g.name for g in obj.vertex_groups) or 'none'}): choose the "
+                        "pins' group in the panel, or clear Pins to let the object fall freely")
+        for obj in self.objects:
             path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
             scene_export.write_obj(obj, path)
-            described.append((obj.name, path, scene_export.pinned_indices(obj, settings.pin_group)))
+            pinned = scene_export.pinned_indices(obj, settings.pin_group)
+            if not pinned:
+                self.notes.append(
+                    f"'{obj.name}' has no pinned vertex"
+                    + (f" (no vertex of '{settings.pin_group}' weighs above 0.5)"
+                       if settings.pin_group else " (no Pins group chosen)")
+                    + ": it falls freely")
+            described.append((obj.name, path, pinned))
         scene = context.scene
         fps = scene.render.fps / scene.render.fps_base
         frames = scene.frame_end - scene.frame_start + 1
@@ -118,14 +140,26 @@ class DINAM_OT_simulate(bpy.types.Operator):
         except scene_export.ExportError as e:
             self.report({"ERROR"}, str(e))
             return False
+        for note in self._simulation.notes:
+            self.report({"WARNING"}, "dinam: " + note)
+        context.scene.dinam.last_report = "\n".join(self._simulation.notes)
         return True
 
     def end(self, context, code):
         error = self._simulation.finish(context, code)
+        said = [line for line in self._simulation.run.lines if line.strip()]
+        context.scene.dinam.last_report = "\n".join(self._simulation.notes + said)
         if error:
             self.report({"ERROR"}, error)
             return {"CANCELLED"}
-        self.report({"INFO"}, f"dinam: {len(self._simulation.objects)} objects simulated")
+        # dinam's warnings (a mesh's degenerate faces, a material far from real ones, …) reach the
+        # artist after every run, not only when it fails.
+        for line in said:
+            if "warning:" in line:
+                self.report({"WARNING"}, line)
+        count = len(self._simulation.objects)
+        self.report({"INFO"}, f"dinam: {count} object{'s' if count != 1 else ''} simulated"
+                              + (f"; {len(said)} lines from dinam in the panel" if said else ""))
         return {"FINISHED"}
 
     # From a script or in the background: waits for dinam.
@@ -206,6 +240,11 @@ class DINAM_PT_panel(bpy.types.Panel):
             layout.prop_search(settings, "pin_group", obj, "vertex_groups")
         layout.prop(settings, "gravity")
         layout.prop(settings, "wind")
+        if settings.last_report and not settings.running:
+            box = layout.box()
+            box.label(text="Last run:")
+            for line in settings.last_report.splitlines()[-12:]:
+                box.label(text=line, icon="ERROR" if "warning:" in line else "INFO")
         if settings.running:
             row = layout.row()
             row.enabled = False

@@ -11,8 +11,9 @@
 #     last frame and places them by the object's transform, with the cache's PC2 read here with
 #     Python's struct module: to 1e-5 m (single precision through one more transform); the pins
 #     stay where they were, and the rest moved;
-#  5. refuses an object with a loose vertex, saying how to mend it, and leaves it as it was, and
-#     names a dinam program that exists but cannot run;
+#  5. refuses an object with a loose vertex, saying how to mend it, and leaves it as it was;
+#     names a dinam program that exists but cannot run, a Pins group the object lacks and an
+#     unsaved file's relative folder; says that a run with no pins falls freely;
 #  6. runs dinam as the panel does, its progress read from dinam's stderr up to 100 %, and cancels
 #     a long run: dinam stops (exit 143, SIGTERM) and the cache of step 3 is as it was.
 # The panel's own loop (a modal operator on a timer) needs Blender's interface, which a headless
@@ -111,6 +112,30 @@ except RuntimeError as e:
     assert "cannot run the dinam program" in str(e) and "Traceback" not in str(e), e
     print("addon: a program that cannot run is named: " + str(e).strip().splitlines()[-1])
 settings.program = dinam
+
+# A Pins group the object does not have is refused, naming the groups it has; an unsaved file
+# with the default folder (relative to the .blend) asks for a save or a folder; neither runs dinam.
+bpy.ops.object.select_all(action="DESELECT")
+banner.select_set(True)
+for key, value, expected in (("pin_group", "pinz", "has no vertex group 'pinz' (its groups: pins)"),
+                             ("folder", "//dinam", "which is not saved yet")):
+    kept = getattr(settings, key)
+    setattr(settings, key, value)
+    try:
+        bpy.ops.dinam.simulate()
+        raise AssertionError(f"{key} = {value!r} was simulated")
+    except RuntimeError as e:
+        assert expected in str(e), e
+        print("addon: refused: " + str(e).strip().splitlines()[-1])
+    setattr(settings, key, kept)
+
+# With no pins the run goes on, and says so; what dinam printed is kept for the panel.
+settings.pin_group = ""
+assert bpy.ops.dinam.simulate() == {"FINISHED"}
+assert "'Banner' has no pinned vertex (no Pins group chosen): it falls freely" in \
+    settings.last_report, settings.last_report
+print("addon: a run with no pins says so: " + settings.last_report.splitlines()[0])
+settings.pin_group = "pins"
 
 # The progress the panel shows comes from dinam's lines on stderr.
 short = dinam_run.DinamRun(dinam_run.find_dinam(dinam), os.path.join(work, "input", "scene.yaml"),
