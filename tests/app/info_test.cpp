@@ -23,10 +23,7 @@ std::string recommendation(const test::CommandResult& info) {
 
 // A steel cable of 100 bars swinging for 3 s: central differences need 2 million steps of 1.5 µs
 // (5.4 s measured), the implicit integrator 288 of 1/96 s, 491 once split (0.48 s).
-TEST(Info, RecommendsTheImplicitIntegratorForAStiffSteelCable) {
-  test::TemporaryFolder folder("info");
-  const auto scene = folder.path() / "cable.yaml";
-  std::ofstream(scene) << R"(version: 1
+constexpr const char* kSteelCable = R"(version: 1
 duration: 3
 ground: {contact: false}
 objects:
@@ -35,6 +32,11 @@ objects:
     material: {density: 7850, youngs_modulus: 2.0e11, radius: 0.001}
     pinned: {indices: [0]}
 )";
+
+TEST(Info, RecommendsTheImplicitIntegratorForAStiffSteelCable) {
+  test::TemporaryFolder folder("info");
+  const auto scene = folder.path() / "cable.yaml";
+  std::ofstream(scene) << kSteelCable;
   const test::CommandResult info = test::run_dinam({"info", scene.string()});
   ASSERT_EQ(info.exit_code, 0) << info.output;
   EXPECT_EQ(recommendation(info), "implicit") << info.output;
@@ -116,15 +118,7 @@ objects:
 TEST(Info, AllocatesNothingBeyondTheModelWhenTheBudgetHasNoRoom) {
   test::TemporaryFolder folder("info-budget");
   const auto scene = folder.path() / "cable.yaml";
-  const std::string cable = R"(version: 1
-duration: 3
-ground: {contact: false}
-objects:
-  - name: cable
-    mesh: {polyline: {points: [[0, 0, 2], [1, 0, 2]], segments: 100}}
-    material: {density: 7850, youngs_modulus: 2.0e11, radius: 0.001}
-    pinned: {indices: [0]}
-)";
+  const std::string cable = kSteelCable;
   std::ofstream(scene) << cable;
   const test::CommandResult explicit_info =
       test::run_dinam({"info", scene.string()}, {"DINAM_MEMORY_LIMIT=1M"});
