@@ -91,7 +91,7 @@ void print_integrator_choice(const IntegratorChoice& choice) {
       duration_text(choice.implicit.seconds), step.counts.iterations, step.counts.solve_iterations,
       step.counts.factorizations, motion_text(step.motion), 1e3 * step.factorization_seconds,
       step.factor.nonzeros, step.factor.unknowns);
-  fmt::print("recommended      integrator: {} ({})\n", integrator_key(choice.recommended),
+  fmt::print("recommended      integrator: {} ({})\n", recommended_key(choice),
              recommendation_reason(choice));
 }
 
@@ -158,7 +158,7 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"central_difference_estimated_run_s", run.choice.central_difference.seconds},
       {"implicit_steps", run.choice.implicit.steps},
       {"implicit_estimated_run_s", run.choice.implicit.seconds},
-      {"recommended_integrator", integrator_key(run.choice.recommended)},
+      {"recommended_integrator", recommended_key(run.choice)},
       {"memory_render_bytes", memory.render.peak()},
       {"memory_simulate_bytes", memory.simulate.peak()},
       {"memory_available_bytes", memory.available.bytes},

@@ -52,14 +52,29 @@ IntegratorChoice compare_integrators(const SceneDescription& scene, const Model&
   choice.recommended = choice.implicit.seconds < 0.5 * choice.central_difference.seconds
                            ? IntegratorKind::kImplicit
                            : IntegratorKind::kCentralDifference;
+  choice.recommended_scheme = choice.implicit.implicit.motion == ImplicitMotion::kSwings
+                                  ? ImplicitScheme::kBdf2
+                                  : ImplicitScheme::kBackwardEuler;
   return choice;
 }
 
+const char* recommended_key(const IntegratorChoice& choice) {
+  if (choice.recommended == IntegratorKind::kCentralDifference) {
+    return "central_difference";
+  }
+  return choice.recommended_scheme == ImplicitScheme::kBdf2 ? "implicit_bdf2" : "implicit";
+}
+
 const char* recommendation_reason(const IntegratorChoice& choice) {
-  return choice.recommended == IntegratorKind::kImplicit
-             ? "its estimate is under half of central differences'"
-             : "the implicit integrator's estimate is not under half of central differences', "
-               "which are exact and cheap per step";
+  if (choice.recommended == IntegratorKind::kCentralDifference) {
+    return "the implicit integrator's estimate is not under half of central differences', which "
+           "are exact and cheap per step";
+  }
+  return choice.recommended_scheme == ImplicitScheme::kBdf2
+             ? "its estimate is under half of central differences'; BDF2 since the structure "
+               "swings: it keeps a swing that backward Euler would damp away"
+             : "its estimate is under half of central differences'; backward Euler, whose "
+               "damping settles a structure that lands and folds";
 }
 
 }  // namespace dinam

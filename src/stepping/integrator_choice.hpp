@@ -18,6 +18,10 @@ struct IntegratorChoice {
   bool central_difference_unscaled = false;  // estimated without its mass scaling (no room)
   bool contact_envelope = false;             // the implicit steps count contact's speed envelope
   IntegratorKind recommended = IntegratorKind::kCentralDifference;
+  // Where the implicit integrator is recommended: BDF2 for a structure that swings (backward
+  // Euler would damp its swing away: 68 % of a mode's amplitude a period at 16 steps a period,
+  // against BDF2's 6.7 %), backward Euler where it lands and folds (its damping settles it).
+  ImplicitScheme recommended_scheme = ImplicitScheme::kBackwardEuler;
 };
 
 // `model` is the scene's, built for its own integrator. Central differences' step depends on the
@@ -26,6 +30,9 @@ struct IntegratorChoice {
 // no model of its own.
 IntegratorChoice compare_integrators(const SceneDescription& scene, const Model& model, int threads,
                                      bool room_for_another_model);
+
+// The `integrator` value recommended: central_difference, implicit or implicit_bdf2.
+const char* recommended_key(const IntegratorChoice& choice);
 
 // Why `choice.recommended` is recommended, in a few words for `dinam info`.
 const char* recommendation_reason(const IntegratorChoice& choice);
