@@ -129,6 +129,7 @@ class DINAM_OT_simulate(bpy.types.Operator):
 
     _timer = None
     _simulation = None
+    _cancelling = False
 
     @classmethod
     def poll(cls, context):
@@ -174,6 +175,7 @@ class DINAM_OT_simulate(bpy.types.Operator):
             return {"CANCELLED"}
         settings = context.scene.dinam
         settings.running, settings.cancel_requested, settings.progress = True, False, 0.0
+        self._cancelling = False
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.2, window=context.window)
         wm.modal_handler_add(self)
@@ -183,13 +185,17 @@ class DINAM_OT_simulate(bpy.types.Operator):
     def modal(self, context, event):
         settings = context.scene.dinam
         if event.type == "ESC" or settings.cancel_requested:
-            self._simulation.run.cancel()
-            self.stop(context)
-            self.report({"WARNING"}, "dinam: cancelled; the objects are as they were")
-            return {"CANCELLED"}
+            # Never waits here: dinam is asked to stop, and the timer below sees it end (killed
+            # after a grace period if it does not), so Blender's interface never freezes.
+            self._simulation.run.request_cancel()
+            self._cancelling = True
         if event.type != "TIMER":
             return {"PASS_THROUGH"}
         code = self._simulation.run.poll()
+        if self._cancelling and code is not None:
+            self.stop(context)
+            self.report({"WARNING"}, "dinam: cancelled; the objects are as they were")
+            return {"CANCELLED"}
         settings.progress = 100.0 * self._simulation.run.fraction
         context.window_manager.progress_update(settings.progress)
         for area in context.screen.areas:

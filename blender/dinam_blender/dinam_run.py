@@ -10,6 +10,7 @@ import re
 import shutil
 import subprocess
 import threading
+import time
 
 PROGRESS = re.compile(r"frame (\d+)/(\d+)")
 
@@ -26,6 +27,7 @@ class DinamRun:
         self.lines = []  # everything dinam printed on stderr
         self.fraction = 0.0  # of the frames simulated
         self._queue = queue.Queue()
+        self._kill_at = None  # when a cancelled run that has not ended is killed
         self._process = subprocess.Popen(
             [program, "simulate", scene, "-o", cache, "--format", "pc2"],
             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
@@ -37,8 +39,12 @@ class DinamRun:
             self._queue.put(line.rstrip("\n"))
 
     def poll(self):
-        """Takes in what dinam printed; returns its exit code, or None while it runs."""
+        """Takes in what dinam printed; returns its exit code, or None while it runs. A run
+        cancelled with request_cancel that has not ended by its grace is killed here."""
         code = self._process.poll()
+        if code is None and self._kill_at is not None and time.monotonic() >= self._kill_at:
+            self._process.kill()
+            code = self._process.wait()
         if code is not None:
             self._reader.join()
         while not self._queue.empty():
@@ -53,6 +59,13 @@ class DinamRun:
     def wait(self):
         self._process.wait()
         return self.poll()
+
+    def request_cancel(self, grace=5.0):
+        """Asks dinam to stop (SIGTERM) and returns at once: poll() reports the end, and kills it
+        after `grace` seconds if it has not ended (dinam honours SIGTERM within a second)."""
+        if self._process.poll() is None and self._kill_at is None:
+            self._process.terminate()
+            self._kill_at = time.monotonic() + grace
 
     def cancel(self, grace=5.0):
         """Stops dinam (SIGTERM) and waits for it; returns its exit code.

@@ -159,4 +159,27 @@ with open(os.path.join(cache, "manifest.json")) as f:
     assert f.read() == before, "a cancelled run changed the cache"
 assert not [n for n in os.listdir(work) if ".part-" in n], os.listdir(work)
 print("addon: a cancelled run leaves the cache as it was")
+
+# The panel's Cancel never waits: request_cancel returns at once and poll() sees the end; a
+# program that ignores SIGTERM is killed after the grace period.
+stubborn = os.path.join(work, "stubborn")
+with open(stubborn, "w") as f:
+    # SIGTERM stays ignored in sleep; the marker says the trap is set.
+    f.write("#!/bin/sh\ntrap '' TERM\n: > \"$0.ready\"\nexec sleep 60\n")
+os.chmod(stubborn, 0o755)
+run = dinam_run.DinamRun(stubborn, long_scene, os.path.join(work, "never"))
+for _ in range(400):
+    if os.path.exists(stubborn + ".ready"):
+        break
+    time.sleep(0.05)
+run.request_cancel(grace=0.5)
+assert run.poll() is None, "the stubborn program ended at once"
+code = None
+for _ in range(200):
+    code = run.poll()
+    if code is not None:
+        break
+    time.sleep(0.05)
+assert code == -9, code  # killed (SIGKILL) once the grace had passed
+print("addon: a program that ignores SIGTERM is killed after the grace period")
 print("addon: PASS")
