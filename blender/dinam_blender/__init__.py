@@ -44,6 +44,28 @@ class DinamSettings(bpy.types.PropertyGroup):
         name="Pins", description="Vertex group whose vertices (weight above 0.5) never move")
     gravity: bpy.props.FloatVectorProperty(name="Gravity (m/s²)", default=(0.0, 0.0, -9.81))
     wind: bpy.props.FloatVectorProperty(name="Wind (m/s)", default=(0.0, 0.0, 0.0))
+    turbulence: bpy.props.FloatProperty(
+        name="Turbulence (m/s)", default=0.0, min=0.0,
+        description="The wind's turbulence, RMS per component (with a wind)")
+    gust: bpy.props.FloatProperty(
+        name="Gusts (m/s)", default=0.0, min=0.0,
+        description="Gusts along the wind, a 4 s sine of this amplitude (with a wind)")
+    ground: bpy.props.BoolProperty(name="Ground", default=True,
+                                   description="A ground plane the objects land on")
+    ground_height: bpy.props.FloatProperty(name="Ground height (m)", default=0.0)
+    floor: bpy.props.PointerProperty(
+        name="Floor", type=bpy.types.Object,
+        description="The ground at the top of this object's bounds, instead of the height")
+    collider_radius: bpy.props.FloatProperty(
+        name="Collider shell (m)", default=0.01, min=1e-4, precision=4,
+        description="How far from its surface a collider pushes: a shell thick enough that a "
+                    "falling cloth cannot pass it within one step")
+    self_contact: bpy.props.BoolProperty(
+        name="Self-contact", default=False,
+        description="Each object collides with itself (a cloth that folds, a rope that coils)")
+    settle: bpy.props.BoolProperty(
+        name="Settle first", default=False,
+        description="Start from the shape the objects rest in under gravity")
     progress: bpy.props.FloatProperty(name="Progress", subtype="PERCENTAGE", min=0, max=100)
     running: bpy.props.BoolProperty(default=False)
     # What dinam said in the last run (its warnings and notes, its summary), shown in the panel.
@@ -82,6 +104,15 @@ class Simulation:
                         f"'{obj.name}' has no vertex group '{settings.pin_group}' (its groups: "
                         f"{', '.join(g.name for g in obj.vertex_groups) or 'none'}): choose the "
                         "pins' group in the panel, or clear Pins to let the object fall freely")
+        # Obstacles: the scene's mesh objects marked as colliders (Object properties), not
+        # selected: they push and are not moved.
+        self.colliders = [o for o in context.scene.objects
+                          if o.type == "MESH" and o.dinam_collider and o not in self.objects]
+        colliders = []
+        for obj in self.colliders:
+            path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
+            scene_export.write_obj(obj, path)
+            colliders.append((obj.name, path))
         for obj in self.objects:
             path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
             scene_export.write_obj(obj, path)
@@ -98,7 +129,7 @@ class Simulation:
         frames = scene.frame_end - scene.frame_start + 1
         scene_file = os.path.join(inputs, "scene.yaml")
         with open(scene_file, "w") as f:
-            f.write(scene_export.scene_text(settings, described, frames, fps))
+            f.write(scene_export.scene_text(settings, described, frames, fps, colliders))
         self.cache = os.path.join(folder, "cache")
         self.local = os.path.join(folder, "local")
         try:
@@ -246,6 +277,20 @@ class DINAM_PT_panel(bpy.types.Panel):
             layout.prop_search(settings, "pin_group", obj, "vertex_groups")
         layout.prop(settings, "gravity")
         layout.prop(settings, "wind")
+        layout.prop(settings, "turbulence")
+        layout.prop(settings, "gust")
+        layout.prop(settings, "ground")
+        row = layout.row()
+        row.enabled = settings.ground and settings.floor is None
+        row.prop(settings, "ground_height")
+        row = layout.row()
+        row.enabled = settings.ground
+        row.prop(settings, "floor")
+        layout.prop(settings, "self_contact")
+        layout.prop(settings, "settle")
+        if obj is not None and obj.type == "MESH":
+            layout.prop(obj, "dinam_collider")
+        layout.prop(settings, "collider_radius")
         if settings.last_report and not settings.running:
             box = layout.box()
             box.label(text="Last run:")
@@ -267,9 +312,13 @@ def register():
     for cls in CLASSES:
         bpy.utils.register_class(cls)
     bpy.types.Scene.dinam = bpy.props.PointerProperty(type=DinamSettings)
+    bpy.types.Object.dinam_collider = bpy.props.BoolProperty(
+        name="dinam collider", default=False,
+        description="An obstacle for dinam's simulations: pushes the simulated objects, never moves")
 
 
 def unregister():
+    del bpy.types.Object.dinam_collider
     del bpy.types.Scene.dinam
     for cls in reversed(CLASSES):
         bpy.utils.unregister_class(cls)

@@ -9,6 +9,8 @@ import hashlib
 import json
 import os
 
+import mathutils
+
 # dinam's named materials (docs/materials.md; `material: {preset: NAME}` in a scene): the same
 # names, so an artist's choice here is dinam's preset with its values and sources. "custom" takes
 # the panel's density, Young's modulus and wire radius instead.
@@ -107,9 +109,19 @@ def vector(v):
     return "[" + ", ".join(repr(float(c)) for c in v) + "]"
 
 
-def scene_text(settings, objects, frame_count, fps):
-    """The scene file for `objects` (each (name, obj file, pinned indices)); JSON's quoted
-    strings are YAML's too."""
+def ground_height(settings):
+    """The ground's height: the top of the chosen floor object's bounds in the world, else the
+    panel's height."""
+    floor = settings.floor
+    if floor is None:
+        return settings.ground_height
+    return max((floor.matrix_world @ mathutils.Vector(corner)).z for corner in floor.bound_box)
+
+
+def scene_text(settings, objects, frame_count, fps, colliders=()):
+    """The scene file for `objects` (each (name, obj file, pinned indices)) and `colliders` (each
+    (name, obj file): obstacles that push and are not moved); JSON's quoted strings are YAML's
+    too."""
     lines = [
         "# Written by the dinam Blender add-on.",
         "version: 1",
@@ -120,7 +132,20 @@ def scene_text(settings, objects, frame_count, fps):
         f"gravity: {vector(settings.gravity)}",
     ]
     if any(settings.wind):
-        lines.append(f"wind: {{velocity: {vector(settings.wind)}}}")
+        wind = [f"velocity: {vector(settings.wind)}"]
+        if settings.turbulence > 0:
+            wind.append(f"turbulence: {{amplitude: {settings.turbulence!r}}}")
+        if settings.gust > 0:
+            wind.append(f"gust: {{amplitude: {settings.gust!r}}}")
+        lines.append("wind: {" + ", ".join(wind) + "}")
+    if settings.ground:
+        lines.append(f"ground: {{height: {float(ground_height(settings))!r}}}")
+    else:
+        lines.append("ground: {contact: false}")
+    if settings.settle:
+        lines.append("settle: {}")
+    if colliders or settings.self_contact:
+        lines.append(f"contact: {{objects: true, self: {'true' if settings.self_contact else 'false'}}}")
     lines.append("objects:")
     for name, obj_file, pins in objects:
         lines += [
@@ -132,4 +157,12 @@ def scene_text(settings, objects, frame_count, fps):
             lines.append(f"    damping: {{axial_ratio: {settings.damping_ratio!r}}}")
         if pins:
             lines.append(f"    pinned: {{indices: [{', '.join(str(i) for i in pins)}]}}")
+    for name, obj_file in colliders:
+        lines += [
+            f"  - name: {json.dumps(name)}",
+            f"    mesh: {{file: {json.dumps(os.path.basename(obj_file))}, up_axis: z}}",
+            f"    material: {material_text(settings)}",
+            "    pinned: {all: true}",
+            f"    contact: {{radius: {settings.collider_radius!r}}}",
+        ]
     return "\n".join(lines) + "\n"

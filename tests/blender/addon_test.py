@@ -13,7 +13,8 @@
 #     stay where they were, and the rest moved;
 #  5. refuses an object with a loose vertex, saying how to mend it, and leaves it as it was;
 #     names a dinam program that exists but cannot run, a Pins group the object lacks and an
-#     unsaved file's relative folder; says that a run with no pins falls freely;
+#     unsaved file's relative folder; says that a run with no pins falls freely; drops a square
+#     onto a raised ground, a chosen floor object and a collider, and finds it resting on each;
 #  6. runs dinam as the panel does, its progress read from dinam's stderr up to 100 %, and cancels
 #     a long run: dinam stops (exit 143, SIGTERM) and the cache of step 3 is as it was.
 # The panel's own loop (a modal operator on a timer) needs Blender's interface, which a headless
@@ -135,6 +136,65 @@ assert bpy.ops.dinam.simulate() == {"FINISHED"}
 assert "'Banner' has no pinned vertex (no Pins group chosen): it falls freely" in \
     settings.last_report, settings.last_report
 print("addon: a run with no pins says so: " + settings.last_report.splitlines()[0])
+settings.pin_group = "pins"
+
+# The ground where the artist puts it, and obstacles: a square of cloth dropped from 1 m lands
+# on a ground raised to 0.4 m, on the top of a chosen floor object (a box whose top is at 0.3 m)
+# and on a collider (a plane at 0.6 m, marked in its Object properties, not selected, not moved).
+def lowest_at_last_frame(obj):
+    scene.frame_set(scene.frame_end)
+    evaluated = obj.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    mesh = evaluated.to_mesh()
+    lowest = min((obj.matrix_world @ v.co).z for v in mesh.vertices)
+    evaluated.to_mesh_clear()
+    return lowest
+
+
+scene_file = os.path.join(work, "input", "scene.yaml")
+with open(scene_file) as f:
+    banner_scene = f.read()  # the long run below is the banner's
+bpy.ops.mesh.primitive_plane_add(size=0.5, location=(5, 0, 1.0))
+square = bpy.context.active_object
+square.name = "Square"
+bpy.ops.mesh.primitive_cube_add(size=0.6, location=(5, 0, 0.0))  # its top at 0.3 m
+floor = bpy.context.active_object
+bpy.ops.mesh.primitive_plane_add(size=2.0, location=(5, 0, 0.6))
+shelf = bpy.context.active_object
+settings.pin_group = ""
+for what, expected in (("ground", 0.4), ("floor", 0.3), ("collider", 0.6)):
+    settings.ground_height = 0.4 if what == "ground" else 0.0
+    settings.floor = floor if what == "floor" else None
+    shelf.dinam_collider = what == "collider"
+    bpy.ops.object.select_all(action="DESELECT")
+    square.select_set(True)
+    assert bpy.ops.dinam.simulate() == {"FINISHED"}
+    lowest = lowest_at_last_frame(square)
+    print(f"addon: the square dropped on the {what} rests at z = {lowest:.4f} m "
+          f"(the {what} at {expected} m)")
+    # Resting on it, within the contact's reach (the collider's 1 cm shell and the cloth's own
+    # radius, less the penalty's give under its weight), never through it.
+    reach = settings.collider_radius if what == "collider" else 0.0
+    assert expected + reach - 0.005 <= lowest <= expected + reach + 0.005, (what, lowest)
+    assert shelf.modifiers.get("dinam") is None, "the collider was given a cache"
+shelf.dinam_collider = False
+# Turbulence, gusts, self-contact and a settle first reach the scene, and dinam takes them.
+settings.wind, settings.turbulence, settings.gust = (0.0, 3.0, 0.0), 0.5, 1.0
+settings.self_contact, settings.settle = True, True
+bpy.ops.object.select_all(action="DESELECT")
+square.select_set(True)
+assert bpy.ops.dinam.simulate() == {"FINISHED"}, settings.last_report
+with open(scene_file) as f:
+    written = f.read()
+for line in ("wind: {velocity: [0.0, 3.0, 0.0], turbulence: {amplitude: 0.5}, "
+             "gust: {amplitude: 1.0}}", "settle: {}", "contact: {objects: true, self: true}"):
+    assert line in written, (line, written)
+print("addon: turbulence, gusts, self-contact and settle reach the scene")
+settings.wind, settings.turbulence, settings.gust = (0.0, 4.0, 0.0), 0.0, 0.0
+settings.self_contact, settings.settle = False, False
+with open(scene_file, "w") as f:
+    f.write(banner_scene)
+settings.floor = None
+settings.ground_height = 0.0
 settings.pin_group = "pins"
 
 # The progress the panel shows comes from dinam's lines on stderr.
