@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <optional>
+#include <string>
 
 #include "core/cpu_share.hpp"
 
@@ -19,6 +20,21 @@ struct Command {
 
 // --threads, on the commands that simulate: stored in `threads`, which outlives the parse.
 void add_threads_option(CLI::App& command, std::optional<int>& threads);
+
+// An option that, given a value that is not empty, sets `value` (an empty one, `-o ''`, leaves
+// the default). `value` outlives the parse (a field of options the command's run holds).
+template <typename T>
+CLI::Option* add_optional_option(CLI::App& command, const std::string& name,
+                                 std::optional<T>& value, const std::string& description) {
+  return command.add_option_function<std::string>(
+      name,
+      [&value](const std::string& text) {
+        if (!text.empty()) {
+          value = T(text);
+        }
+      },
+      description);
+}
 
 Command add_render_command(CLI::App& app, std::optional<int>& threads);
 Command add_simulate_command(CLI::App& app, std::optional<int>& threads);

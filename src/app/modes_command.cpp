@@ -196,31 +196,21 @@ int run_modes(const ModesOptions& options) {
 }
 
 Command add_modes_command(CLI::App& app, std::optional<int>& threads) {
-  struct Parsed {
-    ModesOptions options;
-    std::string output;
-  };
-  auto parsed = std::make_shared<Parsed>();
+  auto options = std::make_shared<ModesOptions>();
   CLI::App* modes_command = app.add_subcommand(
       "modes",
       "Print the lowest natural frequencies and mode shapes of a scene's structure at rest under "
       "gravity, and write them as a motion cache (one object per mode)");
-  modes_command->add_option("scene", parsed->options.scene, "Scene file (YAML)")->required();
-  modes_command->add_option("--count", parsed->options.count, "How many of the lowest modes")
-      ->default_val(parsed->options.count)
+  modes_command->add_option("scene", options->scene, "Scene file (YAML)")->required();
+  modes_command->add_option("--count", options->count, "How many of the lowest modes")
+      ->default_val(options->count)
       ->check(CLI::Range(1, 1000));
-  modes_command->add_option("-o,--output", parsed->output,
-                            "Cache folder to write (default: the scene's output folder/modes)");
-  modes_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
+  add_optional_option(*modes_command, "-o,--output", options->output,
+                      "Cache folder to write (default: the scene's output folder/modes)");
+  modes_command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
   add_threads_option(*modes_command, threads);
 
-  return {modes_command, [parsed](const ThreadChoice&) {
-            ModesOptions options = parsed->options;
-            if (!parsed->output.empty()) {
-              options.output = parsed->output;
-            }
-            return run_modes(options);
-          }};
+  return {modes_command, [options](const ThreadChoice&) { return run_modes(*options); }};
 }
 
 }  // namespace dinam

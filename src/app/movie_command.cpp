@@ -85,29 +85,18 @@ int run_movie(const MovieOptions& options) {
 }
 
 Command add_movie_command(CLI::App& app) {
-  struct Parsed {
-    MovieOptions options;
-    std::string format;
-  };
-  auto parsed = std::make_shared<Parsed>();
+  auto options = std::make_shared<MovieOptions>();
   CLI::App* movie_command = app.add_subcommand(
       "movie",
       "Assemble the frames in a folder (drawn by 'dinam render', at once or in chunks) into "
       "the movie; missing or extra frames are named and nothing is made");
-  movie_command
-      ->add_option("folder", parsed->options.folder, "Folder of frame_NNNN.png and frames.json")
+  movie_command->add_option("folder", options->folder, "Folder of frame_NNNN.png and frames.json")
       ->required();
-  movie_command->add_option("--movie", parsed->format,
-                            "mp4 or gif (default: the scene's 'movie', else mp4)");
-  movie_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
+  add_optional_option(*movie_command, "--movie", options->movie,
+                      "mp4 or gif (default: the scene's 'movie', else mp4)");
+  movie_command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
 
-  return {movie_command, [parsed](const ThreadChoice&) {
-            MovieOptions options = parsed->options;
-            if (!parsed->format.empty()) {
-              options.movie = parsed->format;
-            }
-            return run_movie(options);
-          }};
+  return {movie_command, [options](const ThreadChoice&) { return run_movie(*options); }};
 }
 
 }  // namespace dinam

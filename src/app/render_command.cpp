@@ -157,16 +157,14 @@ int run_render(const RenderOptions& options) {
 Command add_render_command(CLI::App& app, std::optional<int>& threads) {
   struct Parsed {
     RenderOptions options;
-    std::string output;
-    bool no_video = false;
-    std::string cache;
+    bool no_video = false;  // applied after the parse, so that it wins over --movie
   };
   auto parsed = std::make_shared<Parsed>();
   CLI::App* render_command =
       app.add_subcommand("render", "Simulate a scene and write its frames (PNG) and movie (mp4)");
   render_command->add_option("scene", parsed->options.scene, "Scene file (YAML)")->required();
-  render_command->add_option("-o,--output", parsed->output,
-                             "Output folder (default: the scene's 'output', else out/<name>)");
+  add_optional_option(*render_command, "-o,--output", parsed->options.output,
+                      "Output folder (default: the scene's 'output', else out/<name>)");
   render_command->add_option("--frames", parsed->options.frames,
                              "Frames to write, A-B (1-based, inclusive); each is the frame of the "
                              "whole movie (the whole motion is simulated, or read with --cache)");
@@ -181,9 +179,9 @@ Command add_render_command(CLI::App& app, std::optional<int>& threads) {
                            "Also write DIR/energy.csv: kinetic, elastic, gravitational and contact "
                            "energy, and what damping, plasticity, friction, wind and fields did, "
                            "one row per frame");
-  render_command->add_option("--cache", parsed->cache,
-                             "Draw from this motion cache (made by 'dinam simulate') instead of "
-                             "simulating; refused when the scene's motion has changed since");
+  add_optional_option(*render_command, "--cache", parsed->options.cache,
+                      "Draw from this motion cache (made by 'dinam simulate') instead of "
+                      "simulating; refused when the scene's motion has changed since");
   render_command->add_flag(
       "--preview", parsed->options.preview,
       "A quick look: draft quality, 320 pixels wide, about 30 frames spread over the motion, as "
@@ -195,14 +193,8 @@ Command add_render_command(CLI::App& app, std::optional<int>& threads) {
 
   return {render_command, [parsed](const ThreadChoice&) {
             RenderOptions options = parsed->options;
-            if (!parsed->output.empty()) {
-              options.output = parsed->output;
-            }
             if (parsed->no_video) {
               options.movie = "none";
-            }
-            if (!parsed->cache.empty()) {
-              options.cache = parsed->cache;
             }
             return run_render(options);
           }};

@@ -202,42 +202,32 @@ int run_simulate(const SimulateOptions& options) {
 }
 
 Command add_simulate_command(CLI::App& app, std::optional<int>& threads) {
-  struct Parsed {
-    SimulateOptions options;
-    std::string output;
-  };
-  auto parsed = std::make_shared<Parsed>();
+  auto options = std::make_shared<SimulateOptions>();
   CLI::App* simulate_command = app.add_subcommand(
       "simulate",
       "Simulate a scene once into a motion cache: per object a rest mesh (OBJ) and point caches "
       "(PC2, MDD) that 'render --cache' draws from and Blender, Houdini and 3ds Max open, plus "
       "manifest.json");
-  simulate_command->add_option("scene", parsed->options.scene, "Scene file (YAML)")->required();
-  simulate_command->add_option("-o,--output", parsed->output,
-                               "Cache folder (default: the scene's 'output'/cache); an older "
-                               "cache there is replaced when the new one is complete");
+  simulate_command->add_option("scene", options->scene, "Scene file (YAML)")->required();
+  add_optional_option(*simulate_command, "-o,--output", options->output,
+                      "Cache folder (default: the scene's 'output'/cache); an older "
+                      "cache there is replaced when the new one is complete");
   simulate_command
       ->add_option(
-          "--format", parsed->options.formats,
+          "--format", options->formats,
           "What the cache holds beside the rest meshes: a list of pc2, mdd (point caches) and "
           "usd (a USD stage of every object)")
-      ->default_val(parsed->options.formats);
-  simulate_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
-  simulate_command->add_flag("--energy", parsed->options.energy,
+      ->default_val(options->formats);
+  simulate_command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
+  simulate_command->add_flag("--energy", options->energy,
                              "Also record the energy report, one row per frame, in "
                              "manifest.json and energy.csv");
-  simulate_command->add_flag("--force", parsed->options.force,
+  simulate_command->add_flag("--force", options->force,
                              "Run even when the memory the run needs (see 'dinam info') passes "
                              "what the machine has available, or its run time an hour");
   add_threads_option(*simulate_command, threads);
 
-  return {simulate_command, [parsed](const ThreadChoice&) {
-            SimulateOptions options = parsed->options;
-            if (!parsed->output.empty()) {
-              options.output = parsed->output;
-            }
-            return run_simulate(options);
-          }};
+  return {simulate_command, [options](const ThreadChoice&) { return run_simulate(*options); }};
 }
 
 }  // namespace dinam

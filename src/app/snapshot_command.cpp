@@ -130,55 +130,43 @@ int run_snapshot(const SnapshotOptions& options) {
 }
 
 Command add_snapshot_command(CLI::App& app, std::optional<int>& threads) {
-  struct Parsed {
-    SnapshotOptions options;
-    std::string output;
-  };
-  auto parsed = std::make_shared<Parsed>();
+  auto options = std::make_shared<SnapshotOptions>();
   CLI::App* snapshot_command = app.add_subcommand(
       "snapshot",
       "Render chosen frames small and compare each with a golden PNG under a tolerance; exit 1 "
       "on any difference, writing actual, expected and difference images");
-  snapshot_command->add_option("scene", parsed->options.scene, "Scene file (YAML)")->required();
+  snapshot_command->add_option("scene", options->scene, "Scene file (YAML)")->required();
   snapshot_command
-      ->add_option("--golden", parsed->options.golden, "Folder of golden images <name>_NNNN.png")
+      ->add_option("--golden", options->golden, "Folder of golden images <name>_NNNN.png")
       ->required();
-  snapshot_command->add_option("--frames", parsed->options.frames,
+  snapshot_command->add_option("--frames", options->frames,
                                "Frames to check, e.g. 1,60,120 or 1-3,9 (default: first, middle "
                                "and last)");
-  snapshot_command->add_option("--size", parsed->options.size, "Image size WxH")
-      ->default_val("320x180");
-  snapshot_command->add_option("-o,--output", parsed->output,
-                               "Where differing frames' actual/expected/diff images go (default "
-                               "out/snapshot/<name>)");
-  snapshot_command->add_flag("--update", parsed->options.update,
+  snapshot_command->add_option("--size", options->size, "Image size WxH")->default_val("320x180");
+  add_optional_option(*snapshot_command, "-o,--output", options->output,
+                      "Where differing frames' actual/expected/diff images go (default "
+                      "out/snapshot/<name>)");
+  snapshot_command->add_flag("--update", options->update,
                              "Write the rendered frames as the new goldens instead of comparing");
   snapshot_command
-      ->add_option("--threshold", parsed->options.tolerance.threshold,
+      ->add_option("--threshold", options->tolerance.threshold,
                    "A pixel differs when a channel differs by more than this (0-255)")
-      ->default_val(parsed->options.tolerance.threshold)
+      ->default_val(options->tolerance.threshold)
       ->check(CLI::Range(0, 255));
   snapshot_command
-      ->add_option("--max-differing", parsed->options.tolerance.max_differing_fraction,
+      ->add_option("--max-differing", options->tolerance.max_differing_fraction,
                    "Largest fraction of differing pixels that still matches")
-      ->default_val(parsed->options.tolerance.max_differing_fraction)
+      ->default_val(options->tolerance.max_differing_fraction)
       ->check(CLI::Range(0.0, 1.0));
   snapshot_command
-      ->add_option("--max-mean-error", parsed->options.tolerance.max_mean_error,
+      ->add_option("--max-mean-error", options->tolerance.max_mean_error,
                    "Largest mean channel error (0-255) that still matches")
-      ->default_val(parsed->options.tolerance.max_mean_error)
+      ->default_val(options->tolerance.max_mean_error)
       ->check(CLI::Range(0.0, 255.0));
-  snapshot_command->add_flag("-q,--quiet", parsed->options.quiet,
-                             "Print only differences and errors");
+  snapshot_command->add_flag("-q,--quiet", options->quiet, "Print only differences and errors");
   add_threads_option(*snapshot_command, threads);
 
-  return {snapshot_command, [parsed](const ThreadChoice&) {
-            SnapshotOptions options = parsed->options;
-            if (!parsed->output.empty()) {
-              options.output = parsed->output;
-            }
-            return run_snapshot(options);
-          }};
+  return {snapshot_command, [options](const ThreadChoice&) { return run_snapshot(*options); }};
 }
 
 }  // namespace dinam

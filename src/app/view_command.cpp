@@ -203,32 +203,21 @@ int run_view(const ViewOptions& options) {
 }
 
 Command add_view_command(CLI::App& app) {
-  struct Parsed {
-    ViewOptions options;
-    std::string output;
-  };
-  auto parsed = std::make_shared<Parsed>();
+  auto options = std::make_shared<ViewOptions>();
   CLI::App* view_command = app.add_subcommand(
       "view",
       "Write a motion cache as one web page that plays it (orbit, timeline, play/pause): open it "
       "in any browser, offline");
-  view_command->add_option("cache", parsed->options.cache, "Motion cache folder (dinam simulate)")
+  view_command->add_option("cache", options->cache, "Motion cache folder (dinam simulate)")
       ->required();
-  view_command->add_option("-o,--output", parsed->output,
-                           "The page to write (default: the cache folder's name with .html)");
-  view_command
-      ->add_option("--every", parsed->options.every, "Keep every Nth frame (a smaller page)")
-      ->default_val(parsed->options.every)
+  add_optional_option(*view_command, "-o,--output", options->output,
+                      "The page to write (default: the cache folder's name with .html)");
+  view_command->add_option("--every", options->every, "Keep every Nth frame (a smaller page)")
+      ->default_val(options->every)
       ->check(CLI::Range(1, 100000));
-  view_command->add_flag("-q,--quiet", parsed->options.quiet, "Print nothing but errors");
+  view_command->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
 
-  return {view_command, [parsed](const ThreadChoice&) {
-            ViewOptions options = parsed->options;
-            if (!parsed->output.empty()) {
-              options.output = parsed->output;
-            }
-            return run_view(options);
-          }};
+  return {view_command, [options](const ThreadChoice&) { return run_view(*options); }};
 }
 
 }  // namespace dinam
