@@ -101,11 +101,17 @@ void check_output_place(const std::filesystem::path& path, OutputPlace place, co
                      path.string(), existing.string(), option,
                      place == OutputPlace::kInside ? "a folder" : "a path in a folder");
   }
-  // A file of a random name, made and removed: whether the folder is writable, on a writable
-  // file system, to this user (root included), as the real outputs will be made.
+  // Whether the folder is writable, on a writable file system, to this user (root included), as
+  // the real outputs will be made: a file made there. An unnamed one (O_TMPFILE) leaves nothing
+  // behind whatever stops the program; where the file system has none, a named one, made and
+  // removed at once.
+  int fd = open(existing.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+  const bool unnamed = fd >= 0 || (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL);
   const std::filesystem::path probe =
       existing / fmt::format(".dinam-write-test.{}", random_suffix());
-  const int fd = open(probe.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+  if (!unnamed) {
+    fd = open(probe.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+  }
   if (fd < 0) {
     throw_user_error({},
                      "{} {} cannot be written: dinam cannot create files in {} ({}); give {} a "
@@ -113,7 +119,9 @@ void check_output_place(const std::filesystem::path& path, OutputPlace place, co
                      what, path.string(), existing.string(), std::strerror(errno), option);
   }
   close(fd);
-  unlink(probe.c_str());
+  if (!unnamed) {
+    unlink(probe.c_str());
+  }
 }
 
 int create_exclusive_file(const std::filesystem::path& stem, std::filesystem::path& created) {
