@@ -10,8 +10,8 @@
 
 #include "core/error.hpp"
 #include "dynamics/contact_grid.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/object_contact_state.hpp"
-#include "dynamics/spring_kinds.hpp"
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"
@@ -80,33 +80,19 @@ std::uint64_t model_bytes(const Model& model) {
 std::uint64_t made_state_bytes(const Model& model, bool energy) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
   const auto bars = static_cast<std::uint64_t>(model.bar_count());
-  // Plastic sets for the kinds of spring that can yield, and while the energy is tracked each
-  // one's flow; with tearing, a broken flag for every spring.
-  std::uint64_t yielding = 0;
-  std::uint64_t springs = 0;
-  for (const SpringKind* kind : kSpringKinds) {
-    const auto count = static_cast<std::uint64_t>(kind->count(model));
-    yielding += kind->yields(model) ? count : 0;
-    springs += count;
-  }
   std::uint64_t bytes = nodes * 5 * sizeof(Vec3);  // x, v_half, force, x_next, v_next
-  bytes += yielding * sizeof(double) * (energy ? 2 : 1);
-  if (model.wind.field.enabled) {  // each face's and bar's drag, and the wind at each node
-    bytes += (model.wind.faces.size() + model.wind.bars.size()) * sizeof(Vec3);
-    bytes += model.wind.field.turbulence != 0.0 ? nodes * sizeof(Vec3) : 0;
-  }
-  if (model.ground.enabled) {
-    bytes += nodes * (sizeof(Vec3) + 2 * sizeof(std::uint8_t));  // anchors, touching, sliding
+  for (const ForceKind* kind : kForceKinds) {      // each kind's own arrays
+    bytes += kind->state_bytes != nullptr ? kind->state_bytes(model, energy) : 0;
   }
   if (energy) {
     bytes += nodes * 6 * sizeof(Vec3);  // the energy workspace's per-kind forces and v_whole
   }
   if (model.can_tear()) {  // a broken flag per spring and face, and the list of broken bars
+    std::uint64_t springs = 0;
+    for (const SpringKind* kind : kSpringKinds) {
+      springs += static_cast<std::uint64_t>(kind->count(model));
+    }
     bytes += springs + static_cast<std::uint64_t>(model.face_count()) + bars * sizeof(Index);
-  }
-  if (model.contact.enabled) {  // a box and a flag per bar and triangle, a reference per node
-    const auto triangles = static_cast<std::uint64_t>(model.contact.triangle_face.size());
-    bytes += (bars + triangles) * (sizeof(Box) + sizeof(std::uint8_t)) + nodes * sizeof(Vec3);
   }
   return bytes;
 }

@@ -1,5 +1,6 @@
 #include "dynamics/axial_spring.hpp"
 
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/spring_block.hpp"
@@ -78,7 +79,6 @@ double axial_spring_energy(const Model& model, const State& state, SpringEnergy 
 
 const SpringKind kAxialSprings{
     .built = &kAxialSpringModel,
-    .switched = &ForceSwitches::axial_springs,
     .add_forces = add_axial_spring_forces,
     .energy = axial_spring_energy,
     .add_stiffness = add_axial_spring_stiffness,
@@ -88,6 +88,35 @@ const SpringKind kAxialSprings{
     .broken = &State::bar_broken,
     .ns_per_item = 5.5,
     .ns_per_item_yielding = 6.6,
+};
+
+// The bars' axial dampers, along each bar.
+const ForceKind kAxialDampers{
+    .label = "axial dampers",
+    .spring = nullptr,
+    .role = ForceRole::kDissipation,
+    .implicit = ImplicitTreatment::kDamper,
+    .switched = &ForceSwitches::axial_dampers,
+    .present = [](const Model& model) { return model.any_bar_damping; },
+    .prepare_forces = nullptr,
+    .add_forces =
+        [](ForceContext& total, const StepOptions&) {
+          ForceContext booked = booked_in(total, &EnergyWorkspace::damping);
+          add_axial_damper_forces(booked);
+        },
+    .add_forces_after_team = nullptr,
+    .add_potential = nullptr,
+    .add_stiffness = nullptr,
+    .report_energy = nullptr,
+    .ledger = {{&EnergyWorkspace::damping, &EnergyAccounts::damping_work}},
+    .prepare_state = nullptr,
+    .state_bytes = nullptr,
+    .add_cost =
+        [](const Model& model, StepCostSink& sink) {
+          sink.add("axial dampers",
+                   model.any_bar_damping ? static_cast<double>(model.bar_count()) : 0.0,
+                   5.3);  // ns per bar
+        },
 };
 
 }  // namespace dinam

@@ -51,7 +51,6 @@ double bending_spring_energy(const Model& model, const State& state, SpringEnerg
 
 const SpringKind kBendingSprings{
     .built = &kBendingSpringModel,
-    .switched = &ForceSwitches::bending,
     .add_forces = add_bending_spring_forces,
     .energy = bending_spring_energy,
     .add_stiffness = add_bending_spring_stiffness,

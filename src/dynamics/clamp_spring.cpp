@@ -78,7 +78,6 @@ void add_clamp_stiffness(const Model& model, const State& state, StiffnessSink& 
 
 const SpringKind kClampSprings{
     .built = &kClampModel,
-    .switched = &ForceSwitches::clamps,
     .add_forces = add_clamp_forces,
     .energy = clamp_spring_energy,
     .add_stiffness = add_clamp_stiffness,

@@ -1,8 +1,6 @@
 #include "dynamics/energy.hpp"
 
-#include "dynamics/ground_contact.hpp"
-#include "dynamics/object_contact.hpp"
-#include "dynamics/spring_kinds.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -30,11 +28,12 @@ EnergyReport energy_report(const Model& model, const State& state,
   EnergyReport report;
   report.time = state.time;
   report.kinetic = kinetic_energy(model, v_whole);
-  for (const SpringKind* kind : kSpringKinds) {  // clamps are booked with the bending springs
-    report.*kind->report += kind->energy(model, state, SpringEnergy::kStored);
+  // Every kind that stores energy, on its line (clamps are booked with the bending springs).
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->report_energy != nullptr) {
+      kind->report_energy(model, state, report);
+    }
   }
-  report.gravitational = gravitational_energy(model, state.x);
-  report.contact = ground_contact_energy(model, state) + object_contact_energy(state);
   report.accounts = state.energy;
   const EnergyAccounts& a = report.accounts;
   report.total = report.kinetic + report.axial + report.bending + report.torsion +

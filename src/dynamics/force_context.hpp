@@ -40,4 +40,16 @@ struct ForceContext {
   }
 };
 
+// The context of a kind that keeps its own forces in `part` of the energy ledger while the energy
+// is tracked: the same total, booked there too.
+inline ForceContext booked_in(const ForceContext& total, std::vector<Vec3> EnergyWorkspace::*part) {
+  EnergyWorkspace& ledger = total.state.energy_workspace;
+  return {total.model,
+          total.state,
+          total.force,
+          total.update_history,
+          ledger.enabled ? &(ledger.*part) : nullptr,
+          total.worker};
+}
+
 }  // namespace dinam

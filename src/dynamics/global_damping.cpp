@@ -1,5 +1,6 @@
 #include "dynamics/global_damping.hpp"
 
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
 
@@ -14,5 +15,34 @@ void add_global_damping_forces(ForceContext& context, double alpha) {
     context.add(i, -(alpha * model.node_mass[i]) * context.state.v_half[i]);
   });
 }
+
+const ForceKind kGlobalDamping{
+    .label = "global damping",
+    .spring = nullptr,
+    .role = ForceRole::kDissipation,
+    .implicit = ImplicitTreatment::kDamper,
+    .switched = &ForceSwitches::global_damping,
+    .present = nullptr,  // the settling phase may damp a model that has none
+    .prepare_forces = nullptr,
+    .add_forces =
+        [](ForceContext& total, const StepOptions& options) {
+          ForceContext booked = booked_in(total, &EnergyWorkspace::damping);
+          add_global_damping_forces(booked,
+                                    options.global_damping.value_or(total.model.global_damping));
+        },
+    .add_forces_after_team = nullptr,
+    .add_potential = nullptr,
+    .add_stiffness = nullptr,
+    .report_energy = nullptr,
+    .ledger = {{&EnergyWorkspace::damping, &EnergyAccounts::damping_work}},
+    .prepare_state = nullptr,
+    .state_bytes = nullptr,
+    .add_cost =
+        [](const Model& model, StepCostSink& sink) {
+          sink.add("global damping",
+                   model.global_damping != 0.0 ? static_cast<double>(model.node_count()) : 0.0,
+                   1.3);  // ns per node
+        },
+};
 
 }  // namespace dinam

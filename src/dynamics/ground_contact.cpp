@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/vector_lanes.hpp"
 
@@ -166,5 +167,57 @@ void add_ground_contact_stiffness(const Model& model, const State& state, Stiffn
     }
   }
 }
+
+// The ground: its normal penalty a potential, its damper and friction booked on their lines.
+// Under the implicit step the penalty is a term of the step's potential and the friction the
+// stick springs of solver/implicit_friction.hpp.
+const ForceKind kGroundContact{
+    .label = "ground",
+    .spring = nullptr,
+    .role = ForceRole::kContact,
+    .implicit = ImplicitTreatment::kInPotential,
+    .switched = &ForceSwitches::ground,
+    .present = [](const Model& model) { return model.ground.enabled; },
+    .prepare_forces = nullptr,
+    .add_forces =
+        [](ForceContext& total, const StepOptions&) {
+          EnergyWorkspace& ledger = total.state.energy_workspace;
+          add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
+                                    ledger.enabled ? &ledger.friction : nullptr);
+        },
+    .add_forces_after_team = nullptr,
+    .add_potential =
+        [](const Model& model, const State& state, const PotentialQuery&, Potential& potential) {
+          potential.add(ground_contact_energy(model, state));
+        },
+    .add_stiffness = add_ground_contact_stiffness,
+    .report_energy =
+        [](const Model& model, const State& state, EnergyReport& report) {
+          report.contact += ground_contact_energy(model, state);
+        },
+    .ledger = {{&EnergyWorkspace::contact_damping, &EnergyAccounts::contact_damping_work},
+               {&EnergyWorkspace::friction, &EnergyAccounts::friction_work}},
+    // Each node's friction anchor, and whether it touches and slides: only where there is a
+    // ground (an elastic structure in the air carries none; memory is part of speed).
+    .prepare_state =
+        [](const Model& model, State& state) {
+          if (model.ground.enabled) {
+            const auto n = static_cast<std::size_t>(model.node_count());
+            state.contact_anchor.assign(n, Vec3::Zero());
+            state.contact_touching.assign(n, 0);
+            state.contact_sliding.assign(n, 0);
+          }
+        },
+    .state_bytes = [](const Model& model, bool) -> std::uint64_t {
+      return model.ground.enabled ? static_cast<std::uint64_t>(model.node_count()) *
+                                        (sizeof(Vec3) + 2 * sizeof(std::uint8_t))
+                                  : 0;
+    },
+    .add_cost =
+        [](const Model& model, StepCostSink& sink) {
+          sink.add("ground", model.ground.enabled ? static_cast<double>(model.node_count()) : 0.0,
+                   9.2);  // ns per node, half of them touching (bench_force_costs)
+        },
+};
 
 }  // namespace dinam

@@ -11,15 +11,11 @@
 #include "core/thread_team.hpp"
 #include "dynamics/contact_candidates.hpp"
 #include "dynamics/energy.hpp"
-#include "dynamics/field_forces.hpp"
-#include "dynamics/global_damping.hpp"
-#include "dynamics/ground_contact.hpp"
-#include "dynamics/object_contact.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/tearing.hpp"
-#include "dynamics/wind.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -120,29 +116,23 @@ void write_plastic_sets_put_aside(State& state) {
   }
 }
 
-// The forces at (x_n, v_{n−½}, t_n) into state.force, but for contact between objects, by one
-// worker (each member of the team runs it, on the nodes and springs of its own). Every kind adds
-// to each node's total in this fixed order. While the energy is tracked, the dissipative and
-// driving kinds also keep their own forces in the ledger's arrays, for the work they do; that
-// does not change the order of the total's sums.
+// The forces at (x_n, v_{n−½}, t_n) into state.force, but for the kinds found after the team's
+// job, by one worker (each member of the team runs it, on the nodes and springs of its own). Every
+// kind adds to each node's total in the list's order (force_kinds.hpp). While the energy is
+// tracked, the dissipative and driving kinds also keep their own forces in the ledger's arrays,
+// for the work they do; that does not change the order of the total's sums.
 void add_forces(const Worker& worker, const Model& model, const ForceSwitches& switches,
                 const StepOptions& options, State& state, bool update_history) {
   EnergyWorkspace& ledger = state.energy_workspace;
-  auto booked_in = [&](std::vector<Vec3>& part) {
-    return ForceContext{model, state, state.force, update_history, ledger.enabled ? &part : nullptr,
-                        worker};
-  };
   ForceContext total{model, state, state.force, update_history, nullptr, worker};
-  ForceContext wind = booked_in(ledger.wind);
-  ForceContext damping = booked_in(ledger.damping);
-
-  // 1. Aerodynamic drag on each face and bar in the wind, into the wind's own arrays (the team
-  //    meets after it).
-  if (switches.wind) {
-    compute_wind_drag(wind);
+  // 1. What a kind needs before the totals are cleared (the wind's drag on each face and bar,
+  //    into its own arrays; the team meets after it).
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->prepare_forces != nullptr && switches.*kind->switched) {
+      kind->prepare_forces(total);
+    }
   }
-  // 2. Node by node: the total starts at zero, then gravity, the scene's fields at t_n, the
-  //    wind's drag and global viscous friction.
+  // 2. Node by node, the total starts at zero; then every kind adds its forces.
   for_each_own_node(worker, model.node_count(), [&](Index i) {
     state.force[i].setZero();
     if (ledger.enabled) {
@@ -151,47 +141,47 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
       }
     }
   });
-  if (switches.gravity) {
-    add_gravity_forces(total);
-  }
-  if (switches.fields) {
-    ForceContext fields = booked_in(ledger.field);
-    add_field_forces(fields);
-  }
-  if (switches.wind) {
-    add_wind_forces(wind);
-  }
-  if (switches.global_damping) {
-    add_global_damping_forces(damping, options.global_damping.value_or(model.global_damping));
-  }
-  // 3. The springs, kind by kind (spring_kinds.hpp) in spring order, then the bars' dampers.
-  for (const SpringKind* kind : kSpringKinds) {
-    if (switches.*kind->switched) {
-      kind->add_forces(total);
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->add_forces != nullptr && switches.*kind->switched) {
+      kind->add_forces(total, options);
     }
-  }
-  if (switches.axial_dampers) {
-    add_axial_damper_forces(damping);
-  }
-  // 4. The ground, last: its damper acts on the velocity at t_n that every other force on the
-  //    node brings about (ground_contact.hpp), so the rest of the node's total must be in.
-  if (switches.ground) {
-    add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
-                              ledger.enabled ? &ledger.friction : nullptr);
   }
 }
 
-// 5. Contact between objects and within one, after the team's forces: its search shares its
-//    loops with the team by itself, then the pairs' forces are added on the calling thread.
-void add_contact_forces(const Model& model, const ForceSwitches& switches, State& state,
-                        bool update_history) {
-  if (!switches.object_contact || !model.contact.enabled) {
-    return;
-  }
-  EnergyWorkspace& ledger = state.energy_workspace;
+// Whether some kind that `switches` leaves on adds its forces after the team's job.
+bool adds_forces_after_team(const Model& model, const ForceSwitches& switches) {
+  return std::any_of(kForceKinds.begin(), kForceKinds.end(), [&](const ForceKind* kind) {
+    return kind->add_forces_after_team != nullptr && kind->acts_in(model, switches);
+  });
+}
+
+// 3. The kinds found after the team's job (contact between objects, whose search shares its loops
+//    with the team by itself), on the calling thread.
+void add_forces_after_team(const Model& model, const ForceSwitches& switches, State& state,
+                           bool update_history) {
   ForceContext total{model, state, state.force, update_history, nullptr, {}};
-  add_object_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
-                            ledger.enabled ? &ledger.friction : nullptr);
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->add_forces_after_team != nullptr && kind->acts_in(model, switches)) {
+      kind->add_forces_after_team(total);
+    }
+  }
+}
+
+// Δt Σ F·v_n of every line of the ledger that some kind books on, into its account: each line
+// once, however many kinds share it.
+void book_ledger_works(const EnergyWorkspace& ledger, double dt, EnergyAccounts& works) {
+  std::vector<Vec3> EnergyWorkspace::*booked[2 * kForceKinds.size()] = {};
+  std::size_t count = 0;
+  for (const ForceKind* kind : kForceKinds) {
+    for (const LedgerLine& line : kind->ledger) {
+      if (line.force == nullptr ||
+          std::find(booked, booked + count, line.force) != booked + count) {
+        continue;
+      }
+      booked[count++] = line.force;
+      works.*line.work = work(ledger.*line.force, ledger.v_whole, dt);
+    }
+  }
 }
 
 // The work that the springs' plastic flow dissipated in the step just taken, booked kind by kind
@@ -236,11 +226,7 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
         ledger.v_whole[i] = 0.5 * (state.v_half[i] + state.v_next[i]);
       }
       EnergyAccounts step_work;
-      step_work.damping_work = work(ledger.damping, ledger.v_whole, dt);
-      step_work.contact_damping_work = work(ledger.contact_damping, ledger.v_whole, dt);
-      step_work.friction_work = work(ledger.friction, ledger.v_whole, dt);
-      step_work.wind_work = work(ledger.wind, ledger.v_whole, dt);
-      step_work.field_work = work(ledger.field, ledger.v_whole, dt);
+      book_ledger_works(ledger, dt, step_work);
       step_work.support_work = support_work(model, state.force, ledger.v_whole, dt);
       state.energy.add_works(step_work, 0.5);
       ledger.last = energy_report(model, state, ledger.v_whole);
@@ -285,7 +271,7 @@ void compute_forces(const Model& model, const ForceSwitches& switches, State& st
       },
       alone);
   write_plastic_sets_put_aside(state);
-  add_contact_forces(model, switches, state, update_history);
+  add_forces_after_team(model, switches, state, update_history);
   if (update_history) {
     book_plastic_flow(state);
   }
@@ -312,16 +298,12 @@ State make_state(const Model& model, bool track_energy) {
   for (const SpringKind* kind : kSpringKinds) {
     (state.*kind->plastic_set).assign(kind->yields(model) ? kind->count(model) : 0, 0.0);
   }
-  // Contact history where there is a ground: an elastic structure in the air carries none
-  // (memory is part of speed for large models).
-  if (model.ground.enabled) {
-    state.contact_anchor.assign(n, Vec3::Zero());
-    state.contact_touching.assign(n, 0);
-    state.contact_sliding.assign(n, 0);
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->prepare_state != nullptr) {
+      kind->prepare_state(model, state);
+    }
   }
   prepare_tearing(model, state);
-  prepare_wind(model, state);
-  prepare_object_contact(model, state);
   place_driven_nodes(model, 0.0, state);
   EnergyWorkspace& ledger = state.energy_workspace;
   ledger.enabled = track_energy;
@@ -387,7 +369,7 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
     state.x_next.resize(state.x.size());
     state.v_next.resize(state.x.size());
   }
-  if (switches.object_contact && model.contact.enabled) {
+  if (adds_forces_after_team(model, switches)) {
     // Contact between objects searches for its pairs between two jobs of the team.
     for (std::int64_t s = 0; s < steps && !diverged.load(std::memory_order_relaxed); ++s) {
       stop_if_asked();  // the pair search of a large model can take a while each step
@@ -400,7 +382,7 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
             add_forces({member, split}, model, switches, options, state, true);
           },
           alone);
-      add_contact_forces(model, switches, state, true);
+      add_forces_after_team(model, switches, state, true);
       thread_team().run(
           [&](const TeamMember& member) {
             advance({member, split}, model, dt, options, state, diverged);

@@ -4,42 +4,13 @@
 // Velocity-dependent forces (dampers, friction, drag) use v_{n−½}, the latest velocity known
 // before the step; the stability bound accounts for the lag.
 #include <cstdint>
-#include <optional>
 
+#include "dynamics/force_switches.hpp"
 #include "dynamics/state.hpp"
 
 namespace dinam {
 
 struct Model;
-
-// Which force kinds act; each can be switched off so that a test isolates one.
-struct ForceSwitches {
-  bool gravity = true;
-  bool fields = true;
-  bool axial_springs = true;
-  bool axial_dampers = true;
-  bool bending = true;
-  bool torsion = true;
-  bool clamps = true;  // clamped supports' bending springs
-  bool global_damping = true;
-  bool wind = true;
-  bool ground = true;
-  bool object_contact = true;  // between objects and within one
-
-  // Every kind off: a start from which to switch on one or two.
-  static ForceSwitches none() {
-    return {false, false, false, false, false, false, false, false, false, false, false};
-  }
-};
-
-// How a step departs from the model's own motion without a copy of the model: the settling phase
-// runs the scene's model with these (and with fields and wind switched off).
-struct StepOptions {
-  // 1/s, in place of model.global_damping (where ForceSwitches::global_damping leaves it on).
-  std::optional<double> global_damping;
-  // Driven pins stay where they are instead of following their paths (PinMotion).
-  bool pins_hold_still = false;
-};
 
 // Every array of the state for `model` allocated in this one place (state_arrays.hpp lists them),
 // at x_0 and v_0 from the model (driven pins where their paths start); the energy ledger's arrays

@@ -6,8 +6,11 @@
 #include <type_traits>
 #include <utility>
 
+#include "dynamics/contact_candidates.hpp"
 #include "dynamics/contact_geometry.hpp"
+#include "dynamics/contact_grid.hpp"
 #include "dynamics/contact_pairs.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -270,5 +273,49 @@ void add_object_contact_stiffness(const Model& model, const State& state, Stiffn
     sink.add(point.nodes.data(), 4, stiffness.data());
   }
 }
+
+// Contact between objects and within one: found after the team's job (its pair search shares
+// its own loops), its penalty's energy booked where the pairs touch at the last force evaluation.
+// Under the implicit step its penalty and lagged friction are solver/implicit_object_contact.hpp's.
+const ForceKind kObjectContact{
+    .label = "contact between objects",
+    .spring = nullptr,
+    .role = ForceRole::kContact,
+    .implicit = ImplicitTreatment::kOwnContact,
+    .switched = &ForceSwitches::object_contact,
+    .present = [](const Model& model) { return model.contact.enabled; },
+    .prepare_forces = nullptr,
+    .add_forces = nullptr,
+    .add_forces_after_team =
+        [](ForceContext& total) {
+          EnergyWorkspace& ledger = total.state.energy_workspace;
+          add_object_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
+                                    ledger.enabled ? &ledger.friction : nullptr);
+        },
+    .add_potential = nullptr,  // not of the positions alone: of the pairs the last evaluation found
+    .add_stiffness = add_object_contact_stiffness,
+    .report_energy = [](const Model&, const State& state,
+                        EnergyReport& report) { report.contact += object_contact_energy(state); },
+    .ledger = {{&EnergyWorkspace::contact_damping, &EnergyAccounts::contact_damping_work},
+               {&EnergyWorkspace::friction, &EnergyAccounts::friction_work}},
+    // A box and a flag per bar and triangle, a reference per node.
+    .prepare_state = prepare_object_contact,
+    .state_bytes = [](const Model& model, bool) -> std::uint64_t {
+      if (!model.contact.enabled) {
+        return 0;
+      }
+      const std::uint64_t items = model.contact.bars.size() + model.contact.triangle_face.size();
+      return items * (sizeof(Box) + sizeof(std::uint8_t)) +
+             static_cast<std::uint64_t>(model.node_count()) * sizeof(Vec3);
+    },
+    .add_cost =
+        [](const Model& model, StepCostSink& sink) {
+          if (model.contact.enabled) {
+            sink.add("contact between objects",
+                     static_cast<double>(model.contact.bars.size() + model.contact.points.size()),
+                     30.0);  // ns per bar or node watched (bench_force_costs)
+          }
+        },
+};
 
 }  // namespace dinam

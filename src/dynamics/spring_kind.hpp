@@ -11,7 +11,6 @@
 
 #include "core/types.hpp"
 #include "dynamics/force_context.hpp"
-#include "dynamics/integrator.hpp"
 #include "dynamics/state.hpp"
 #include "dynamics/stiffness.hpp"
 #include "model/model.hpp"
@@ -30,7 +29,6 @@ struct SpringKind {
   // The model stage's half (model/model_spring_kind.hpp): its name, arrays, stability bound and
   // tearing.
   const ModelSpringKind* built;
-  bool ForceSwitches::*switched;  // its switch: off, the step leaves it out (tests isolate kinds)
   void (*add_forces)(ForceContext&);                           // on the context worker's own nodes
   double (*energy)(const Model&, const State&, SpringEnergy);  // J, of the springs not broken
   // Each spring's stiffness matrix at the state's positions (stiffness.hpp), for Newton's method:
@@ -41,8 +39,9 @@ struct SpringKind {
   std::vector<double> EnergyWorkspace::*flow;  // J its flow dissipated in the last step
   std::vector<std::uint8_t> State::*broken;    // tearing: 1 for a broken one (empty: cannot)
   // Nanoseconds per spring on one thread, elastic and of a kind that can yield, from
-  // `build/bench/bench_force_costs` (bench/notes/performance.md, "Every force kind against the springs");
-  // only the run-time estimate (step_cost.hpp) reads them. Measure again when a kernel changes.
+  // `build/bench/bench_force_costs` (bench/notes/performance.md, "Every force kind against the
+  // springs"); only the run-time estimate (step_cost.hpp) reads them. Measure again when a kernel
+  // changes.
   double ns_per_item;
   double ns_per_item_yielding;
 

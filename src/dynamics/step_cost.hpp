@@ -26,6 +26,22 @@ struct StepCost {
   double seconds = 0.0;    // a step on `threads` threads, s
 };
 
+// Where each force kind adds its share (force_kind.hpp): `items` it loops over, at `ns_each` on one
+// thread; a kind with none adds nothing.
+class StepCostSink {
+ public:
+  explicit StepCostSink(StepCost& cost) : cost_(cost) {}
+  void add(const char* kind, double items, double ns_each) {
+    if (items > 0) {
+      cost_.parts.push_back({kind, items, items * ns_each});
+      cost_.serial_ns += items * ns_each;
+    }
+  }
+
+ private:
+  StepCost& cost_;
+};
+
 // The cost of a step of `model` on `threads` threads. The spring, node and drag loops are split
 // between the threads where the model is large enough for that to pay (the step's own rule), at
 // the efficiency bench_threads measures on two idle cores; contact between objects is counted at

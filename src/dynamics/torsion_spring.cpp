@@ -52,7 +52,6 @@ double torsion_spring_energy(const Model& model, const State& state, SpringEnerg
 
 const SpringKind kTorsionSprings{
     .built = &kTorsionSpringModel,
-    .switched = &ForceSwitches::torsion,
     .add_forces = add_torsion_spring_forces,
     .energy = torsion_spring_energy,
     .add_stiffness = add_torsion_spring_stiffness,

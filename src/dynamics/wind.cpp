@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/geometry.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/vector_lanes.hpp"
 #include "dynamics/wind_field.hpp"
@@ -212,5 +213,54 @@ void add_wind_forces(ForceContext& context) {
     }
   }
 }
+
+// Nanoseconds per item on one thread (bench_force_costs; step_cost.hpp).
+constexpr double kNsPerWindFace = 15.1;
+constexpr double kNsPerWindFaceTurbulent = 25.3;
+constexpr double kNsPerWindBar = 10.1;  // a bare bar in the wind
+constexpr double kNsPerWindBarTurbulent = 17.6;
+
+// The wind's drag: a load that depends on the motion, found per face and bar before the nodes'
+// totals are cleared, then added node by node.
+const ForceKind kWind{
+    .label = "wind",
+    .spring = nullptr,
+    .role = ForceRole::kLoad,
+    .implicit = ImplicitTreatment::kLoadAtStart,
+    .switched = &ForceSwitches::wind,
+    .present = [](const Model& model) { return model.wind.field.enabled; },
+    .prepare_forces = compute_wind_drag,
+    .add_forces =
+        [](ForceContext& total, const StepOptions&) {
+          ForceContext booked = booked_in(total, &EnergyWorkspace::wind);
+          add_wind_forces(booked);
+        },
+    .add_forces_after_team = nullptr,
+    .add_potential = nullptr,
+    .add_stiffness = nullptr,
+    .report_energy = nullptr,
+    .ledger = {{&EnergyWorkspace::wind, &EnergyAccounts::wind_work}},
+    // Each face's and bar's drag, and the wind at each node where it is turbulent.
+    .prepare_state = prepare_wind,
+    .state_bytes = [](const Model& model, bool) -> std::uint64_t {
+      if (!model.wind.field.enabled) {
+        return 0;
+      }
+      const bool turbulent = model.wind.field.turbulence != 0.0;
+      return (model.wind.faces.size() + model.wind.bars.size()) * sizeof(Vec3) +
+             (turbulent ? static_cast<std::uint64_t>(model.node_count()) * sizeof(Vec3) : 0);
+    },
+    .add_cost =
+        [](const Model& model, StepCostSink& sink) {
+          if (!model.wind.field.enabled) {
+            return;
+          }
+          const bool turbulent = model.wind.field.turbulence != 0.0;
+          sink.add("wind on faces", static_cast<double>(model.wind.faces.size()),
+                   turbulent ? kNsPerWindFaceTurbulent : kNsPerWindFace);
+          sink.add("wind on bars", static_cast<double>(model.wind.bars.size()),
+                   turbulent ? kNsPerWindBarTurbulent : kNsPerWindBar);
+        },
+};
 
 }  // namespace dinam

@@ -12,13 +12,17 @@ EnergyAccounts implicit_step_accounts(const ImplicitStepEnds& ends) {
   const Eigen::VectorXd jump = ends.v_end - ends.v_base;       // v_{n+1} − v_b
   EnergyAccounts step;
   step.damping_work = ends.damper_force.dot(move);
-  step.field_work = ends.field_force.dot(move);
-  step.wind_work = ends.wind_force.dot(move);
+  for (const ImplicitStepEnds::Load& load : ends.loads) {
+    step.*load.work += load.force.dot(move);
+  }
   // The friction springs are part of P within the step and start afresh at the next: what they
   // gained over the step is what friction took.
   step.friction_work = ends.friction_start - ends.friction_end;
   step.support_work = ends.support_work;
-  const Eigen::VectorXd outside = ends.damper_force + ends.field_force + ends.wind_force;
+  Eigen::VectorXd outside = ends.damper_force;
+  for (const ImplicitStepEnds::Load& load : ends.loads) {
+    outside += load.force;
+  }
   step.numerical_dissipation = free_kinetic_energy(ends.mass, ends.v_start) -
                                free_kinetic_energy(ends.mass, ends.v_base) +
                                free_kinetic_energy(ends.mass, jump) + ends.potential_start -

@@ -25,6 +25,7 @@
 // quadrature, is booked as support work, and N takes the dot product over the pinned nodes as
 // well as the free ones (backward Euler's N is then still the whole Bregman divergence of P).
 #include <Eigen/Dense>
+#include <vector>
 
 #include "dynamics/state.hpp"
 
@@ -33,18 +34,24 @@ namespace dinam {
 // One step's ends, over the free degrees of freedom (pinned nodes neither move by the step's
 // forces nor count in the kinetic energy).
 struct ImplicitStepEnds {
-  Eigen::VectorXd mass;                     // kg
-  Eigen::VectorXd x_start, v_start;         // x_n, v_n
-  Eigen::VectorXd x_base, v_base;           // x_b, v_b
-  Eigen::VectorXd x_end, v_end;             // x_{n+1}, v_{n+1}
-  Eigen::VectorXd potential_force;          // N, F_P at x_{n+1}
-  Eigen::VectorXd damper_force;             // N, F_d at v_{n+1}
-  Eigen::VectorXd field_force, wind_force;  // N, over the step
-  double potential_start = 0.0;             // J, P(x_n), the step's friction springs included
-  double potential_end = 0.0;               // J, P(x_{n+1})
-  double friction_start = 0.0;              // J, the friction springs' share of P(x_n)
-  double friction_end = 0.0;                // J, and of P(x_{n+1})
-  double support_work = 0.0;                // J, S: the moving supports' (0 where none moves)
+  Eigen::VectorXd mass;              // kg
+  Eigen::VectorXd x_start, v_start;  // x_n, v_n
+  Eigen::VectorXd x_base, v_base;    // x_b, v_b
+  Eigen::VectorXd x_end, v_end;      // x_{n+1}, v_{n+1}
+  Eigen::VectorXd potential_force;   // N, F_P at x_{n+1}
+  Eigen::VectorXd damper_force;      // N, F_d at v_{n+1}
+  // N, each load's forces over the step (the fields', the wind's), and the account of the
+  // energy ledger its work is booked on.
+  struct Load {
+    double EnergyAccounts::*work;
+    Eigen::VectorXd force;
+  };
+  std::vector<Load> loads;
+  double potential_start = 0.0;  // J, P(x_n), the step's friction springs included
+  double potential_end = 0.0;    // J, P(x_{n+1})
+  double friction_start = 0.0;   // J, the friction springs' share of P(x_n)
+  double friction_end = 0.0;     // J, and of P(x_{n+1})
+  double support_work = 0.0;     // J, S: the moving supports' (0 where none moves)
 };
 
 // The works and the numerical dissipation of the step (the plastic flow's is booked with the new

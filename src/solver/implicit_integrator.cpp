@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <tuple>
@@ -11,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/stop_request.hpp"
 #include "dynamics/energy.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/tearing.hpp"
 #include "model/model.hpp"
@@ -35,31 +37,21 @@ constexpr int kErrorSplits = 5;
 // Sub-steps taken at a level of splitting before a sub-step twice as long is tried again.
 constexpr int kTakenBeforeLonger = 2;
 
-// The forces that derive from V: springs, gravity and the ground's normal penalty. The friction
-// anchors are not updated (compute_static_forces), and no node is marked touching, so no stick
-// spring acts. Contact between objects is ImplicitObjectContact's, outside the switches.
+// The forces that derive from V: springs, gravity and the ground's normal penalty
+// (force_kinds.hpp). The friction anchors are not updated (compute_static_forces), and no node is
+// marked touching, so no stick spring acts. Contact between objects is ImplicitObjectContact's,
+// outside the switches.
 ForceSwitches potential_switches() {
-  ForceSwitches s;
-  s.fields = false;
-  s.wind = false;
-  s.axial_dampers = false;
-  s.global_damping = false;
-  s.object_contact = false;
-  return s;
+  return switches_treated_as(ImplicitTreatment::kInPotential);
 }
 
-// The forces outside the potential, one kind at a time: the fields (taken at t_{n+1}) and the
-// wind (at x_n, v_n).
-ForceSwitches only_fields() {
-  ForceSwitches s = ForceSwitches::none();
-  s.fields = true;
-  return s;
-}
-
-ForceSwitches only_wind() {
-  ForceSwitches s = ForceSwitches::none();
-  s.wind = true;
-  return s;
+// The springs alone, whose plastic sets a step's end moves on.
+ForceSwitches spring_switches() {
+  ForceSwitches switches = ForceSwitches::none();
+  for (const ForceKind* kind : kForceKinds) {
+    switches.*kind->switched = kind->spring != nullptr;
+  }
+  return switches;
 }
 
 double median_bar(const Model& model) {
@@ -128,7 +120,9 @@ struct ImplicitIntegrator::Workspace {
   double envelope = 0.0;   // m, the most a node of contact between objects may move in a step
   bool any_yield = false;  // some spring can flow
   std::vector<Vec3> x_start, v_start, predicted, explicit_force, accel_before;
-  std::vector<Vec3> field_force, wind_force;  // the parts of explicit_force, for the energy ledger
+  // The parts of explicit_force, load by load in the order of kForceKinds (empty for the other
+  // kinds), for the energy ledger.
+  std::array<std::vector<Vec3>, kForceKinds.size()> load_forces;
   bool have_accel = false;
   // BDF2's history: x_{n−1} and v_{n−1}, from the last step taken, of `before_h` (0: none).
   std::vector<Vec3> x_before, v_before;
@@ -211,28 +205,28 @@ struct ImplicitIntegrator::Workspace {
     }
   }
 
-  // 3. The forces outside the potential: the fields, which depend on the time alone, at t_{n+1},
-  // as the scheme takes every force (taken at t_n they lagged a ramped load by a whole step); the
-  // wind, which depends on the velocities, at (x_n, v_n).
+  // 3. The forces outside the potential, load by load (force_kinds.hpp): one of the time alone
+  // (the fields) at t_{n+1}, as the scheme takes every force (taken at t_n they lagged a ramped
+  // load by a whole step); one that depends on the velocities (the wind) at (x_n, v_n). While the
+  // energy is tracked each load's own forces are kept for its work.
   void take_loads(const Model& model, State& state) {
     const std::size_t n = state.x.size();
+    explicit_force.assign(n, Vec3::Zero());
     state.dt = 0.0;
     const double t_start = state.time;
-    state.time = t_next;
-    compute_forces(model, only_fields(), state);
-    state.time = t_start;
-    explicit_force = state.force;
-    if (state.energy_workspace.enabled) {
-      field_force = state.force;
-      wind_force.assign(n, Vec3::Zero());
-    }
-    if (!model.wind.faces.empty() || !model.wind.bars.empty()) {
-      compute_forces(model, only_wind(), state);
+    for (std::size_t k = 0; k < kForceKinds.size(); ++k) {
+      const ForceKind& kind = *kForceKinds[k];
+      if (kind.role != ForceRole::kLoad || !kind.acts_in(model, ForceSwitches{})) {
+        continue;
+      }
+      state.time = kind.implicit == ImplicitTreatment::kLoadAtEnd ? t_next : t_start;
+      compute_forces(model, only(kind), state);
+      state.time = t_start;
       for (std::size_t i = 0; i < n; ++i) {
         explicit_force[i] += state.force[i];
       }
       if (state.energy_workspace.enabled) {
-        wind_force = state.force;
+        load_forces[k] = state.force;
       }
     }
   }
@@ -362,8 +356,11 @@ struct ImplicitIntegrator::Workspace {
     measured.v_end = moved / hs;
     measured.damper_force = -(potential.alpha / hs) * mass.cwiseProduct(moved) -
                             potential.damping * moved + potential.pinned_damping;
-    measured.field_force = free_part(dofs, field_force);
-    measured.wind_force = free_part(dofs, wind_force);
+    for (std::size_t k = 0; k < kForceKinds.size(); ++k) {
+      if (!load_forces[k].empty()) {
+        measured.loads.push_back({kForceKinds[k]->ledger[0].work, free_part(dofs, load_forces[k])});
+      }
+    }
     return ends;
   }
 
@@ -418,10 +415,8 @@ struct ImplicitIntegrator::Workspace {
     friction.finish_step(model, state);
     objects.finish_step(model, h, state);
     if (any_yield) {
-      ForceSwitches springs = potential_switches();
-      springs.gravity = springs.ground = false;
       const std::vector<Vec3> velocities = state.v_half;
-      compute_forces(model, springs, state, true);
+      compute_forces(model, spring_switches(), state, true);
       state.v_half = velocities;
     }
   }
@@ -452,8 +447,8 @@ ImplicitIntegrator::ImplicitIntegrator(const Model& model)
   work_->mass = free_masses(model, work_->dofs);
   work_->bar = median_bar(model);
   work_->envelope = contact_envelope(model);
-  work_->any_yield =
-      model.bars_yield || model.bends_yield || model.torsions_yield || model.clamps_yield;
+  work_->any_yield = std::any_of(kSpringKinds.begin(), kSpringKinds.end(),
+                                 [&](const SpringKind* kind) { return kind->yields(model); });
 }
 
 ImplicitIntegrator::~ImplicitIntegrator() = default;

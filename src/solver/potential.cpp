@@ -1,9 +1,6 @@
 #include "solver/potential.hpp"
 
-#include <cmath>
-
-#include "dynamics/ground_contact.hpp"
-#include "dynamics/spring_kinds.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -11,24 +8,11 @@ namespace dinam {
 Potential potential_energy(const Model& model, const State& state, const ForceSwitches& switches,
                            const std::vector<Vec3>& gravity_origin, SpringEnergy springs) {
   Potential potential;
-  auto add = [&](double term) {
-    potential.energy += term;
-    potential.magnitude += std::abs(term);
-  };
-  for (const SpringKind* kind : kSpringKinds) {
-    if (switches.*kind->switched) {
-      add(kind->energy(model, state, springs));
+  const PotentialQuery query{gravity_origin, springs};
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->add_potential != nullptr && switches.*kind->switched) {
+      kind->add_potential(model, state, query, potential);
     }
-  }
-  if (switches.gravity) {
-    for (Index i = 0; i < model.node_count(); ++i) {
-      if (!model.pinned(i)) {
-        add(-model.node_mass[i] * model.gravity.dot(state.x[i] - gravity_origin[i]));
-      }
-    }
-  }
-  if (switches.ground) {
-    add(ground_contact_energy(model, state));
   }
   return potential;
 }

@@ -1,20 +1,14 @@
 #pragma once
 // The total potential energy that Newton's method minimises: what the forces of a static problem
 // derive from.
-#include "dynamics/integrator.hpp"
+#include "dynamics/force_kind.hpp"
+#include "dynamics/force_switches.hpp"
 #include "dynamics/spring_kind.hpp"
 #include "dynamics/state.hpp"
 
 namespace dinam {
 
 struct Model;
-
-struct Potential {
-  double energy = 0.0;  // J: springs + gravity's −Σ m g·x + the ground's ½ k d², free nodes
-  // J: the sum of its terms' magnitudes, the scale of its rounding error (about 1e-16 of it):
-  // two energies nearer than that cannot tell which configuration is lower.
-  double magnitude = 0.0;
-};
 
 // At state.x, with the plastic sets and broken springs as the state holds them, from every
 // spring kind `switches` leaves on, gravity and the ground's normal penalty (not friction, whose

@@ -162,16 +162,10 @@ class PatternSink final : public StiffnessSink {
 // Hands every element of the kinds `switches` leaves on to `sink`.
 void add_elements(const Model& model, const State& state, const ForceSwitches& switches,
                   StiffnessSink& sink) {
-  for (const SpringKind* kind : kSpringKinds) {
-    if (switches.*kind->switched) {
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->add_stiffness != nullptr && switches.*kind->switched) {
       kind->add_stiffness(model, state, sink);
     }
-  }
-  if (switches.ground) {
-    add_ground_contact_stiffness(model, state, sink);
-  }
-  if (switches.object_contact) {
-    add_object_contact_stiffness(model, state, sink);
   }
 }
 

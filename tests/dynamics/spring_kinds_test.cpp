@@ -12,6 +12,7 @@
 #include <random>
 
 #include "dynamics/energy.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/perturbed_lattice.hpp"
 #include "model/model.hpp"
@@ -23,9 +24,7 @@ namespace {
 using test::perturbed_lattice;
 
 ForceSwitches only(const SpringKind& kind) {
-  ForceSwitches switches = test::nothing_on();
-  switches.*kind.switched = true;
-  return switches;
+  return only(force_kind_of(kind));
 }
 
 // The model stage lists the same kinds in the same order (the stability bound sums their terms in
