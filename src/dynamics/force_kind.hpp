@@ -37,7 +37,7 @@ enum class ForceRole {
 enum class ImplicitTreatment {
   kInPotential,  // a term of the step's potential: its forces and stiffness at every iterate
   kLoadAtEnd,    // a load of the time alone, taken at t_{n+1}
-  kLoadAtStart,  // a load that depends on the motion, taken at (x_n, v_n)
+  kLoadAtStart,  // a force that depends on the motion, taken at (x_n, v_n) as a load (lagged)
   kDamper,       // linear in the velocities: its Hessian at x_n (solver/implicit_dampers.hpp)
   kOwnContact,   // contact between objects: its penalty and lagged friction
                  // (solver/implicit_object_contact.hpp), beside the potential

@@ -205,10 +205,10 @@ struct ImplicitIntegrator::Workspace {
     }
   }
 
-  // 3. The forces outside the potential, load by load (force_kinds.hpp): one of the time alone
-  // (the fields) at t_{n+1}, as the scheme takes every force (taken at t_n they lagged a ramped
-  // load by a whole step); one that depends on the velocities (the wind) at (x_n, v_n). While the
-  // energy is tracked each load's own forces are kept for its work.
+  // 3. The forces outside the potential, kind by kind (force_kinds.hpp), each taken as a load: one
+  // of the time alone (the fields) at t_{n+1}, as the scheme takes every force (taken at t_n they
+  // lagged a ramped load by a whole step); one that depends on the motion (the wind) at (x_n,
+  // v_n). While the energy is tracked each one's own forces are kept for its work.
   void take_loads(const Model& model, State& state) {
     const std::size_t n = state.x.size();
     explicit_force.assign(n, Vec3::Zero());
@@ -216,10 +216,12 @@ struct ImplicitIntegrator::Workspace {
     const double t_start = state.time;
     for (std::size_t k = 0; k < kForceKinds.size(); ++k) {
       const ForceKind& kind = *kForceKinds[k];
-      if (kind.role != ForceRole::kLoad || !kind.acts_in(model, ForceSwitches{})) {
+      const bool at_end = kind.implicit == ImplicitTreatment::kLoadAtEnd;
+      if ((!at_end && kind.implicit != ImplicitTreatment::kLoadAtStart) ||
+          !kind.acts_in(model, ForceSwitches{})) {
         continue;
       }
-      state.time = kind.implicit == ImplicitTreatment::kLoadAtEnd ? t_next : t_start;
+      state.time = at_end ? t_next : t_start;
       compute_forces(model, only(kind), state);
       state.time = t_start;
       for (std::size_t i = 0; i < n; ++i) {
