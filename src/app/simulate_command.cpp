@@ -70,6 +70,8 @@ std::vector<ObjectLook> object_looks(const SceneDescription& scene) {
     ObjectLook& look = looks.emplace_back();
     look.surface = object.style != DrawStyle::kWire;
     look.wires = object.style != DrawStyle::kSurface;
+    look.texture = look.surface ? object.texture : std::filesystem::path();
+    look.finish = object.finish;
   }
   return looks;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/look.hpp"
 #include "core/types.hpp"
 #include "scene/scene_description.hpp"
 
@@ -28,6 +29,10 @@ struct ObjectLook {
   bool wires = false;             // all its bars drawn as wires, not only those on no face
   float wire_radius = 0.0f;       // m, the radius its bars are drawn with
   Vec3f color{0.8f, 0.8f, 0.8f};  // linear RGB
+  // For the USD stage's materials alone (not kept in the manifest): the PNG its surface wears
+  // (empty for none) and how its surface takes the light.
+  std::filesystem::path texture;
+  Finish finish;
 };
 
 // One object's files, each a name inside the cache folder; pc2 or mdd is empty when that format

@@ -6,9 +6,11 @@
 #include <cerrno>
 #include <cstring>
 #include <iterator>
+#include <map>
 #include <set>
 
 #include "core/error.hpp"
+#include "core/look.hpp"
 #include "core/output_file.hpp"
 #include "core/version.hpp"
 #include "model/model.hpp"
@@ -22,10 +24,16 @@ struct UsdStageWriter::Prim {
   Index object = 0;
   Index first_node = 0;  // the object's
   Vec3f color = Vec3f::Ones();
-  std::vector<Index> nodes;          // (n_points) the model's node at each point
-  std::vector<Index> counts;         // faceVertexCounts or curveVertexCounts
-  std::vector<Index> indices;        // faceVertexIndices, into the points (meshes only)
-  std::vector<Eigen::Vector2f> uvs;  // (n_points) primvars:st; empty when the object has none
+  std::vector<Index> nodes;    // (n_points) the model's node at each point
+  std::vector<Index> counts;   // faceVertexCounts or curveVertexCounts
+  std::vector<Index> indices;  // faceVertexIndices, into the points (meshes only)
+  // primvars:st, face-varying: each distinct pair of texture coordinates once, in the order the
+  // face corners meet them, and each corner's (faceVertexIndices' order) index into them, so a
+  // seam keeps a pair on each side. Empty when the object has none.
+  std::vector<Eigen::Vector2f> uvs;
+  std::vector<Index> uv_indices;
+  std::string display_name;  // the object's own name where the prim's is not it; else empty
+  std::string texture;       // the texture's copy beside the stage, relative to it; or empty
   std::filesystem::path samples_path;
   std::FILE* samples = nullptr;
   std::vector<std::array<Vec3f, 2>> extents;  // (frames) the box of the points at each frame
@@ -40,6 +48,11 @@ struct UsdStageWriter::Prim {
 namespace {
 
 using Prim = UsdStageWriter::Prim;
+
+// The scope under /dinam that holds a Material per prim, named as the prim.
+constexpr const char* kLooksScope = "Looks";
+// The folder beside the stage that holds the textures' copies.
+constexpr const char* kTextureFolder = "textures";
 
 // The bars of one object that a BasisCurves prim draws, chained into polylines: a curve runs on
 // through every node that joins exactly two of the bars and stops at any other node, so a rope
@@ -122,10 +135,30 @@ std::string unique_name(std::string name, std::set<std::string>& taken) {
   }
 }
 
+// The object's texture coordinates at each corner of its faces, in the order `mesh` lists the
+// corners, as USD's face-varying primvar: its distinct pairs and an index per corner.
+void add_face_varying_uvs(const Model& model, Index object, Prim& mesh) {
+  std::map<std::pair<float, float>, Index> index_of;
+  for (Index f = 0; f < model.face_count(); ++f) {
+    if (model.node_object[model.face_nodes[model.face_offsets[f]]] != object) {
+      continue;
+    }
+    for (Index k = model.face_offsets[f]; k < model.face_offsets[f + 1]; ++k) {
+      // USD's v runs up the picture, the model's down.
+      const std::pair<float, float> uv{model.face_uv[k].x(), 1.0f - model.face_uv[k].y()};
+      const auto [it, added] = index_of.emplace(uv, static_cast<Index>(mesh.uvs.size()));
+      if (added) {
+        mesh.uvs.emplace_back(uv.first, uv.second);
+      }
+      mesh.uv_indices.push_back(it->second);
+    }
+  }
+}
+
 std::vector<std::unique_ptr<Prim>> make_prims(const Model& model,
                                               const std::vector<ObjectLook>& looks) {
   std::vector<std::unique_ptr<Prim>> prims;
-  std::set<std::string> taken;
+  std::set<std::string> taken{kLooksScope};
   for (std::size_t o = 0; o < model.objects.size(); ++o) {
     const ModelObject& object = model.objects[o];
     const auto id = static_cast<Index>(o);
@@ -157,11 +190,11 @@ std::vector<std::unique_ptr<Prim>> make_prims(const Model& model,
       mesh->name = unique_name(name, taken);
       for (Index i = object.first_node; i < object.first_node + object.node_count; ++i) {
         mesh->nodes.push_back(i);
-        if (object.has_uvs) {
-          // USD's v runs up the picture, the model's down.
-          mesh->uvs.emplace_back(model.node_uv[i].x(), 1.0f - model.node_uv[i].y());
-        }
       }
+      if (object.has_uvs && !model.face_uv.empty()) {
+        add_face_varying_uvs(model, id, *mesh);
+      }
+      mesh->display_name = mesh->name == object.name ? "" : object.name;
       prims.push_back(std::move(mesh));
     }
     if (!wires.empty()) {
@@ -170,8 +203,10 @@ std::vector<std::unique_ptr<Prim>> make_prims(const Model& model,
       curves->object = id;
       curves->first_node = object.first_node;
       curves->color = object.color;
-      curves->name =
-          unique_name(prims.empty() || prims.back()->object != id ? name : name + "_wires", taken);
+      const bool alone = prims.empty() || prims.back()->object != id;
+      curves->name = unique_name(alone ? name : name + "_wires", taken);
+      const std::string shown = alone ? object.name : object.name + " wires";
+      curves->display_name = curves->name == shown ? "" : shown;
       for (const std::vector<Index>& curve : chain_bars(model, wires)) {
         curves->counts.push_back(static_cast<Index>(curve.size()));
         curves->nodes.insert(curves->nodes.end(), curve.begin(), curve.end());
@@ -210,6 +245,58 @@ void write_text(std::FILE* out, const fmt::memory_buffer& text, const std::files
   }
 }
 
+// A string as USD's text form quotes it.
+std::string usd_string(const std::string& value) {
+  std::string quoted;
+  for (const char c : value) {
+    if (c == '"' || c == '\\') {
+      quoted.push_back('\\');
+    }
+    quoted.push_back(c == '\n' ? ' ' : c);
+  }
+  return quoted;
+}
+
+// The prim's Material: a UsdPreviewSurface of the object's colour, or of its texture's where it
+// wears one (read through the mesh's st), with its finish's roughness and metalness; what
+// Houdini, Maya, usdview and Omniverse show without dinam's renderer.
+void append_material(fmt::memory_buffer& text, const Prim& prim, const Finish& finish) {
+  auto put = [&]<typename... Args>(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(std::back_inserter(text), format, std::forward<Args>(args)...);
+  };
+  const std::string path = fmt::format("/dinam/{}/{}", kLooksScope, prim.name);
+  put("        def Material \"{}\"\n        {{\n"
+      "            token outputs:surface.connect = <{}/surface.outputs:surface>\n\n"
+      "            def Shader \"surface\"\n            {{\n"
+      "                uniform token info:id = \"UsdPreviewSurface\"\n",
+      prim.name, path);
+  if (prim.texture.empty()) {
+    put("                color3f inputs:diffuseColor = ({}, {}, {})\n", prim.color.x(),
+        prim.color.y(), prim.color.z());
+  } else {
+    put("                color3f inputs:diffuseColor.connect = <{}/texture.outputs:rgb>\n", path);
+  }
+  put("                float inputs:roughness = {}\n                float inputs:metallic = {}\n"
+      "                token outputs:surface\n            }}\n",
+      finish.roughness, finish.metallic);
+  if (!prim.texture.empty()) {
+    put("\n            def Shader \"texture\"\n            {{\n"
+        "                uniform token info:id = \"UsdUVTexture\"\n"
+        "                asset inputs:file = @{}@\n"
+        "                token inputs:sourceColorSpace = \"sRGB\"\n"
+        "                token inputs:wrapS = \"repeat\"\n"
+        "                token inputs:wrapT = \"repeat\"\n"
+        "                float2 inputs:st.connect = <{}/st.outputs:result>\n"
+        "                float3 outputs:rgb\n            }}\n\n"
+        "            def Shader \"st\"\n            {{\n"
+        "                uniform token info:id = \"UsdPrimvarReader_float2\"\n"
+        "                string inputs:varname = \"st\"\n"
+        "                float2 outputs:result\n            }}\n",
+        prim.texture, path);
+  }
+  put("        }}\n");
+}
+
 }  // namespace
 
 std::string usd_prim_name(const std::string& object_name) {
@@ -235,6 +322,20 @@ UsdStageWriter::UsdStageWriter(std::filesystem::path folder, std::string file_na
       prims_(make_prims(model, looks)) {
   for (std::size_t p = 0; p < prims_.size(); ++p) {
     Prim& prim = *prims_[p];
+    const std::filesystem::path& texture = looks[static_cast<std::size_t>(prim.object)].texture;
+    if (prim.kind == Prim::Kind::kMesh && !texture.empty()) {
+      // A copy beside the stage, so that the cache folder carries its look wherever it goes.
+      prim.texture =
+          fmt::format("{}/{}{}", kTextureFolder, prim.name, texture.extension().string());
+      std::error_code ec;
+      std::filesystem::create_directories(folder_ / kTextureFolder, ec);
+      if (ec ||
+          !std::filesystem::copy_file(texture, folder_ / prim.texture,
+                                      std::filesystem::copy_options::overwrite_existing, ec)) {
+        throw WriteError(fmt::format("cannot copy the texture {} beside the USD stage: {}",
+                                     texture.string(), ec.message()));
+      }
+    }
     prim.samples_path = folder_ / fmt::format(".{}.{}.samples", file_name_, p);
     prim.samples = std::fopen(prim.samples_path.c_str(), "wbx");
     if (prim.samples == nullptr) {
@@ -285,7 +386,12 @@ void UsdStageWriter::write(const std::vector<ObjectLook>& looks) {
   for (const std::unique_ptr<Prim>& prim : prims_) {
     const bool mesh = prim->kind == Prim::Kind::kMesh;
     const ObjectLook& look = looks[static_cast<std::size_t>(prim->object)];
-    put("    def {} \"{}\"\n    {{\n", mesh ? "Mesh" : "BasisCurves", prim->name);
+    put("    def {} \"{}\" (\n        prepend apiSchemas = [\"MaterialBindingAPI\"]\n",
+        mesh ? "Mesh" : "BasisCurves", prim->name);
+    if (!prim->display_name.empty()) {
+      put("        displayName = \"{}\"\n", usd_string(prim->display_name));
+    }
+    put("    )\n    {{\n        rel material:binding = </dinam/{}/{}>\n", kLooksScope, prim->name);
     const auto put_int = [&](Index v) { put("{}", v); };
     if (mesh) {
       put("        uniform token subdivisionScheme = \"none\"\n        int[] faceVertexCounts = ");
@@ -297,7 +403,10 @@ void UsdStageWriter::write(const std::vector<ObjectLook>& looks) {
         put("        texCoord2f[] primvars:st = ");
         append_array(text, prim->uvs,
                      [&](const Eigen::Vector2f& uv) { put("({}, {})", uv.x(), uv.y()); });
-        put(" (\n            interpolation = \"vertex\"\n        )\n");
+        put(" (\n            interpolation = \"faceVarying\"\n        )\n"
+            "        int[] primvars:st:indices = ");
+        append_array(text, prim->uv_indices, put_int);
+        put("\n");
       }
     } else {
       put("        uniform token type = \"linear\"\n        int[] curveVertexCounts = ");
@@ -345,7 +454,11 @@ void UsdStageWriter::write(const std::vector<ObjectLook>& looks) {
     std::filesystem::remove(prim->samples_path);
     put("        }}\n    }}\n");
   }
-  put("}}\n");
+  put("    def Scope \"{}\"\n    {{\n", kLooksScope);
+  for (const std::unique_ptr<Prim>& prim : prims_) {
+    append_material(text, *prim, looks[static_cast<std::size_t>(prim->object)].finish);
+  }
+  put("    }}\n}}\n");
   write_text(out, text, file.temporary_path());
   file.commit();
 }

@@ -2,13 +2,17 @@
 // The motion as a USD stage in its text form (.usda), for Houdini, Maya, Omniverse and Blender
 // builds with USD: one prim per object under /dinam, its points sampled at every frame.
 //  - An object drawn as a surface is a Mesh of its faces (no subdivision), with its texture
-//    coordinates as primvars:st; its bars on no face (a flag's ropes) are a BasisCurves prim
-//    beside it, "<name>_wires".
+//    coordinates as face-varying primvars:st with indices (a UV seam keeps a pair on each side);
+//    its bars on no face (a flag's ropes) are a BasisCurves prim beside it, "<name>_wires".
 //  - An object drawn as wires is a BasisCurves prim of all its bars, linear, with the width it is
 //    drawn with (style `both`: the Mesh and the BasisCurves of all bars). Bars are chained into
 //    polylines where a node joins exactly two of them; each curve vertex names its node in
 //    `primvars:dinam:node` (the object's vertex id, as in its OBJ and point caches), since a node
 //    where curves meet is a vertex of each.
+//  - Every prim is bound to a Material of its own under /dinam/Looks: a UsdPreviewSurface of the
+//    object's colour, or of its texture (copied beside the stage, textures/<prim>.png, and
+//    referenced relatively), with its finish's roughness and metalness. A prim whose name is not
+//    the object's keeps the object's as its displayName.
 //  - Time code k is frame k (1-based), at timeCodesPerSecond = the scene's fps; Z up, metres.
 // Points are float32 and written so that they read back as the same values as the point caches.
 // A bar that breaks (tearing) stays in the stage: USD's topology here does not change in time.
@@ -31,9 +35,9 @@ struct Model;
 
 class UsdStageWriter {
  public:
-  // Opens the sample files in `folder` (the cache's temporary folder). `looks` holds how the
-  // scene draws each object, which decides its prims; their radii may still be 0 here (they are
-  // given to write()).
+  // Opens the sample files in `folder` (the cache's temporary folder) and copies the objects'
+  // textures there. `looks` holds how the scene draws each object, which decides its prims; their
+  // radii may still be 0 here (they are given to write()).
   UsdStageWriter(std::filesystem::path folder, std::string file_name, const Model& model,
                  const std::vector<ObjectLook>& looks, double fps, int frame_count);
   ~UsdStageWriter();
