@@ -1,9 +1,11 @@
 """dinam in Blender: simulate the selected meshes as flexible structures and play the motion.
 
 The panel (3D View > Sidebar > dinam) takes the selected mesh objects, a material (a preset or its
-values), pins from a vertex group, gravity and wind; Simulate writes each object as OBJ and a scene
-file, runs `dinam simulate` on them as a separate program (a progress bar and a Cancel button while
-it runs; Esc cancels too), and gives each object a Mesh Cache modifier on its point cache. The
+values), pins from a vertex group (each object may have its own material and pins, in the panel's
+"This object" box), gravity and wind; Estimate asks `dinam info` how long and how much memory a run
+would take; Simulate writes each object as OBJ and a scene file, says dinam's estimate, runs
+`dinam simulate` on them as a separate program (a progress bar and a Cancel button while it runs;
+Esc cancels too), and gives each object a Mesh Cache modifier on its point cache. The
 frames are the scene's: its frame range at its frame rate.
 """
 import os
@@ -73,10 +75,16 @@ class DinamSettings(bpy.types.PropertyGroup):
     cancel_requested: bpy.props.BoolProperty(default=False)
 
 
-class Simulation:
-    """One run: the files written, dinam running, and the objects to attach it to."""
+def pin_group_of(obj, settings):
+    """The vertex group that pins `obj`: its own (Object properties), else the panel's."""
+    return obj.dinam_pin_group or settings.pin_group
 
-    def __init__(self, context):
+
+class Simulation:
+    """One run: the files written, dinam running (its estimate first), and the objects to attach
+    its motion to; with `simulate` False, the estimate alone."""
+
+    def __init__(self, context, simulate=True):
         settings = context.scene.dinam
         self.objects = [o for o in context.selected_objects if o.type == "MESH"]
         if not self.objects:
@@ -97,13 +105,15 @@ class Simulation:
         self.notes = []  # what to say before dinam runs
         for obj in self.objects:
             scene_export.check_mesh(obj)
-        if settings.pin_group:
-            for obj in self.objects:
-                if obj.vertex_groups.get(settings.pin_group) is None:
-                    raise scene_export.ExportError(
-                        f"'{obj.name}' has no vertex group '{settings.pin_group}' (its groups: "
-                        f"{', '.join(g.name for g in obj.vertex_groups) or 'none'}): choose the "
-                        "pins' group in the panel, or clear Pins to let the object fall freely")
+        for obj in self.objects:
+            group = pin_group_of(obj, settings)
+            if group and obj.vertex_groups.get(group) is None:
+                where = ("its Object properties' dinam pins" if obj.dinam_pin_group
+                         else "the panel's Pins")
+                raise scene_export.ExportError(
+                    f"'{obj.name}' has no vertex group '{group}' (its groups: "
+                    f"{', '.join(g.name for g in obj.vertex_groups) or 'none'}): choose the "
+                    f"pins' group in {where}, or clear it to let the object fall freely")
         # Obstacles: the scene's mesh objects marked as colliders (Object properties), not
         # selected: they push and are not moved.
         self.colliders = [o for o in context.scene.objects
@@ -116,14 +126,16 @@ class Simulation:
         for obj in self.objects:
             path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
             scene_export.write_obj(obj, path)
-            pinned = scene_export.pinned_indices(obj, settings.pin_group)
+            group = pin_group_of(obj, settings)
+            pinned = scene_export.pinned_indices(obj, group)
             if not pinned:
                 self.notes.append(
                     f"'{obj.name}' has no pinned vertex"
-                    + (f" (no vertex of '{settings.pin_group}' weighs above 0.5)"
-                       if settings.pin_group else " (no Pins group chosen)")
+                    + (f" (no vertex of '{group}' weighs above 0.5)"
+                       if group else " (no Pins group chosen)")
                     + ": it falls freely")
-            described.append((obj.name, path, pinned))
+            preset = obj.dinam_preset if obj.dinam_preset in scene_export.PRESETS else None
+            described.append((obj.name, path, pinned, preset))
         scene = context.scene
         fps = scene.render.fps / scene.render.fps_base
         frames = scene.frame_end - scene.frame_start + 1
@@ -133,11 +145,16 @@ class Simulation:
         self.cache = os.path.join(folder, "cache")
         self.local = os.path.join(folder, "local")
         try:
-            self.run = dinam_run.DinamRun(program, scene_file, self.cache)
+            self.run = dinam_run.DinamRun(program, scene_file, self.cache, simulate=simulate)
         except OSError as e:  # it exists, but the system cannot run it
             raise scene_export.ExportError(
                 f"cannot run the dinam program '{program}': {e.strerror or e}; set the path of a "
                 "dinam built on this machine in the panel") from None
+
+    def estimate_lines(self):
+        """The estimate dinam gave before running, as a line for the panel (none before it has)."""
+        estimate = self.run.estimate
+        return [dinam_run.estimate_text(estimate)] if estimate is not None else []
 
     def finish(self, context, code):
         """Attaches the cache after a successful run; returns an error message or None."""
@@ -161,6 +178,7 @@ class DINAM_OT_simulate(bpy.types.Operator):
     _timer = None
     _simulation = None
     _cancelling = False
+    _estimate_shown = False
 
     @classmethod
     def poll(cls, context):
@@ -180,7 +198,8 @@ class DINAM_OT_simulate(bpy.types.Operator):
     def end(self, context, code):
         error = self._simulation.finish(context, code)
         said = [line for line in self._simulation.run.lines if line.strip()]
-        context.scene.dinam.last_report = "\n".join(self._simulation.notes + said)
+        context.scene.dinam.last_report = "\n".join(
+            self._simulation.notes + self._simulation.estimate_lines() + said)
         if error:
             self.report({"ERROR"}, error)
             return {"CANCELLED"}
@@ -206,7 +225,7 @@ class DINAM_OT_simulate(bpy.types.Operator):
             return {"CANCELLED"}
         settings = context.scene.dinam
         settings.running, settings.cancel_requested, settings.progress = True, False, 0.0
-        self._cancelling = False
+        self._cancelling = self._estimate_shown = False
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.2, window=context.window)
         wm.modal_handler_add(self)
@@ -223,6 +242,12 @@ class DINAM_OT_simulate(bpy.types.Operator):
         if event.type != "TIMER":
             return {"PASS_THROUGH"}
         code = self._simulation.run.poll()
+        if not self._estimate_shown and self._simulation.run.estimate is not None:
+            # Before the motion: how long and how much memory the run will take.
+            self._estimate_shown = True
+            line = self._simulation.estimate_lines()[0]
+            self.report({"INFO"}, "dinam " + line)
+            settings.last_report = "\n".join(self._simulation.notes + [line])
         if self._cancelling and code is not None:
             self.stop(context)
             self.report({"WARNING"}, "dinam: cancelled; the objects are as they were")
@@ -242,6 +267,35 @@ class DINAM_OT_simulate(bpy.types.Operator):
         settings.running = False
         context.window_manager.event_timer_remove(self._timer)
         context.window_manager.progress_end()
+
+
+class DINAM_OT_estimate(bpy.types.Operator):
+    """Ask dinam how long and how much memory simulating the selected meshes would take, without
+    simulating"""
+
+    bl_idname = "dinam.estimate"
+    bl_label = "Estimate"
+
+    @classmethod
+    def poll(cls, context):
+        return not context.scene.dinam.running
+
+    def execute(self, context):
+        try:
+            simulation = Simulation(context, simulate=False)
+        except scene_export.ExportError as e:
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        code = simulation.run.wait()  # `dinam info` reads the scene and estimates; no motion
+        settings = context.scene.dinam
+        if code != 0 or simulation.run.estimate is None:
+            self.report({"ERROR"}, simulation.run.message().strip() or
+                        f"dinam info stopped with exit code {code}")
+            return {"CANCELLED"}
+        lines = simulation.notes + simulation.estimate_lines()
+        settings.last_report = "\n".join(lines)
+        self.report({"INFO"}, "dinam " + simulation.estimate_lines()[0])
+        return {"FINISHED"}
 
 
 class DINAM_OT_cancel(bpy.types.Operator):
@@ -288,9 +342,17 @@ class DINAM_PT_panel(bpy.types.Panel):
         row.prop(settings, "floor")
         layout.prop(settings, "self_contact")
         layout.prop(settings, "settle")
-        if obj is not None and obj.type == "MESH":
-            layout.prop(obj, "dinam_collider")
         layout.prop(settings, "collider_radius")
+        if obj is not None and obj.type == "MESH":
+            box = layout.box()
+            box.label(text=f"This object: {obj.name}")
+            box.prop(obj, "dinam_collider")
+            row = box.row()
+            row.enabled = not obj.dinam_collider
+            row.prop(obj, "dinam_preset")
+            row = box.row()
+            row.enabled = not obj.dinam_collider
+            row.prop_search(obj, "dinam_pin_group", obj, "vertex_groups")
         if settings.last_report and not settings.running:
             box = layout.box()
             box.label(text="Last run:")
@@ -302,10 +364,12 @@ class DINAM_PT_panel(bpy.types.Panel):
             row.prop(settings, "progress", slider=True)
             layout.operator("dinam.cancel", icon="CANCEL")
         else:
-            layout.operator("dinam.simulate", icon="PHYSICS")
+            row = layout.row()
+            row.operator("dinam.estimate", icon="TIME")
+            row.operator("dinam.simulate", icon="PHYSICS")
 
 
-CLASSES = (DinamSettings, DINAM_OT_simulate, DINAM_OT_cancel, DINAM_PT_panel)
+CLASSES = (DinamSettings, DINAM_OT_simulate, DINAM_OT_estimate, DINAM_OT_cancel, DINAM_PT_panel)
 
 
 def register():
@@ -315,9 +379,21 @@ def register():
     bpy.types.Object.dinam_collider = bpy.props.BoolProperty(
         name="dinam collider", default=False,
         description="An obstacle for dinam's simulations: pushes the simulated objects, never moves")
+    # Each simulated object may have a material and pins of its own (a cape of denim pinned at its
+    # collar beside a flag of cotton pinned at its hoist); empty, the panel's.
+    bpy.types.Object.dinam_preset = bpy.props.EnumProperty(
+        name="dinam material",
+        items=[("PANEL", "Panel's", "The material chosen in the dinam panel")] +
+              [(key, v[0], v[1]) for key, v in scene_export.PRESETS.items()],
+        default="PANEL")
+    bpy.types.Object.dinam_pin_group = bpy.props.StringProperty(
+        name="dinam pins",
+        description="This object's vertex group whose vertices never move; empty: the panel's Pins")
 
 
 def unregister():
+    del bpy.types.Object.dinam_pin_group
+    del bpy.types.Object.dinam_preset
     del bpy.types.Object.dinam_collider
     del bpy.types.Scene.dinam
     for cls in reversed(CLASSES):

@@ -30,8 +30,11 @@ PRESETS = {
 }
 
 
-def material_text(settings):
-    """The object's `material` map: the chosen preset, or the panel's own values."""
+def material_text(settings, preset=None):
+    """An object's `material` map: its own preset (`preset`, one of PRESETS), else the panel's
+    preset, or the panel's own values."""
+    if preset in PRESETS:
+        return f"{{preset: {preset}}}"
     if settings.preset in PRESETS:
         return f"{{preset: {settings.preset}}}"
     return (f"{{density: {settings.density!r}, youngs_modulus: {settings.youngs_modulus!r}, "
@@ -119,9 +122,9 @@ def ground_height(settings):
 
 
 def scene_text(settings, objects, frame_count, fps, colliders=()):
-    """The scene file for `objects` (each (name, obj file, pinned indices)) and `colliders` (each
-    (name, obj file): obstacles that push and are not moved); JSON's quoted strings are YAML's
-    too."""
+    """The scene file for `objects` (each (name, obj file, pinned indices, its own preset or
+    None for the panel's)) and `colliders` (each (name, obj file): obstacles that push and are not
+    moved); JSON's quoted strings are YAML's too."""
     lines = [
         "# Written by the dinam Blender add-on.",
         "version: 1",
@@ -147,11 +150,11 @@ def scene_text(settings, objects, frame_count, fps, colliders=()):
     if colliders or settings.self_contact:
         lines.append(f"contact: {{objects: true, self: {'true' if settings.self_contact else 'false'}}}")
     lines.append("objects:")
-    for name, obj_file, pins in objects:
+    for name, obj_file, pins, preset in objects:
         lines += [
             f"  - name: {json.dumps(name)}",
             f"    mesh: {{file: {json.dumps(os.path.basename(obj_file))}, up_axis: z}}",
-            f"    material: {material_text(settings)}",
+            f"    material: {material_text(settings, preset)}",
         ]
         if settings.damping_ratio > 0:
             lines.append(f"    damping: {{axial_ratio: {settings.damping_ratio!r}}}")

@@ -16,7 +16,10 @@
 #     unsaved file's relative folder; says that a run with no pins falls freely; drops a square
 #     onto a raised ground, a chosen floor object and a collider, and finds it resting on each;
 #  6. runs dinam as the panel does, its progress read from dinam's stderr up to 100 %, and cancels
-#     a long run: dinam stops (exit 143, SIGTERM) and the cache of step 3 is as it was.
+#     a long run: dinam stops (exit 143, SIGTERM) and the cache of step 3 is as it was;
+#  7. gives a second object a material and pins of its own, estimates (dinam info) without
+#     simulating, then simulates both and finds each with its own preset and pins; refuses a
+#     missing own pin group, and says what dinam refuses when estimating.
 # The panel's own loop (a modal operator on a timer) needs Blender's interface, which a headless
 # Blender does not run; it calls what steps 3 and 6 check.
 # Prints "addon: PASS"; raises otherwise.
@@ -242,4 +245,63 @@ for _ in range(200):
     time.sleep(0.05)
 assert code == -9, code  # killed (SIGKILL) once the grace had passed
 print("addon: a program that ignores SIGTERM is killed after the grace period")
+
+# Each object its own material and pins: a cape of denim pinned at its collar (its own vertex
+# group, in its Object properties) beside the banner of the panel's cotton pinned by the panel's
+# group. Before the motion, dinam's estimate; Estimate alone runs no simulation.
+bpy.ops.mesh.primitive_grid_add(x_subdivisions=6, y_subdivisions=6, size=0.8,
+                                location=(-2.0, 0.0, 1.5), rotation=(1.5708, 0.0, 0.0))
+cape = bpy.context.active_object
+cape.name = "Cape"
+collar_top = max((cape.matrix_world @ v.co).z for v in cape.data.vertices)
+collar = [v.index for v in cape.data.vertices if (cape.matrix_world @ v.co).z > collar_top - 1e-6]
+cape.vertex_groups.new(name="collar").add(collar, 1.0, "REPLACE")
+cape_rest = [cape.matrix_world @ v.co for v in cape.data.vertices]
+cape.dinam_preset, cape.dinam_pin_group = "denim", "collar"
+settings.preset, settings.pin_group = "cotton", "pins"
+bpy.ops.object.select_all(action="DESELECT")
+banner.select_set(True)
+cape.select_set(True)
+assert bpy.ops.dinam.estimate() == {"FINISHED"}
+assert "estimate: " in settings.last_report and "to simulate" in settings.last_report and "dinam recommends integrator" in \
+    settings.last_report, settings.last_report
+assert cape.modifiers.get("dinam") is None, "Estimate simulated"
+print("addon: " + settings.last_report.splitlines()[-1])
+assert bpy.ops.dinam.simulate() == {"FINISHED"}, settings.last_report
+assert "to simulate" in settings.last_report, settings.last_report
+with open(scene_file) as f:
+    written = f.read()
+cape_entry = written[written.index('name: "Cape"'):]
+banner_entry = written[written.index('name: "Banner"'):written.index('name: "Cape"')]
+assert "material: {preset: denim}" in cape_entry, cape_entry
+assert "material: {preset: cotton}" in banner_entry, banner_entry
+assert f"pinned: {{indices: [{', '.join(str(i) for i in collar)}]}}" in cape_entry, cape_entry
+scene.frame_set(scene.frame_end)
+evaluated = cape.evaluated_get(bpy.context.evaluated_depsgraph_get())
+mesh = evaluated.to_mesh()
+cape_end = [cape.matrix_world @ v.co for v in mesh.vertices]
+evaluated.to_mesh_clear()
+collar_moved = max((cape_end[i] - cape_rest[i]).length for i in collar)
+cape_moved = max((p - q).length for p, q in zip(cape_end, cape_rest))
+print(f"addon: the cape (denim, its own collar pins) hangs: collar moved {collar_moved:.2g} m, "
+      f"the cape up to {cape_moved:.3f} m")
+assert collar_moved <= 1e-5 and cape_moved > 0.01, (collar_moved, cape_moved)
+# Its own group, missing, is refused, naming where it was chosen.
+cape.dinam_pin_group = "colar"
+try:
+    bpy.ops.dinam.simulate()
+    raise AssertionError("a missing object pin group was simulated")
+except RuntimeError as e:
+    assert "has no vertex group 'colar'" in str(e) and "Object properties" in str(e), e
+    print("addon: refused: " + str(e).strip().splitlines()[-1])
+cape.dinam_pin_group = "collar"
+# A scene dinam refuses is said by Estimate too, as dinam says it.
+settings.preset, settings.youngs_modulus = "CUSTOM", 1e30
+cape.dinam_preset = "PANEL"
+try:
+    bpy.ops.dinam.estimate()
+    raise AssertionError("an impossible material was estimated")
+except RuntimeError as e:
+    assert "youngs_modulus" in str(e), e
+    print("addon: Estimate says what dinam refuses: " + str(e).strip().splitlines()[-1][:120])
 print("addon: PASS")
