@@ -14,13 +14,16 @@ esac
 # Building the program and rendering a movie.
 packages=(
   g++ cmake make pkg-config python3
-  libeigen3-dev libassimp-dev libosmesa6-dev libgl-dev libpng-dev
+  libeigen3-dev libassimp-dev libosmesa6-dev libgl-dev libpng-dev zlib1g-dev
   libyaml-cpp-dev libcli11-dev libfmt-dev nlohmann-json3-dev libssl-dev
   # Newton's method and the natural modes: Spectra's Lanczos on Eigen's sparse matrices, and
   # SuiteSparse's CHOLMOD for large models' factorisations, its dense blocks through the
   # single-threaded OpenBLAS (src/solver/CMakeLists.txt).
   libspectra-dev libsuitesparse-dev libopenblas0-serial
   ffmpeg
+  # The page `dinam view` writes draws with three.js, which the build puts into the program:
+  # npm fetches the version web/package-lock.json pins, below.
+  npm
 )
 # The tests and benchmarks.
 $render_only || packages+=(
@@ -43,13 +46,19 @@ for p in "${packages[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-echo "install-deps: installing ${missing[*]}" >&2
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# three.js from the npm registry, at the version and checksum web/package-lock.json pins, into
+# web/node_modules (ignored by git); never fetched at build or run time.
+web="$(cd "$(dirname "$0")/.." && pwd)/web"
+if [ ! -f "$web/node_modules/three/build/three.module.min.js" ]; then
+  echo "install-deps: installing three.js (npm ci in web/)" >&2
+  npm ci --prefix "$web" --no-audit --no-fund --loglevel=error >/dev/null
+fi

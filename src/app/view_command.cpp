@@ -4,8 +4,11 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include <zlib.h>
+
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -13,6 +16,7 @@
 
 #include "app/command_line.hpp"
 #include "app/commands.hpp"
+#include "app/three_module.hpp"
 #include "app/viewer_page.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/error.hpp"
@@ -23,59 +27,112 @@ namespace {
 
 using Json = nlohmann::json;
 
-// The most frame data a page holds (float32 positions, before base64): a browser decodes a page
-// of this size in a few seconds; more is a page no one wants to open.
+// The most frame data a page holds (16-bit positions, before deflate and base64): a browser
+// decodes a page of this size in a few seconds; more is a page no one wants to open.
 constexpr std::uint64_t kMostPageBytes = 256ull << 20;
 
-// An object's faces (fanned by the page) and lines from its rest OBJ, as the cache wrote it, in
-// the ids of the whole cache's points. The file is read as untrusted: each index must be a number
-// of one of the object's `count` points, or the line is refused by its number.
-void add_elements(const std::filesystem::path& obj, Index first, Index count, Json& faces,
-                  Json& face_sizes, Json& lines) {
+// An object's faces (fanned by the page), lines and texture coordinates from its rest OBJ, as the
+// cache wrote it, in the ids of the whole cache's points. The file is read as untrusted: each
+// index must be a number of one of the object's `count` points (or of its `vt` lines), or the
+// line is refused by its number.
+struct ObjectElements {
+  Json faces = Json::array();
+  Json face_sizes = Json::array();
+  Json lines = Json::array();
+  Json uvs = Json::array();       // u, v of each `vt`, v up
+  Json face_uvs = Json::array();  // each face corner's vt, where every corner has one
+};
+
+Index parse_id(const std::filesystem::path& obj, int number, const std::string& digits, Index count,
+               const char* what) {
+  long long id = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), id);
+  if (error != std::errc() || end != digits.data() + digits.size() || id < 1 || id > count) {
+    throw UserError(FileLoc{obj.string(), number, 1},
+                    fmt::format("'{}' is not a {} of this object (1 to {}): the cache's rest mesh "
+                                "was edited or damaged; simulate again",
+                                digits, what, count));
+  }
+  return static_cast<Index>(id) - 1;
+}
+
+ObjectElements read_elements(const std::filesystem::path& obj, Index first, Index count) {
   std::ifstream in(obj);
   if (!in) {
     throw_user_error(FileLoc{obj.string()}, "cannot read the cache's rest mesh: {}",
                      std::strerror(errno));
   }
+  ObjectElements elements;
+  bool every_corner_has_uv = true;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
+    if (line.rfind("vt ", 0) == 0) {
+      std::istringstream words(line.substr(3));
+      double u = 0.0;
+      double v = 0.0;
+      if (!(words >> u >> v) || !std::isfinite(u) || !std::isfinite(v)) {
+        throw UserError(FileLoc{obj.string(), number, 1},
+                        "a texture coordinate that is not two numbers; simulate again");
+      }
+      elements.uvs.push_back(u);
+      elements.uvs.push_back(v);
+      continue;
+    }
     if (line.size() < 2 || (line[0] != 'f' && line[0] != 'l') || line[1] != ' ') {
       continue;
     }
     std::istringstream words(line.substr(2));
     std::string word;
     std::vector<Index> ids;
+    std::vector<Index> uv_ids;
     while (words >> word) {
-      const std::string digits = word.substr(0, word.find('/'));
-      long long id = 0;
-      const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), id);
-      if (error != std::errc() || end != digits.data() + digits.size() || id < 1 || id > count) {
-        throw UserError(FileLoc{obj.string(), number, 1},
-                        fmt::format("'{}' is not a point of this object (1 to {}): the cache's "
-                                    "rest mesh was edited or damaged; simulate again",
-                                    word, count));
+      const std::size_t slash = word.find('/');
+      ids.push_back(first + parse_id(obj, number, word.substr(0, slash), count, "point"));
+      if (slash != std::string::npos && slash + 1 < word.size()) {
+        const std::string uv = word.substr(slash + 1, word.find('/', slash + 1) - slash - 1);
+        uv_ids.push_back(parse_id(obj, number, uv, static_cast<Index>(elements.uvs.size() / 2),
+                                  "texture coordinate"));
       }
-      ids.push_back(first + static_cast<Index>(id) - 1);
     }
     if (ids.size() < (line[0] == 'f' ? 3u : 2u)) {
       throw UserError(FileLoc{obj.string(), number, 1},
                       "a face needs three points and a line two; simulate again");
     }
     if (line[0] == 'f') {
-      face_sizes.push_back(ids.size());
+      elements.face_sizes.push_back(ids.size());
       for (const Index id : ids) {
-        faces.push_back(id);
+        elements.faces.push_back(id);
+      }
+      every_corner_has_uv = every_corner_has_uv && uv_ids.size() == ids.size();
+      for (const Index id : uv_ids) {
+        elements.face_uvs.push_back(id);
       }
     } else {
       for (std::size_t k = 0; k + 1 < ids.size(); ++k) {
-        lines.push_back(ids[k]);
-        lines.push_back(ids[k + 1]);
+        elements.lines.push_back(ids[k]);
+        elements.lines.push_back(ids[k + 1]);
       }
     }
   }
+  if (!every_corner_has_uv) {
+    elements.face_uvs = Json::array();
+  }
+  return elements;
 }
 
-std::string base64(const unsigned char* data, std::size_t size) {
+// zlib's deflate of `size` bytes, as the browser's DecompressionStream("deflate") inflates them.
+std::string deflated(const void* data, std::size_t size) {
+  uLongf bound = compressBound(static_cast<uLong>(size));
+  std::string out(bound, '\0');
+  const int status = compress2(reinterpret_cast<Bytef*>(out.data()), &bound,
+                               static_cast<const Bytef*>(data), static_cast<uLong>(size), 9);
+  DINAM_CHECK(status == Z_OK);
+  out.resize(bound);
+  return out;
+}
+
+std::string base64(const void* bytes, std::size_t size) {
+  const auto* data = static_cast<const unsigned char*>(bytes);
   static constexpr char kDigits[] =
       "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -90,6 +147,36 @@ std::string base64(const unsigned char* data, std::size_t size) {
     out.push_back(i + 2 < size ? kDigits[chunk & 63] : '=');
   }
   return out;
+}
+
+// A texture of the cache as a data URL the page loads without the network.
+std::string texture_data_url(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    throw_user_error(FileLoc{file.string()}, "cannot read the cache's texture: {}; simulate again",
+                     std::strerror(errno));
+  }
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return "data:image/png;base64," + base64(bytes.data(), bytes.size());
+}
+
+// Where the scene's ground is, from the settings the manifest keeps (its height, 0 by default);
+// null where the scene has none shown.
+Json ground_height(const CacheManifest& manifest) {
+  double height = 0.0;
+  for (const MotionSetting& setting : manifest.motion_settings) {
+    if (setting.key == "ground.visible" && setting.value == "false") {
+      return nullptr;
+    }
+    if (setting.key == "ground.height") {
+      char* end = nullptr;
+      height = std::strtod(setting.value.c_str(), &end);
+      if (end == setting.value.c_str() || !std::isfinite(height)) {
+        height = 0.0;
+      }
+    }
+  }
+  return height;
 }
 
 void replace_once(std::string& text, std::string_view placeholder, const std::string& value) {
@@ -118,7 +205,7 @@ int run_view(const ViewOptions& options) {
     frames.push_back(frame);
   }
   const std::uint64_t bytes =
-      frames.size() * static_cast<std::uint64_t>(manifest.node_count) * 3 * sizeof(float);
+      frames.size() * static_cast<std::uint64_t>(manifest.node_count) * 3 * sizeof(std::uint16_t);
   if (bytes > kMostPageBytes) {
     throw_user_error({},
                      "the page would hold {} MB of positions ({} frames of {} points); keep "
@@ -129,30 +216,31 @@ int run_view(const ViewOptions& options) {
 
   Json objects = Json::array();
   for (const CacheObjectEntry& entry : manifest.objects) {
-    Json faces = Json::array();
-    Json face_sizes = Json::array();
-    Json lines = Json::array();
-    add_elements(cache.folder() / entry.obj, entry.first_node, entry.node_count, faces, face_sizes,
-                 lines);
+    ObjectElements elements =
+        read_elements(cache.folder() / entry.obj, entry.first_node, entry.node_count);
     if (!entry.look.surface) {  // drawn as wires only: its faces' sides are its bars
-      for (std::size_t f = 0, at = 0; f < face_sizes.size(); ++f) {
-        const std::size_t size = face_sizes[f].get<std::size_t>();
+      for (std::size_t f = 0, at = 0; f < elements.face_sizes.size(); ++f) {
+        const std::size_t size = elements.face_sizes[f].get<std::size_t>();
         for (std::size_t k = 0; k < size; ++k) {
-          lines.push_back(faces[at + k]);
-          lines.push_back(faces[at + (k + 1) % size]);
+          elements.lines.push_back(elements.faces[at + k]);
+          elements.lines.push_back(elements.faces[at + (k + 1) % size]);
         }
         at += size;
       }
-      faces = Json::array();
-      face_sizes = Json::array();
+      elements = {Json::array(), Json::array(), elements.lines, Json::array(), Json::array()};
     }
-    objects.push_back(
-        {{"name", entry.name},
-         {"color", {entry.look.color.x(), entry.look.color.y(), entry.look.color.z()}},
-         {"radius", entry.look.wire_radius},
-         {"faces", faces},
-         {"face_sizes", face_sizes},
-         {"lines", lines}});
+    Json object = {{"name", entry.name},
+                   {"color", {entry.look.color.x(), entry.look.color.y(), entry.look.color.z()}},
+                   {"radius", entry.look.wire_radius},
+                   {"faces", elements.faces},
+                   {"face_sizes", elements.face_sizes},
+                   {"lines", elements.lines},
+                   {"uvs", elements.uvs},
+                   {"face_uvs", elements.face_uvs}};
+    if (!entry.look.texture.empty() && !elements.face_uvs.empty()) {
+      object["texture"] = texture_data_url(cache.folder() / entry.look.texture);
+    }
+    objects.push_back(std::move(object));
   }
   Vec3f low = manifest.frame_bounds.front().min;
   Vec3f high = manifest.frame_bounds.front().max;
@@ -160,6 +248,11 @@ int run_view(const ViewOptions& options) {
     low = low.cwiseMin(b.min);
     high = high.cwiseMax(b.max);
   }
+  // Positions quantised to 14 bits over the motion's box: a step of 1/16 383 of its size on each
+  // axis (61 µm on a 1 m cloth), below a pixel at any distance that shows the whole motion; 16
+  // bits would make a 100 × 100 cloth's page a fifth larger for nothing one can see.
+  constexpr float kLevels = 16383.0f;
+  const Vec3f quantum = (high - low) / kLevels;
   const Json meta = {
       {"name", manifest.scene_name},
       {"fps", manifest.fps},
@@ -167,32 +260,49 @@ int run_view(const ViewOptions& options) {
       {"frames", frames},
       {"points", manifest.node_count},
       {"bounds", {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}}},
+      {"quantum",
+       {{"origin", {low.x(), low.y(), low.z()}},
+        {"step", {quantum.x(), quantum.y(), quantum.z()}}}},
+      {"ground", ground_height(manifest)},
       {"objects", objects}};
 
-  // Positions as little-endian float32, frame after frame.
-  std::vector<float> values;
-  values.reserve(bytes / sizeof(float));
+  // Each frame, coordinate by coordinate: every point's change from the frame before (the first
+  // from zero), modulo 2¹⁶, its low bytes then its high bytes. A smooth motion changes little
+  // from frame to frame, so the high bytes are mostly 0 or 255 and deflate to almost nothing.
+  // (A prediction from the two frames before deflates worse at 20 frames a second: a cloth's
+  // motion is not that smooth from frame to frame.)
+  const auto n = static_cast<std::size_t>(manifest.node_count);
+  std::vector<std::uint8_t> packed;
+  packed.reserve(frames.size() * n * 6);
+  std::vector<std::uint16_t> before(3 * n, 0);
   for (const int frame : frames) {
     const std::vector<std::vector<Vec3f>> read = cache.read_frames(frame, frame);
-    for (const Vec3f& p : read.front()) {
-      values.insert(values.end(), {p.x(), p.y(), p.z()});
+    const std::vector<Vec3f>& at = read.front();
+    for (int c = 0; c < 3; ++c) {
+      const std::size_t plane = packed.size();
+      packed.resize(plane + 2 * n);
+      for (std::size_t p = 0; p < n; ++p) {
+        const float units = quantum[c] > 0.0f ? (at[p][c] - low[c]) / quantum[c] : 0.0f;
+        const auto q = static_cast<std::uint16_t>(std::lround(std::clamp(units, 0.0f, kLevels)));
+        const auto change = static_cast<std::uint16_t>(q - before[c * n + p]);
+        before[c * n + p] = q;
+        packed[plane + p] = static_cast<std::uint8_t>(change & 0xff);
+        packed[plane + n + p] = static_cast<std::uint8_t>(change >> 8);
+      }
     }
   }
-  static_assert(std::endian::native == std::endian::little, "the page's floats are little-endian");
 
   std::string page = viewer_page_template();
-  // No '<' may stand in the script element that holds the JSON: "</script>" would end it and
-  // "<!--" open a comment that hides its end (an object of any name). '<' is only ever inside a
-  // JSON string, where "\u003c" is the same character. Names not UTF-8 are shown with U+FFFD.
-  std::string meta_text = meta.dump(-1, ' ', false, Json::error_handler_t::replace);
-  for (std::size_t at = meta_text.find('<'); at != std::string::npos;
-       at = meta_text.find('<', at)) {
-    meta_text.replace(at, 1, "\\u003c");
-  }
-  replace_once(page, "/*DINAM_META*/", meta_text);
-  replace_once(
-      page, "/*DINAM_FRAMES*/",
-      base64(reinterpret_cast<const unsigned char*>(values.data()), values.size() * sizeof(float)));
+  // Each part deflated and in base64, which holds no '<' (so no "</script>" can end its element
+  // early, whatever an object's name). Names not UTF-8 are shown with U+FFFD.
+  const std::string meta_text = meta.dump(-1, ' ', false, Json::error_handler_t::replace);
+  const std::string meta_deflated = deflated(meta_text.data(), meta_text.size());
+  replace_once(page, "/*DINAM_META*/", base64(meta_deflated.data(), meta_deflated.size()));
+  const std::string frames_deflated = deflated(packed.data(), packed.size());
+  replace_once(page, "/*DINAM_FRAMES*/", base64(frames_deflated.data(), frames_deflated.size()));
+  const std::string three = three_module_source();
+  const std::string three_deflated = deflated(three.data(), three.size());
+  replace_once(page, "/*DINAM_THREE*/", base64(three_deflated.data(), three_deflated.size()));
   write_output_file(output, page, "the viewer page");
   if (!options.quiet) {
     fmt::print("dinam: {} frames of {} in {} ({:.1f} MB); open it in a web browser\n",

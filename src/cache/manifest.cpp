@@ -118,6 +118,9 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
                       {"wires", o.look.wires},
                       {"wire_radius", o.look.wire_radius},
                       {"color", {o.look.color.x(), o.look.color.y(), o.look.color.z()}}};
+    if (!o.look.texture.empty()) {
+      object["look"]["texture"] = o.look.texture.string();
+    }
     if (o.source_vertex_count > 0) {
       object["source_vertex_count"] = o.source_vertex_count;
       if (!o.source_vertices.empty()) {
@@ -245,6 +248,7 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
         entry.look.wire_radius = look.at("wire_radius").get<float>();
         const auto color = look.at("color").get<std::array<float, 3>>();
         entry.look.color = Vec3f(color[0], color[1], color[2]);
+        entry.look.texture = look.value("texture", "");
       }
       m.objects.push_back(std::move(entry));
     }
@@ -298,6 +302,7 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
       require_file_name(loc, entry.obj, entry.name, "obj", false);
       require_file_name(loc, entry.pc2, entry.name, "pc2", true);
       require_file_name(loc, entry.mdd, entry.name, "mdd", true);
+      require_file_name(loc, entry.look.texture.string(), entry.name, "texture", true);
       if (entry.pc2.empty() && entry.mdd.empty()) {
         throw UserError(loc,
                         fmt::format("object '{}' names no point cache (pc2 or mdd)", entry.name));

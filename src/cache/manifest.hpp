@@ -29,10 +29,10 @@ struct ObjectLook {
   bool wires = false;             // all its bars drawn as wires, not only those on no face
   float wire_radius = 0.0f;       // m, the radius its bars are drawn with
   Vec3f color{0.8f, 0.8f, 0.8f};  // linear RGB
-  // For the USD stage's materials alone (not kept in the manifest): the PNG its surface wears
-  // (empty for none) and how its surface takes the light.
+  // The PNG its surface wears, empty for none: in a cache request the scene's file; in the
+  // manifest its copy, a file of the cache's own folder, which the USD stage and `dinam view` use.
   std::filesystem::path texture;
-  Finish finish;
+  Finish finish;  // how its surface takes the light (the USD stage's materials; not kept)
 };
 
 // One object's files, each a name inside the cache folder; pc2 or mdd is empty when that format

@@ -216,6 +216,18 @@ void MotionCacheWriter::open_files(const Model& model) {
                            {},
                            o < request_.looks.size() ? request_.looks[o] : model_look(model, o)};
     entry.look.color = object.color;
+    if (!entry.look.texture.empty()) {
+      // A copy in the cache, so that the folder carries its look wherever it goes (the USD
+      // stage's material and `dinam view` read it there).
+      const std::string name = stem + "_texture" + entry.look.texture.extension().string();
+      std::error_code ec;
+      std::filesystem::copy_file(entry.look.texture, temporary_ / name, ec);
+      if (ec) {
+        throw WriteError(fmt::format("cannot copy the texture {} into the cache: {}",
+                                     entry.look.texture.string(), ec.message()));
+      }
+      entry.look.texture = name;
+    }
     set_source_vertices(model, object, entry);
     write_obj(temporary_ / entry.obj, rest_mesh(model, o));
     ObjectFiles files{object.first_node, object.node_count, {}};

@@ -33,7 +33,7 @@ struct UsdStageWriter::Prim {
   std::vector<Eigen::Vector2f> uvs;
   std::vector<Index> uv_indices;
   std::string display_name;  // the object's own name where the prim's is not it; else empty
-  std::string texture;       // the texture's copy beside the stage, relative to it; or empty
+  std::string texture;       // the cache's copy of its texture, beside the stage; or empty
   std::filesystem::path samples_path;
   std::FILE* samples = nullptr;
   std::vector<std::array<Vec3f, 2>> extents;  // (frames) the box of the points at each frame
@@ -51,8 +51,6 @@ using Prim = UsdStageWriter::Prim;
 
 // The scope under /dinam that holds a Material per prim, named as the prim.
 constexpr const char* kLooksScope = "Looks";
-// The folder beside the stage that holds the textures' copies.
-constexpr const char* kTextureFolder = "textures";
 
 // The bars of one object that a BasisCurves prim draws, chained into polylines: a curve runs on
 // through every node that joins exactly two of the bars and stops at any other node, so a rope
@@ -323,18 +321,8 @@ UsdStageWriter::UsdStageWriter(std::filesystem::path folder, std::string file_na
   for (std::size_t p = 0; p < prims_.size(); ++p) {
     Prim& prim = *prims_[p];
     const std::filesystem::path& texture = looks[static_cast<std::size_t>(prim.object)].texture;
-    if (prim.kind == Prim::Kind::kMesh && !texture.empty()) {
-      // A copy beside the stage, so that the cache folder carries its look wherever it goes.
-      prim.texture =
-          fmt::format("{}/{}{}", kTextureFolder, prim.name, texture.extension().string());
-      std::error_code ec;
-      std::filesystem::create_directories(folder_ / kTextureFolder, ec);
-      if (ec ||
-          !std::filesystem::copy_file(texture, folder_ / prim.texture,
-                                      std::filesystem::copy_options::overwrite_existing, ec)) {
-        throw WriteError(fmt::format("cannot copy the texture {} beside the USD stage: {}",
-                                     texture.string(), ec.message()));
-      }
+    if (prim.kind == Prim::Kind::kMesh) {
+      prim.texture = texture.string();  // the cache's copy, beside the stage
     }
     prim.samples_path = folder_ / fmt::format(".{}.{}.samples", file_name_, p);
     prim.samples = std::fopen(prim.samples_path.c_str(), "wbx");

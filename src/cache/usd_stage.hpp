@@ -10,8 +10,8 @@
 //    `primvars:dinam:node` (the object's vertex id, as in its OBJ and point caches), since a node
 //    where curves meet is a vertex of each.
 //  - Every prim is bound to a Material of its own under /dinam/Looks: a UsdPreviewSurface of the
-//    object's colour, or of its texture (copied beside the stage, textures/<prim>.png, and
-//    referenced relatively), with its finish's roughness and metalness. A prim whose name is not
+//    object's colour, or of its texture (the cache's copy beside the stage, referenced
+//    relatively), with its finish's roughness and metalness. A prim whose name is not
 //    the object's keeps the object's as its displayName.
 //  - Time code k is frame k (1-based), at timeCodesPerSecond = the scene's fps; Z up, metres.
 // Points are float32 and written so that they read back as the same values as the point caches.
@@ -35,9 +35,9 @@ struct Model;
 
 class UsdStageWriter {
  public:
-  // Opens the sample files in `folder` (the cache's temporary folder) and copies the objects'
-  // textures there. `looks` holds how the scene draws each object, which decides its prims; their
-  // radii may still be 0 here (they are given to write()).
+  // Opens the sample files in `folder` (the cache's temporary folder). `looks` holds how the
+  // scene draws each object, which decides its prims (and names each texture's copy in the
+  // folder); their radii may still be 0 here (they are given to write()).
   UsdStageWriter(std::filesystem::path folder, std::string file_name, const Model& model,
                  const std::vector<ObjectLook>& looks, double fps, int frame_count);
   ~UsdStageWriter();

@@ -90,10 +90,12 @@ TEST(HostileCache, ARestMeshIndexThatIsNoPointIsRefusedAtItsLine) {
 }
 
 TEST(HostileCache, AManifestNamingAFileOutsideTheCacheIsRefused) {
-  for (const char* key : {"obj", "pc2"}) {
+  for (const char* key : {"obj", "pc2", "texture"}) {
     const TinyCache tiny;
     Json manifest = tiny.manifest();
-    manifest["objects"][0]["files"][key] = "../../../../../../etc/os-release";
+    Json& names = std::string(key) == "texture" ? manifest["objects"][0]["look"]
+                                                : manifest["objects"][0]["files"];
+    names[key] = "../../../../../../etc/os-release";
     tiny.write_manifest(manifest);
     const test::CommandResult viewed = tiny.view();
     EXPECT_EQ(viewed.exit_code, 2) << viewed.output;

@@ -23,7 +23,7 @@ trap 'rm -rf "$work"' EXIT
   --expect flag_wires=BasisCurves --expect net=BasisCurves --expect sail=Mesh \
   --expect sail_wires=BasisCurves --expect frame=BasisCurves --expect ball=Mesh \
   --width pole_1=0.04 --width sail_wires=0.008 --texture ball --seams ball
-cmp "$work/kinds/textures/ball.png" "$source_dir/tests/data/quad.png"
+cmp "$work/kinds/ball_texture.png" "$source_dir/tests/data/quad.png"
 grep -q 'displayName = "pole 1"' "$work/kinds/scene.usda"
 # The sail is a grid, with texture coordinates; the banner's OBJ has none.
 grep -q 'texCoord2f\[\] primvars:st' <(sed -n '/def Mesh "sail"/,/def /p' "$work/kinds/scene.usda")
@@ -41,7 +41,7 @@ ln -s "$source_dir/assets" "$work/shipped/assets"
 sed 's/^duration: .*/duration: 0.25/' "$source_dir/scenes/flag.yaml" >"$work/shipped/scenes/flag.yaml"
 "$dinam" simulate "$work/shipped/scenes/flag.yaml" -o "$work/shipped/cache" --quiet
 "$python" "$check" "$work/shipped/cache" --expect pole=BasisCurves --expect flag=Mesh --texture flag
-cmp "$work/shipped/cache/textures/flag.png" "$source_dir/assets/flag.png"
+cmp "$work/shipped/cache/flag_texture.png" "$source_dir/assets/flag.png"
 grep -q 'float inputs:metallic = 1' <(sed -n '/def Material "pole"/,/def Material/p' \
   "$work/shipped/cache/scene.usda")
 
