@@ -21,10 +21,11 @@ packages=(
   # single-threaded OpenBLAS (src/solver/CMakeLists.txt).
   libspectra-dev libsuitesparse-dev libopenblas0-serial
   ffmpeg
-  # The page `dinam view` writes draws with three.js, which the build puts into the program:
-  # npm fetches the version web/package-lock.json pins, below.
-  npm
 )
+# The page `dinam view` writes draws with three.js, which the build puts into the program: npm
+# fetches the version web/package-lock.json pins, below. Debian's npm, unless the machine has an
+# npm already (a Node.js from elsewhere, whose own npm Debian's would conflict with).
+command -v npm >/dev/null || packages+=(npm)
 # The tests and benchmarks.
 $render_only || packages+=(
   libgtest-dev libgmock-dev libbenchmark-dev
