@@ -165,7 +165,8 @@ double add_seconds(Loaded& loaded, const Add& add) {
   const WorkSplit* split = share_work(loaded.model, state);
   return seconds_per_call([&] {
     thread_team().run([&](const TeamMember& member) {
-      ForceContext context{loaded.model, state, state.force, true, nullptr, {member, split}};
+      ForceContext context{loaded.model, state,           state.force, true,
+                           nullptr,      {member, split}, state.time};
       add(context);
       // The plastic sets of shared springs that a step would commit after its meeting: dropped.
       if (split != nullptr) {

@@ -72,7 +72,8 @@ void spring_kernel(benchmark::State& bench) {
   const WorkSplit* split = share_work(flag.model, state);
   for (auto _ : bench) {
     thread_team().run([&](const TeamMember& member) {
-      ForceContext context{flag.model, state, state.force, false, nullptr, {member, split}};
+      ForceContext context{flag.model, state,           state.force, false,
+                           nullptr,    {member, split}, state.time};
       AddForces(context);
     });
     benchmark::DoNotOptimize(state.force.data());

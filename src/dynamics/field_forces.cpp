@@ -16,7 +16,7 @@ void add_gravity_forces(ForceContext& context) {
 void add_field_forces(ForceContext& context) {
   const Model& model = context.model;
   for (const FieldForce& field : model.fields) {
-    const Vec3 value = field.profile(context.state.time) * field.value;
+    const Vec3 value = field.profile(context.time) * field.value;
     for (const Index i : field.nodes) {
       if (context.worker.owns(i)) {
         context.add(i, field.per_unit_mass ? Vec3(model.node_mass[i] * value) : value);

@@ -7,6 +7,6 @@ namespace dinam {
 
 // Each on the context worker's own nodes (parallel_loops.hpp).
 void add_gravity_forces(ForceContext& context);
-void add_field_forces(ForceContext& context);  // at the state's time
+void add_field_forces(ForceContext& context);  // at the context's time
 
 }  // namespace dinam

@@ -24,6 +24,9 @@ struct ForceContext {
   // The thread running this part of the loops and what is its own (parallel_loops.hpp); by
   // default one thread that does everything.
   Worker worker;
+  // s, the instant the forces are taken at: the state's time in a step; the implicit step takes
+  // the fields at the step's end without moving the state's clock.
+  double time = 0.0;
 
   // Keeps `value` aside to write to `slot` once the team has met (spring_block.hpp).
   void put_aside(double* slot, double value) {
@@ -49,7 +52,8 @@ inline ForceContext booked_in(const ForceContext& total, std::vector<Vec3> Energ
           total.force,
           total.update_history,
           ledger.enabled ? &(ledger.*part) : nullptr,
-          total.worker};
+          total.worker,
+          total.time};
 }
 
 }  // namespace dinam

@@ -122,9 +122,9 @@ void write_plastic_sets_put_aside(State& state) {
 // tracked, the dissipative and driving kinds also keep their own forces in the ledger's arrays,
 // for the work they do; that does not change the order of the total's sums.
 void add_forces(const Worker& worker, const Model& model, const ForceSwitches& switches,
-                const StepOptions& options, State& state, bool update_history) {
+                const StepOptions& options, State& state, bool update_history, double time) {
   EnergyWorkspace& ledger = state.energy_workspace;
-  ForceContext total{model, state, state.force, update_history, nullptr, worker};
+  ForceContext total{model, state, state.force, update_history, nullptr, worker, time};
   // 1. What a kind needs before the totals are cleared (the wind's drag on each face and bar,
   //    into its own arrays; the team meets after it).
   for (const ForceKind* kind : kForceKinds) {
@@ -158,8 +158,8 @@ bool adds_forces_after_team(const Model& model, const ForceSwitches& switches) {
 // 3. The kinds found after the team's job (contact between objects, whose search shares its loops
 //    with the team by itself), on the calling thread.
 void add_forces_after_team(const Model& model, const ForceSwitches& switches, State& state,
-                           bool update_history) {
-  ForceContext total{model, state, state.force, update_history, nullptr, {}};
+                           bool update_history, double time) {
+  ForceContext total{model, state, state.force, update_history, nullptr, {}, time};
   for (const ForceKind* kind : kForceKinds) {
     if (kind->add_forces_after_team != nullptr && kind->acts_in(model, switches)) {
       kind->add_forces_after_team(total);
@@ -261,20 +261,34 @@ void end_step(State& state, double dt) {
 
 }  // namespace
 
-void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
-                    bool update_history) {
+namespace {
+
+void compute_forces_at(const Model& model, const ForceSwitches& switches, State& state,
+                       bool update_history, double time) {
   const bool alone = !step_runs_in_parallel(model);
   const WorkSplit* split = share_work(model, state);
   thread_team().run(
       [&](const TeamMember& member) {
-        add_forces({member, split}, model, switches, {}, state, update_history);
+        add_forces({member, split}, model, switches, {}, state, update_history, time);
       },
       alone);
   write_plastic_sets_put_aside(state);
-  add_forces_after_team(model, switches, state, update_history);
+  add_forces_after_team(model, switches, state, update_history, time);
   if (update_history) {
     book_plastic_flow(state);
   }
+}
+
+}  // namespace
+
+void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
+                    bool update_history) {
+  compute_forces_at(model, switches, state, update_history, state.time);
+}
+
+void compute_forces_at(const Model& model, const ForceSwitches& switches, State& state,
+                       double time) {
+  compute_forces_at(model, switches, state, false, time);
 }
 
 void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state) {
@@ -379,10 +393,10 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
             if (model.can_tear()) {
               on_leader(member, [&] { break_overloaded_bars(model, state); });
             }
-            add_forces({member, split}, model, switches, options, state, true);
+            add_forces({member, split}, model, switches, options, state, true, state.time);
           },
           alone);
-      add_forces_after_team(model, switches, state, true);
+      add_forces_after_team(model, switches, state, true, state.time);
       thread_team().run(
           [&](const TeamMember& member) {
             advance({member, split}, model, dt, options, state, diverged);
@@ -404,7 +418,7 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& switches,
               on_leader(member, [&] { break_overloaded_bars(model, state); });
             }
             // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
-            add_forces(worker, model, switches, options, state, true);
+            add_forces(worker, model, switches, options, state, true, state.time);
             // 2. Velocities to n + ½, positions to n + 1.
             advance(worker, model, dt, options, state, diverged);
             member.barrier([&] { end_step(state, dt); });

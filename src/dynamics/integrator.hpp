@@ -27,6 +27,12 @@ void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches
 void compute_forces(const Model& model, const ForceSwitches& switches, State& state,
                     bool update_history = false);
 
+// The forces as compute_forces gives them, but taken at `time` instead of the state's (the fields
+// and the wind read it): the implicit step's loads at the step's end, the state's clock unmoved.
+// Plastic sets and contact anchors are left as they are.
+void compute_forces_at(const Model& model, const ForceSwitches& switches, State& state,
+                       double time);
+
 // The static forces at the present positions into state.force: velocities set to zero (no damping
 // or drag), plastic sets and contact anchors left as they are.
 void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state);

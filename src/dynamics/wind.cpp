@@ -32,8 +32,8 @@ bool torn(const std::vector<std::uint8_t>& broken, Index item) {
 
 // The wind at every node in the wind, when it is turbulent (uniform otherwise: no node needs it).
 void evaluate_node_winds(const TeamMember& member, const WindLoad& wind, const Vec3& uniform,
-                         State& state) {
-  const TurbulencePhases phases = turbulence_phases(wind, state.time);
+                         double time, State& state) {
+  const TurbulencePhases phases = turbulence_phases(wind, time);
   const Index count = static_cast<Index>(wind.nodes.size());
   for_each_block_share(member, count, kWindBlock, [&](Index first, Index size) {
     Vec3Lanes<kWindBlock> x = {};  // (zeroed: the compiler cannot see that size > 0)
@@ -184,9 +184,9 @@ void compute_wind_drag(ForceContext& context) {
   }
   State& state = context.state;
   const TeamMember& member = context.worker.member;
-  const Vec3 uniform = uniform_wind_velocity(wind.field, state.time);
+  const Vec3 uniform = uniform_wind_velocity(wind.field, context.time);
   if (wind.field.turbulence != 0.0) {
-    evaluate_node_winds(member, wind, uniform, state);
+    evaluate_node_winds(member, wind, uniform, context.time, state);
     member.barrier();
   }
   face_forces(member, model, uniform, state);

@@ -212,8 +212,6 @@ struct ImplicitIntegrator::Workspace {
   void take_loads(const Model& model, State& state) {
     const std::size_t n = state.x.size();
     explicit_force.assign(n, Vec3::Zero());
-    state.dt = 0.0;
-    const double t_start = state.time;
     for (std::size_t k = 0; k < kForceKinds.size(); ++k) {
       const ForceKind& kind = *kForceKinds[k];
       const bool at_end = kind.implicit == ImplicitTreatment::kLoadAtEnd;
@@ -221,9 +219,7 @@ struct ImplicitIntegrator::Workspace {
           !kind.acts_in(model, ForceSwitches{})) {
         continue;
       }
-      state.time = at_end ? t_next : t_start;
-      compute_forces(model, only(kind), state);
-      state.time = t_start;
+      compute_forces_at(model, only(kind), state, at_end ? t_next : state.time);
       for (std::size_t i = 0; i < n; ++i) {
         explicit_force[i] += state.force[i];
       }
