@@ -149,6 +149,12 @@ std::string base64(const void* bytes, std::size_t size) {
   return out;
 }
 
+// A part of the page: deflated, then in base64 (which holds no '<').
+std::string deflated_base64(const void* data, std::size_t size) {
+  const std::string packed = deflated(data, size);
+  return base64(packed.data(), packed.size());
+}
+
 // A texture of the cache as a data URL the page loads without the network.
 std::string texture_data_url(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -296,13 +302,10 @@ int run_view(const ViewOptions& options) {
   // Each part deflated and in base64, which holds no '<' (so no "</script>" can end its element
   // early, whatever an object's name). Names not UTF-8 are shown with U+FFFD.
   const std::string meta_text = meta.dump(-1, ' ', false, Json::error_handler_t::replace);
-  const std::string meta_deflated = deflated(meta_text.data(), meta_text.size());
-  replace_once(page, "/*DINAM_META*/", base64(meta_deflated.data(), meta_deflated.size()));
-  const std::string frames_deflated = deflated(packed.data(), packed.size());
-  replace_once(page, "/*DINAM_FRAMES*/", base64(frames_deflated.data(), frames_deflated.size()));
+  replace_once(page, "/*DINAM_META*/", deflated_base64(meta_text.data(), meta_text.size()));
+  replace_once(page, "/*DINAM_FRAMES*/", deflated_base64(packed.data(), packed.size()));
   const std::string three = three_module_source();
-  const std::string three_deflated = deflated(three.data(), three.size());
-  replace_once(page, "/*DINAM_THREE*/", base64(three_deflated.data(), three_deflated.size()));
+  replace_once(page, "/*DINAM_THREE*/", deflated_base64(three.data(), three.size()));
   write_output_file(output, page, "the viewer page");
   if (!options.quiet) {
     fmt::print("dinam: {} frames of {} in {} ({:.1f} MB); open it in a web browser\n",

@@ -90,6 +90,9 @@ const SpringKind kAxialSprings{
     .ns_per_item_yielding = 6.6,
 };
 
+// Nanoseconds per bar's damper on one thread (bench_force_costs; step_cost.hpp).
+constexpr double kNsPerDamper = 5.3;
+
 // The bars' axial dampers, along each bar.
 const ForceKind kAxialDampers{
     .label = "axial dampers",
@@ -115,7 +118,7 @@ const ForceKind kAxialDampers{
         [](const Model& model, StepCostSink& sink) {
           sink.add("axial dampers",
                    model.any_bar_damping ? static_cast<double>(model.bar_count()) : 0.0,
-                   5.3);  // ns per bar
+                   kNsPerDamper);
         },
 };
 

@@ -58,6 +58,9 @@ const ForceKind kGravity{
     .add_cost = nullptr,
 };
 
+// Nanoseconds per node a field acts on, on one thread (bench_force_costs; step_cost.hpp).
+constexpr double kNsPerFieldNode = 0.8;
+
 // The scene's fields: loads of the time alone.
 const ForceKind kFields{
     .label = "fields",
@@ -85,7 +88,7 @@ const ForceKind kFields{
           for (const FieldForce& field : model.fields) {
             nodes += static_cast<double>(field.nodes.size());
           }
-          sink.add("fields", nodes, 0.8);  // ns per node a field acts on
+          sink.add("fields", nodes, kNsPerFieldNode);
         },
 };
 

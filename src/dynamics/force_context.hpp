@@ -43,17 +43,18 @@ struct ForceContext {
   }
 };
 
+// A kind's own array in `part` of the energy ledger while the energy is tracked; else null.
+inline std::vector<Vec3>* ledger_part(State& state, std::vector<Vec3> EnergyWorkspace::*part) {
+  EnergyWorkspace& ledger = state.energy_workspace;
+  return ledger.enabled ? &(ledger.*part) : nullptr;
+}
+
 // The context of a kind that keeps its own forces in `part` of the energy ledger while the energy
 // is tracked: the same total, booked there too.
 inline ForceContext booked_in(const ForceContext& total, std::vector<Vec3> EnergyWorkspace::*part) {
-  EnergyWorkspace& ledger = total.state.energy_workspace;
-  return {total.model,
-          total.state,
-          total.force,
-          total.update_history,
-          ledger.enabled ? &(ledger.*part) : nullptr,
-          total.worker,
-          total.time};
+  return {
+      total.model,  total.state, total.force, total.update_history, ledger_part(total.state, part),
+      total.worker, total.time};
 }
 
 }  // namespace dinam

@@ -16,6 +16,9 @@ void add_global_damping_forces(ForceContext& context, double alpha) {
   });
 }
 
+// Nanoseconds per node on one thread (bench_force_costs; step_cost.hpp).
+constexpr double kNsPerDampedNode = 1.3;
+
 const ForceKind kGlobalDamping{
     .label = "global damping",
     .spring = nullptr,
@@ -41,7 +44,7 @@ const ForceKind kGlobalDamping{
         [](const Model& model, StepCostSink& sink) {
           sink.add("global damping",
                    model.global_damping != 0.0 ? static_cast<double>(model.node_count()) : 0.0,
-                   1.3);  // ns per node
+                   kNsPerDampedNode);
         },
 };
 

@@ -168,6 +168,9 @@ void add_ground_contact_stiffness(const Model& model, const State& state, Stiffn
   }
 }
 
+// Nanoseconds per node, half of them touching, on one thread (bench_force_costs; step_cost.hpp).
+constexpr double kNsPerGroundNode = 9.2;
+
 // The ground: its normal penalty a potential, its damper and friction booked on their lines.
 // Under the implicit step the penalty is a term of the step's potential and the friction the
 // stick springs of solver/implicit_friction.hpp.
@@ -181,9 +184,9 @@ const ForceKind kGroundContact{
     .prepare_forces = nullptr,
     .add_forces =
         [](ForceContext& total, const StepOptions&) {
-          EnergyWorkspace& ledger = total.state.energy_workspace;
-          add_ground_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
-                                    ledger.enabled ? &ledger.friction : nullptr);
+          add_ground_contact_forces(total,
+                                    ledger_part(total.state, &EnergyWorkspace::contact_damping),
+                                    ledger_part(total.state, &EnergyWorkspace::friction));
         },
     .add_forces_after_team = nullptr,
     .add_potential =
@@ -216,7 +219,7 @@ const ForceKind kGroundContact{
     .add_cost =
         [](const Model& model, StepCostSink& sink) {
           sink.add("ground", model.ground.enabled ? static_cast<double>(model.node_count()) : 0.0,
-                   9.2);  // ns per node, half of them touching (bench_force_costs)
+                   kNsPerGroundNode);
         },
 };
 

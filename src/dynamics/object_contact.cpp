@@ -274,6 +274,10 @@ void add_object_contact_stiffness(const Model& model, const State& state, Stiffn
   }
 }
 
+// Nanoseconds per bar or node watched for contact, on one thread (bench_force_costs;
+// step_cost.hpp).
+constexpr double kNsPerWatched = 30.0;
+
 // Contact between objects and within one: found after the team's job (its pair search shares
 // its own loops), its penalty's energy booked where the pairs touch at the last force evaluation.
 // Under the implicit step its penalty and lagged friction are solver/implicit_object_contact.hpp's.
@@ -288,9 +292,9 @@ const ForceKind kObjectContact{
     .add_forces = nullptr,
     .add_forces_after_team =
         [](ForceContext& total) {
-          EnergyWorkspace& ledger = total.state.energy_workspace;
-          add_object_contact_forces(total, ledger.enabled ? &ledger.contact_damping : nullptr,
-                                    ledger.enabled ? &ledger.friction : nullptr);
+          add_object_contact_forces(total,
+                                    ledger_part(total.state, &EnergyWorkspace::contact_damping),
+                                    ledger_part(total.state, &EnergyWorkspace::friction));
         },
     .add_potential = nullptr,  // not of the positions alone: of the pairs the last evaluation found
     .add_stiffness = add_object_contact_stiffness,
@@ -313,7 +317,7 @@ const ForceKind kObjectContact{
           if (model.contact.enabled) {
             sink.add("contact between objects",
                      static_cast<double>(model.contact.bars.size() + model.contact.points.size()),
-                     30.0);  // ns per bar or node watched (bench_force_costs)
+                     kNsPerWatched);
           }
         },
 };
