@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
   Loaded turbulent_lattice(lattice_scene(kTurbulentWind), 0);
   for (Loaded* copy : {&turbulent, &grounded}) {  // the loaded shape of the flag
     copy->state.x = elastic.state.x;
-    copy->state.v_half = elastic.state.v_half;
+    copy->state.velocity = elastic.state.velocity;
     copy->state.time = elastic.state.time;
   }
   const Model& flag = elastic.model;

@@ -49,7 +49,7 @@ double kinetic_energy(const Model& model, const State& state) {
   double energy = 0.0;
   for (Index i = 0; i < model.node_count(); ++i) {
     if (!model.pinned(i)) {
-      energy += 0.5 * model.node_mass[i] * state.v_half[i].squaredNorm();
+      energy += 0.5 * model.node_mass[i] * state.velocity[i].squaredNorm();
     }
   }
   return energy;
@@ -211,8 +211,11 @@ int main(int argc, char** argv) {
   } else if (!implicit_step.empty()) {
     scene.timestep = std::stod(implicit_step);
   }
-  const Model model = build_model(scene);
-  const TimeStep step = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
+  const Model built = build_model(scene);
+  const TimeStep step = choose_timestep(built, scene.timestep, scene.fps, scene.timestep_loc);
+  // The ground softened for the run's step, as `dinam simulate` steps it (ImplicitStepper).
+  ImplicitIntegrator integrator(built, {.longest_step = step.dt});
+  const Model& model = integrator.model();
   const auto steps_per_frame = static_cast<std::int64_t>(std::lround(1.0 / (scene.fps * step.dt)));
   fmt::print("{}: {} nodes, {} bars; {} frames of {:.4g} s; {}, steps of {:.4g} s\n",
              scene_path.empty() ? "Wuson" : scene_path, model.node_count(), model.bar_count(),
@@ -221,7 +224,6 @@ int main(int argc, char** argv) {
   State state = initial_state(model, step.dt);
   const std::vector<Vec3> origin = state.x;
   const double first_energy = mechanical_energy(model, state, origin);
-  ImplicitIntegrator integrator(model);
   const auto start = std::chrono::steady_clock::now();
   ImplicitStats before;
   for (int frame = 1; frame <= frames; ++frame) {

@@ -80,7 +80,7 @@ std::uint64_t model_bytes(const Model& model) {
 std::uint64_t made_state_bytes(const Model& model, bool energy) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
   const auto bars = static_cast<std::uint64_t>(model.bar_count());
-  std::uint64_t bytes = nodes * 5 * sizeof(Vec3);  // x, v_half, force, x_next, v_next
+  std::uint64_t bytes = nodes * 5 * sizeof(Vec3);  // x, velocity, force, x_next, v_next
   for (const ForceKind* kind : kForceKinds) {      // each kind's own arrays
     bytes += kind->state_bytes != nullptr ? kind->state_bytes(model, energy) : 0;
   }

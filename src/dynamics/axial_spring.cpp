@@ -50,8 +50,9 @@ void add_axial_damper_forces(ForceContext& context) {
                             }
                             const Index n0 = model.bar_nodes[2 * b];
                             const Index n1 = model.bar_nodes[2 * b + 1];
-                            const Vec3 f0 = axial_damper(state.x[n0], state.x[n1], state.v_half[n0],
-                                                         state.v_half[n1], model.bar_damping[b]);
+                            const Vec3 f0 =
+                                axial_damper(state.x[n0], state.x[n1], state.velocity[n0],
+                                             state.velocity[n1], model.bar_damping[b]);
                             if (worker.owns(n0)) {
                               context.add(n0, f0);
                             }

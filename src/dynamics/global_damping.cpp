@@ -12,7 +12,7 @@ void add_global_damping_forces(ForceContext& context, double alpha) {
     return;
   }
   for_each_own_node(context.worker, model.node_count(), [&](Index i) {
-    context.add(i, -(alpha * model.node_mass[i]) * context.state.v_half[i]);
+    context.add(i, -(alpha * model.node_mass[i]) * context.state.velocity[i]);
   });
 }
 

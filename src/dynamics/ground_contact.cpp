@@ -70,7 +70,7 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
           // The node meets the plane with its lowest point, x − r n.
           const Vec3 lowest = state.x[i] - ground.node_radius[i] * ground.normal;
           block.x.set(k, lowest);
-          block.v.set(k, state.v_half[i]);
+          block.v.set(k, state.velocity[i]);
           // A node that has just touched is anchored at its foot on the plane.
           block.anchor.set(k, state.contact_touching[i] != 0
                                   ? state.contact_anchor[i]
@@ -80,7 +80,7 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
           // The damper: its share of the step a node crosses the plane in, τ + Δt/2 of Δt where
           // it crossed τ = −d / (−v·n) ago (a node found deeper than a step's travel started
           // there); then the velocity at t_n that the other forces bring about.
-          const double approach = -dot3(state.v_half[i], ground.normal);
+          const double approach = -dot3(state.velocity[i], ground.normal);
           double damping = ground.node_damping[i];
           if (state.contact_touching[i] == 0 && dt > 0.0 && -distance[k] < approach * dt) {
             damping *= (-distance[k] / approach + 0.5 * dt) / dt;

@@ -35,7 +35,7 @@ bool within_range(const Vec3& x, const Vec3& v) {
 // Pinned nodes are skipped: they cannot diverge by themselves (only through 0 × ∞ once a
 // neighbour's force has overflowed), and naming the free node that did is what helps the user.
 bool diverged_at(const Model& model, const State& state, Index i) {
-  return !model.pinned(i) && !within_range(state.x[i], state.v_half[i]);
+  return !model.pinned(i) && !within_range(state.x[i], state.velocity[i]);
 }
 
 // What the user can change: a load or a start given in the wrong units, else the step.
@@ -72,8 +72,9 @@ std::string divergence_fix(const Model& model) {
   throw RuntimeError(fmt::format(
       "the simulation diverged: node {} of object '{}' is {} at step {} (t = {:.6g} s); {}", i,
       model.objects[model.node_object[i]].name,
-      state.v_half[i].allFinite() ? fmt::format("{:.3g} m from the origin", state.x[i].stableNorm())
-                                  : std::string("moving at a non-finite velocity"),
+      state.velocity[i].allFinite()
+          ? fmt::format("{:.3g} m from the origin", state.x[i].stableNorm())
+          : std::string("moving at a non-finite velocity"),
       state.step, state.time, divergence_fix(model)));
 }
 
@@ -209,7 +210,7 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
   const Index n = model.node_count();
   // 1. Velocities to n + ½. Pinned nodes have zero inverse mass and zero velocity.
   for_each_own_node(worker, n, [&](Index i) {
-    state.v_next[i] = state.v_half[i] + (dt * model.node_inv_mass[i]) * state.force[i];
+    state.v_next[i] = state.velocity[i] + (dt * model.node_inv_mass[i]) * state.force[i];
   });
   // 2. Pinned nodes that follow a path take the velocity that brings them onto it at t_{n+1}.
   if (!options.pins_hold_still) {
@@ -223,7 +224,7 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
     on_leader(member, [&] {
       book_plastic_flow(state);
       for (Index i = 0; i < n; ++i) {
-        ledger.v_whole[i] = 0.5 * (state.v_half[i] + state.v_next[i]);
+        ledger.v_whole[i] = 0.5 * (state.velocity[i] + state.v_next[i]);
       }
       EnergyAccounts step_work;
       book_ledger_works(ledger, dt, step_work);
@@ -254,7 +255,7 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
 void end_step(State& state, double dt) {
   write_plastic_sets_put_aside(state);
   std::swap(state.x, state.x_next);
-  std::swap(state.v_half, state.v_next);
+  std::swap(state.velocity, state.v_next);
   state.step += 1;
   state.time = static_cast<double>(state.step) * dt;
 }
@@ -292,7 +293,7 @@ void compute_forces_at(const Model& model, const ForceSwitches& switches, State&
 }
 
 void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state) {
-  for (Vec3& v : state.v_half) {
+  for (Vec3& v : state.velocity) {
     v.setZero();
   }
   const double dt = std::exchange(state.dt, 0.0);
@@ -304,7 +305,7 @@ State make_state(const Model& model, bool track_energy) {
   const std::size_t n = model.node_count();
   State state;
   state.x = model.node_initial_x;
-  state.v_half = model.node_initial_v;
+  state.velocity = model.node_initial_v;
   state.force.assign(n, Vec3::Zero());
   state.x_next.assign(n, Vec3::Zero());
   state.v_next.assign(n, Vec3::Zero());
@@ -339,10 +340,10 @@ void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches
   compute_forces(model, switches, state, false);
   if (state.energy_workspace.enabled) {  // after the forces: contact between objects finds its
                                          // pairs there
-    state.energy_workspace.last = energy_report(model, state, state.v_half);
+    state.energy_workspace.last = energy_report(model, state, state.velocity);
   }
   for (Index i = 0; i < model.node_count(); ++i) {
-    state.v_half[i] -= 0.5 * dt * model.node_inv_mass[i] * state.force[i];
+    state.velocity[i] -= 0.5 * dt * model.node_inv_mass[i] * state.force[i];
   }
 }
 

@@ -32,7 +32,7 @@ Vec3 fallback_normal(const ContactPoint& point, const std::vector<Vec3>& x) {
 std::int8_t side_came_from(const ContactPoint& point, const State& state, double dt) {
   std::array<Vec3, 4> before;
   for (int j = 0; j < 4; ++j) {
-    before[j] = state.x[point.nodes[j]] - dt * state.v_half[point.nodes[j]];
+    before[j] = state.x[point.nodes[j]] - dt * state.velocity[point.nodes[j]];
   }
   return triangle_side(before);
 }
@@ -161,7 +161,7 @@ void add_object_contact_forces(ForceContext& context, std::vector<Vec3>* damping
       const Index node = point.nodes[j];
       const double inverse_mass = model.node_inv_mass[node];
       inverse_moved += point.weights[j] * point.weights[j] * inverse_mass;
-      relative_velocity += point.weights[j] * state.v_half[node];
+      relative_velocity += point.weights[j] * state.velocity[node];
       predicted_velocity += point.weights[j] * (0.5 * dt * inverse_mass) * context.force[node];
     }
     predicted_velocity += relative_velocity;

@@ -28,7 +28,7 @@ constexpr std::int64_t kViscousCheckInterval = 100;
 double kinetic_measure(const Model& model, const State& state) {
   double sum = 0.0;  // Σ m v², serial: the restarts must not depend on the thread count
   for (Index i = 0; i < model.node_count(); ++i) {
-    sum += model.node_mass[i] * state.v_half[i].squaredNorm();
+    sum += model.node_mass[i] * state.velocity[i].squaredNorm();
   }
   return sum;
 }
@@ -75,10 +75,10 @@ std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches&
     step(model, dt, switches, state, damped);
     if (s % kViscousCheckInterval == 0 || s == max_steps) {
       stop_if_asked();
-      std::vector<Vec3> velocities = state.v_half;
+      std::vector<Vec3> velocities = state.velocity;
       compute_static_forces(model, switches, state);
       std::tie(outcome.residual, outcome.worst_node) = relative_residual(model, state);
-      state.v_half = std::move(velocities);
+      state.velocity = std::move(velocities);
       if (outcome.residual <= handover) {
         return s;
       }
@@ -106,7 +106,7 @@ SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const Forc
     const bool peak = kinetic < previous_kinetic;
     if (peak || s - last_check >= kCheckInterval || s == max_steps) {
       if (!peak) {
-        held_velocities = state.v_half;
+        held_velocities = state.velocity;
       }
       compute_static_forces(model, switches, state);
       std::tie(outcome.residual, outcome.worst_node) = relative_residual(model, state);
@@ -125,11 +125,11 @@ SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const Forc
         // convergence until they blow up (the paper's flag did, at 0.5 ms).
         outcome.restarts += 1;
         for (Index i = 0; i < model.node_count(); ++i) {
-          state.v_half[i] = (-0.5 * dt * model.node_inv_mass[i]) * state.force[i];
+          state.velocity[i] = (-0.5 * dt * model.node_inv_mass[i]) * state.force[i];
         }
         kinetic = 0.0;
       } else {
-        state.v_half = held_velocities;
+        state.velocity = held_velocities;
       }
     }
     previous_kinetic = kinetic;
@@ -141,7 +141,7 @@ SettleOutcome creep_under_gravity(const Model& model, double dt, const ForceSwit
                                   State& settling) {
   StepOptions options;
   options.pins_hold_still = true;
-  for (Vec3& v : settling.v_half) {
+  for (Vec3& v : settling.velocity) {
     v.setZero();
   }
   start_leapfrog(model, dt, quiet, settling);
@@ -171,7 +171,7 @@ SettleOutcome relax_to_rest(const Model& model, double dt, const ForceSwitches& 
   // crawls, handed over from rest as its restarts are (v_{−½} = −½ Δt a).
   if (viscous.steps > 0) {
     for (Index i = 0; i < model.node_count(); ++i) {
-      settling.v_half[i] = (-0.5 * dt * model.node_inv_mass[i]) * settling.force[i];
+      settling.velocity[i] = (-0.5 * dt * model.node_inv_mass[i]) * settling.force[i];
     }
   }
   StepOptions options;

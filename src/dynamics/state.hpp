@@ -107,17 +107,20 @@ struct PlasticSetUpdate {
   double value;
 };
 
-// Leapfrog state at step n: positions at whole steps, velocities at half steps.
+// The state at step n: positions at t_n, the velocities as the stepper carries them.
 struct State {
   double time = 0.0;      // s, t_n
   std::int64_t step = 0;  // n
   // s, the step being taken (set by the integrator); 0 while forces are found at rest
   // (compute_static_forces), where the contact dampers then act on the velocities alone.
   double dt = 0.0;
-  std::vector<Vec3> x;       // (n_nodes) m, x_n
-  std::vector<Vec3> v_half;  // (n_nodes) m/s, v_{n−½}
-  std::vector<Vec3> force;   // (n_nodes) N, scratch: the total force at t_n on each node
-  // (n_nodes) scratch: x_{n+1} and v_{n+½} as a step writes them, swapped with x and v_half once
+  std::vector<Vec3> x;  // (n_nodes) m, x_n
+  // (n_nodes) m/s, the velocity the stepper carries with x_n, which the forces that depend on
+  // velocity (the dampers, the wind, the contacts' dampers) read: leapfrog's v_{n−½} under central
+  // differences, v_n under the implicit schemes (stepping/stepper.hpp).
+  std::vector<Vec3> velocity;
+  std::vector<Vec3> force;  // (n_nodes) N, scratch: the total force at t_n on each node
+  // (n_nodes) scratch: x_{n+1} and v_{n+½} as a step writes them, swapped with x and velocity once
   // every thread has read the old ones (so the threads meet once a step, not twice).
   std::vector<Vec3> x_next;
   std::vector<Vec3> v_next;

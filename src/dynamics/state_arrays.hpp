@@ -35,7 +35,7 @@ void for_each_state_array(Visit&& visit, States&... states) {
   static_assert(sizeof...(States) >= 1);
   using enum StateArrayRole;
   visit(std::string_view("x"), kMotion, states.x...);
-  visit(std::string_view("v_half"), kMotion, states.v_half...);
+  visit(std::string_view("velocity"), kMotion, states.velocity...);
   visit(std::string_view("force"), kScratch, states.force...);
   visit(std::string_view("x_next"), kScratch, states.x_next...);
   visit(std::string_view("v_next"), kScratch, states.v_next...);

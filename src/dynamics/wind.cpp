@@ -104,7 +104,7 @@ void face_forces(const TeamMember& member, const Model& model, const Vec3& unifo
       Vec3 velocity = Vec3::Zero();
       Vec3 felt = Vec3::Zero();
       for (Index j = begin; j < end; ++j) {
-        velocity += state.v_half[model.face_nodes[j]];
+        velocity += state.velocity[model.face_nodes[j]];
       }
       if (turbulent) {
         for (Index j = begin; j < end; ++j) {
@@ -145,7 +145,7 @@ void bar_forces(const TeamMember& member, const Model& model, const Vec3& unifor
       const Index n0 = model.bar_nodes[2 * b];
       const Index n1 = model.bar_nodes[2 * b + 1];
       block.shape.set(k, state.x[n1] - state.x[n0]);
-      block.velocity.set(k, 0.5 * (state.v_half[n0] + state.v_half[n1]));
+      block.velocity.set(k, 0.5 * (state.velocity[n0] + state.velocity[n1]));
       block.wind.set(k, turbulent
                             ? Vec3(0.5 * (state.wind.node_wind[n0] + state.wind.node_wind[n1]))
                             : uniform);

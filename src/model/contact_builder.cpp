@@ -23,9 +23,6 @@ constexpr double kStiffestPenaltyFrequencyRatio = 100.0;
 // surface, where a bounce needs it resolved: object_contact.cpp).
 constexpr double kGroundContactFrequency = 0.125;
 constexpr double kObjectContactFrequency = 0.5;
-// The automatic ground frequency with the implicit integrator, times its longest step.
-constexpr double kImplicitGroundFrequency = 10.0;
-
 // `inv_mass` is what the penalty's oscillation sees on the lightest contact: 1/m against the
 // ground, 1/m + 1/m for two nodes pressed together (ω² = k · inv_mass). `structure` is the
 // structure's highest ω² bound.
@@ -116,6 +113,21 @@ double largest_inv_mass(const Model& model, std::span<const Index> nodes) {
   return largest;
 }
 
+// Each node's penalty k = stiffness(m) and its damper 2 ζ √(k m).
+template <class Stiffness>
+void set_ground_penalty(Model& model, double damping_ratio, const Stiffness& stiffness) {
+  GroundContact& ground = model.ground;
+  ground.damping_ratio = damping_ratio;
+  ground.node_stiffness.resize(model.node_count());
+  ground.node_damping.resize(model.node_count());
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const double m = model.node_mass[i];
+    const double k = stiffness(m);
+    ground.node_stiffness[i] = k;
+    ground.node_damping[i] = 2.0 * damping_ratio * std::sqrt(k * m);
+  }
+}
+
 }  // namespace
 
 void add_ground_contact(const SceneDescription& scene, Model& model) {
@@ -142,30 +154,23 @@ void add_ground_contact(const SceneDescription& scene, Model& model) {
         model.node_inv_mass.empty() ? 0.0 : std::ranges::max(model.node_inv_mass);
     check_penalty_stiffness(desc.stiffness_loc, "ground", *desc.stiffness, lightest_inv_mass,
                             structure);
+    set_ground_penalty(model, desc.damping_ratio, [&](double) { return *desc.stiffness; });
+  } else {
+    const double omega_squared =
+        structure > 0.0 ? kGroundContactFrequency * kGroundContactFrequency * structure : 1e4;
+    ground.automatic_frequency_squared = omega_squared;
+    set_ground_penalty(model, desc.damping_ratio, [&](double m) { return m * omega_squared; });
   }
-  double contact_omega_squared =
-      structure > 0.0 ? kGroundContactFrequency * kGroundContactFrequency * structure : 1e4;
-  // The implicit integrator resolves no contact oscillation (its steps are far longer than one):
-  // ω_c h = kImplicitGroundFrequency for its longest step h is stiff enough that a landing node
-  // sinks about a hundredth of the way it travels in a step (backward Euler's step into the
-  // spring stops it at 1/(1 + ω_c²h²) of it) and g/ω_c² under its weight (15 µm at 4 steps a
-  // frame of 20 fps), and soft enough that Newton's method does not stall on the ground's kink
-  // (bench_implicit, the Wuson's first 0.5 s: 6.3 s at ω_c h = 10, 11 s at 20, 34 s at central
-  // differences' ω_c, where ω_c h is about 200).
-  if (model.integrator == IntegratorKind::kImplicit) {
-    const double frame = 1.0 / scene.fps;
-    const double step = std::min(scene.timestep.value_or(frame / kImplicitStepsPerFrame), frame);
-    const double omega = kImplicitGroundFrequency / step;
-    contact_omega_squared = std::min(contact_omega_squared, omega * omega);
+}
+
+void soften_ground(Model& model, double frequency) {
+  GroundContact& ground = model.ground;
+  if (!ground.enabled || !ground.automatic_frequency_squared) {
+    return;  // a stiffness the scene gives is the user's to keep
   }
-  ground.node_stiffness.resize(model.node_count());
-  ground.node_damping.resize(model.node_count());
-  for (Index i = 0; i < model.node_count(); ++i) {
-    const double m = model.node_mass[i];
-    const double k = desc.stiffness ? *desc.stiffness : m * contact_omega_squared;
-    ground.node_stiffness[i] = k;
-    ground.node_damping[i] = 2.0 * desc.damping_ratio * std::sqrt(k * m);
-  }
+  const double omega_squared = std::min(*ground.automatic_frequency_squared, frequency * frequency);
+  ground.automatic_frequency_squared = omega_squared;
+  set_ground_penalty(model, ground.damping_ratio, [&](double m) { return m * omega_squared; });
 }
 
 void add_object_contact(const SceneDescription& scene, Model& model) {

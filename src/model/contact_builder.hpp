@@ -10,6 +10,11 @@ namespace dinam {
 // Call once every object, its pins and its springs are in the model.
 void add_ground_contact(const SceneDescription& scene, Model& model);
 
+// The ground of a model stepped by steps far longer than an impact: its automatic penalty's
+// frequency capped at `frequency` (rad/s), each node's damper following; a stiffness the scene
+// gives is kept. The implicit schemes soften their own copy of the model (ImplicitIntegrator).
+void soften_ground(Model& model, double frequency);
+
 // Call once every object, its pins and its springs are in the model, after the ground.
 void add_object_contact(const SceneDescription& scene, Model& model);
 

@@ -70,6 +70,11 @@ struct GroundContact {
   Vec3 normal = kWorldUp;
   std::vector<double> node_stiffness;  // (n_nodes) N/m, normal and tangential (stick) penalty
   std::vector<double> node_damping;    // (n_nodes) N·s/m, normal direction only
+  // rad²/s², ω_c² of the automatic penalty (node_stiffness = m ω_c² at every node); empty where
+  // the scene gives the stiffness. A stepper whose steps are far longer than an impact softens it
+  // (soften_ground, contact_builder.hpp).
+  std::optional<double> automatic_frequency_squared;
+  double damping_ratio = 0.0;  // of the contact oscillation: node_damping = 2 ζ √(k m)
   // (n_nodes) m: where each node meets the plane, its contact radius (the largest of its bars',
   // as in contact between objects), so that a wire rests on the ground, not half in it.
   std::vector<double> node_radius;

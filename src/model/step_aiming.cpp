@@ -59,7 +59,7 @@ void scale_masses(const SceneDescription& scene, const ShortBarPlan& plan, Model
   // A step given as a number is the user's choice: nothing to lengthen it for. The implicit
   // integrator's step is not bounded by the stiffest bars: nothing to add mass for.
   if (!scene.step_target.mass_scaling || (scene.timestep && !plan.target_step) ||
-      scene.integrator == IntegratorKind::kImplicit) {
+      !scene.step_bounded_by_stiffness()) {
     return;
   }
   const NodeFrequencyRows rows = node_frequency_rows(model, false);

@@ -402,6 +402,11 @@ struct SceneDescription {
 
   // Frame k (0-based) shows time k / fps; duration × fps frames in all.
   int frame_count() const;
+  // Whether the integrator's step is bounded by the stiffest springs (central differences'), so
+  // that mass scaling can lengthen it; the implicit schemes' is not.
+  bool step_bounded_by_stiffness() const {
+    return integrator == IntegratorKind::kCentralDifference;
+  }
 };
 
 // Reads and validates a scene file, loading every mesh it names. Throws UserError naming

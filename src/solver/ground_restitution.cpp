@@ -40,7 +40,7 @@ bool rebound_landing_nodes(const Model& model, const std::vector<Vec3>& x_start,
     const double zeta = ground.node_damping[i] / (2.0 * std::sqrt(k * m));
     const double struck = std::sqrt(approach * approach + 2.0 * pull * height);
     const double leaving = spring_dashpot_restitution(zeta) * struck;
-    Vec3& v = state.v_half[i];
+    Vec3& v = state.velocity[i];
     const double along = v.dot(normal);
     if (along < leaving) {
       v += (leaving - along) * normal;

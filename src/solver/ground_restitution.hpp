@@ -26,7 +26,7 @@ struct Model;
 double spring_dashpot_restitution(double zeta);
 
 // After an implicit step from (x_start, v_start) to state (positions and velocities v_{n+1} in
-// state.v_half): every free node above the plane at x_start and on it at state.x leaves with e(ζ)
+// state.velocity): every free node above the plane at x_start and on it at state.x leaves with e(ζ)
 // times the speed it struck at along the normal, where it would leave slower. True where any did.
 bool rebound_landing_nodes(const Model& model, const std::vector<Vec3>& x_start,
                            const std::vector<Vec3>& v_start, State& state);

@@ -52,12 +52,12 @@ void add_damper_hessian(const Model& model, const State& state, const FreeDofs& 
   });
 }
 
-Eigen::VectorXd pinned_damper_forces(const Model& model, const State& state, const FreeDofs& dofs,
-                                     const std::vector<Vec3>& x_start,
-                                     const std::vector<Vec3>& x_base, double h) {
-  Eigen::VectorXd force = Eigen::VectorXd::Zero(dofs.count);
+void pinned_damper_forces(const Model& model, const State& state, const FreeDofs& dofs,
+                          const std::vector<Vec3>& x_start, const std::vector<Vec3>& x_base,
+                          double h, Eigen::VectorXd& force) {
+  force.setZero(dofs.count);
   if (!model.any_bar_damping || model.pin_motions.empty()) {
-    return force;
+    return;
   }
   for_each_damped_bar(model, state, x_start, [&](Index a, Index b, double c, const Vec3& e) {
     for (const auto& [free, pinned] : {std::pair{a, b}, std::pair{b, a}}) {
@@ -69,7 +69,6 @@ Eigen::VectorXd pinned_damper_forces(const Model& model, const State& state, con
       force.segment<3>(d) += ((c / h) * e.dot(state.x[pinned] - x_base[pinned])) * e;
     }
   });
-  return force;
 }
 
 }  // namespace dinam

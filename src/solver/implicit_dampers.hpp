@@ -26,8 +26,9 @@ void add_damper_hessian(const Model& model, const State& state, const FreeDofs& 
 // term, (c/h) e eᵀ Δx_p, Δx_p the pinned end's move from `x_base` to where state.x has placed it
 // at t_{n+1}; N over the free degrees of freedom, constant within the step. (The Hessian above
 // leaves the pinned end out, as if it held still.)
-Eigen::VectorXd pinned_damper_forces(const Model& model, const State& state, const FreeDofs& dofs,
-                                     const std::vector<Vec3>& x_start,
-                                     const std::vector<Vec3>& x_base, double h);
+// Into `force`, its storage reused.
+void pinned_damper_forces(const Model& model, const State& state, const FreeDofs& dofs,
+                          const std::vector<Vec3>& x_start, const std::vector<Vec3>& x_base,
+                          double h, Eigen::VectorXd& force);
 
 }  // namespace dinam

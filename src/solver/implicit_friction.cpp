@@ -21,6 +21,12 @@ void ImplicitFriction::start_step(const Model& model, const State& state) {
     return;
   }
   normal_ = ground.normal;
+  // Room for every node on the ground, so that nodes landing within a step allocate nothing.
+  const auto n = static_cast<std::size_t>(model.node_count());
+  nodes_.reserve(n);
+  anchor_.reserve(n);
+  stiffness_.reserve(n);
+  cap_.reserve(n);
   for (Index i = 0; i < model.node_count(); ++i) {
     const double depth = -ground.clearance(i, state.x[i]);
     if (depth <= 0.0 || model.pinned(i)) {

@@ -15,6 +15,7 @@
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/tearing.hpp"
+#include "model/contact_builder.hpp"
 #include "model/model.hpp"
 #include "solver/ground_restitution.hpp"
 #include "solver/implicit_dampers.hpp"
@@ -25,6 +26,7 @@
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
+#include "solver/triplet_matrix.hpp"
 
 namespace dinam {
 namespace {
@@ -71,42 +73,49 @@ double median_bar(const Model& model) {
 // with h the step solved for, D the dampers' Hessian at x_n and f_p the dampers' pull from
 // supports that move. Its gradient and energy evaluate the model's forces at state.x.
 struct IncrementalPotential {
-  const Model& model;
-  State& state;
   const FreeDofs& dofs;
   const Vector& mass;                // (dofs)
   const std::vector<Vec3>& x_start;  // x_n, for the springs' flow from their plastic sets
   ImplicitFriction& friction;
   ImplicitObjectContact& objects;
+  const Model* model = nullptr;  // the step's (set with the step)
+  State* state = nullptr;
   double hs = 0.0;                        // s, the step solved for (2h/3 for BDF2's two-step steps)
   double alpha = 0.0;                     // 1/s, the global damping
   Vector predicted = Vector();            // x̂
   Vector start = Vector();                // x_b
-  SparseMatrix damping = SparseMatrix();  // D
+  const SparseMatrix* damping = nullptr;  // D
   Vector pinned_damping = Vector();       // f_p
   Vector inertia = Vector();  // M/h² + α M/h, the Hessian's diagonal beside the stiffness
   ForceSwitches switches = potential_switches();
+  // The free part of x, x − x_b, x − x̂, D (x − x_b) and the forces, kept from call to call so
+  // that neither allocates.
+  mutable Vector x = Vector(), moved = Vector(), off = Vector(), damped = Vector(),
+                 forces = Vector();
 
   // g = M(x − x̂)/h² − F(x) + ∇hD; leaves the potential's forces at x in state.force.
   void gradient(Vector& g) const {
-    compute_static_forces(model, switches, state);
-    friction.add_forces(state.x, state.force);
-    objects.add_forces(model, state);
-    const Vector x = free_part(dofs, state.x);
-    const Vector moved = x - start;
+    compute_static_forces(*model, switches, *state);
+    friction.add_forces(state->x, state->force);
+    objects.add_forces(*model, *state);
+    free_part(dofs, state->x, x);
+    moved = x - start;
+    damped.noalias() = *damping * moved;
+    free_part(dofs, state->force, forces);
     g = (mass / (hs * hs)).cwiseProduct(x - predicted) + (alpha / hs) * mass.cwiseProduct(moved) -
-        free_part(dofs, state.force) + damping * moved - pinned_damping;
+        forces + damped - pinned_damping;
   }
 
   double energy() const {
-    const Vector x = free_part(dofs, state.x);
-    const Vector off = x - predicted;
-    const Vector moved = x - start;
-    return potential_energy(model, state, switches, x_start, SpringEnergy::kWithFlow).energy +
-           friction.energy(state.x) + objects.energy(model, state) +
+    free_part(dofs, state->x, x);
+    off = x - predicted;
+    moved = x - start;
+    damped.noalias() = *damping * moved;
+    return potential_energy(*model, *state, switches, x_start, SpringEnergy::kWithFlow).energy +
+           friction.energy(state->x) + objects.energy(*model, *state) +
            (0.5 / (hs * hs)) * mass.dot(off.cwiseProduct(off)) +
-           (0.5 * alpha / hs) * mass.dot(moved.cwiseProduct(moved)) +
-           0.5 * moved.dot(damping * moved) - pinned_damping.dot(moved);
+           (0.5 * alpha / hs) * mass.dot(moved.cwiseProduct(moved)) + 0.5 * moved.dot(damped) -
+           pinned_damping.dot(moved);
   }
 };
 
@@ -131,9 +140,14 @@ struct ImplicitIntegrator::Workspace {
   // x_{n−1})/3 and (4 v_n − v_{n−1})/3, with 2h/3 in the place of h.
   std::vector<Vec3> x_base, v_base;
   ImplicitFriction friction;
-  ImplicitObjectContact objects;             // contact between objects and within one
+  ImplicitObjectContact objects;  // contact between objects and within one
+  TripletMatrix dampers;          // D, the dampers' Hessian
+  IncrementalPotential potential{dofs, mass, x_start, friction, objects};
+  NewtonWorkspace newton;
   std::vector<std::uint8_t> touching_start;  // State::contact_touching at x_n
   std::vector<Eigen::Triplet<double>> friction_triplets;
+  TripletMatrix held;     // the friction springs' Hessian, from friction_triplets
+  SparseMatrix system;    // the Hessian factorised last
   bool factored = false;  // `solver` holds a factorised Hessian of a step of `factored_h`
   double factored_h = 0.0;
   // Newton's trust region, carried from step to step (implicit_newton.hpp).
@@ -147,18 +161,15 @@ struct ImplicitIntegrator::Workspace {
     factored = false;
     factored_h = step;
     for (const Definiteness definiteness : {Definiteness::kExact, Definiteness::kProjected}) {
-      SparseMatrix system =
-          assembly.assemble(model, state, potential_switches(), dofs, definiteness);
-      system += damping;
+      system = assembly.assemble(model, state, potential_switches(), dofs, definiteness);
+      add_sparse(system, damping);
       friction_triplets.clear();
       objects.add_hessian(model, state, dofs, friction_triplets);
       if (!friction.empty()) {
         friction.add_hessian(dofs, state.x, friction_triplets);
       }
       if (!friction_triplets.empty()) {
-        SparseMatrix held(dofs.count, dofs.count);
-        held.setFromTriplets(friction_triplets.begin(), friction_triplets.end());
-        system += held;
+        add_sparse(system, held.set(dofs.count, friction_triplets));
       }
       system.diagonal() += inertia;
       if (solver.factorize(system)) {
@@ -191,7 +202,7 @@ struct ImplicitIntegrator::Workspace {
   void set_base(const Model& model, const State& state, double step) {
     h = step;
     x_start = state.x;
-    v_start = state.v_half;  // v_n: the implicit integrator keeps full-step velocities there
+    v_start = state.velocity;  // v_n: the implicit integrator keeps full-step velocities there
     t_next = state.time + h;
     const bool two_step = model.implicit_scheme == ImplicitScheme::kBdf2 && before_h == h;
     hs = two_step ? 2.0 * h / 3.0 : h;
@@ -254,20 +265,19 @@ struct ImplicitIntegrator::Workspace {
   // 6. The incremental potential of this step: the dampers' Hessian, with the bars' directions at
   // x_n (implicit_dampers.hpp), and α m / h on the diagonal; the dampers' pull from supports
   // that move, their ends placed at t_{n+1} above.
-  IncrementalPotential incremental_potential(const Model& model, State& state) {
+  void set_potential(const Model& model, State& state) {
     const bool global = model.global_damping > 0.0;
-    IncrementalPotential potential{model, state, dofs, mass, x_start, friction, objects};
+    potential.model = &model;
+    potential.state = &state;
     potential.hs = hs;
     potential.alpha = global ? model.global_damping : 0.0;
     damper_triplets.clear();
     add_damper_hessian(model, state, dofs, x_start, hs, damper_triplets);
-    potential.damping = SparseMatrix(dofs.count, dofs.count);
-    potential.damping.setFromTriplets(damper_triplets.begin(), damper_triplets.end());
-    potential.pinned_damping = pinned_damper_forces(model, state, dofs, x_start, x_base, hs);
+    potential.damping = &dampers.set(dofs.count, damper_triplets);
+    pinned_damper_forces(model, state, dofs, x_start, x_base, hs, potential.pinned_damping);
     potential.inertia = mass / (hs * hs) + (global ? model.global_damping / hs : 0.0) * mass;
-    potential.predicted = free_part(dofs, predicted);
-    potential.start = free_part(dofs, x_base);
-    return potential;
+    free_part(dofs, predicted, potential.predicted);
+    free_part(dofs, x_base, potential.start);
   }
 
   // Whether positions `x` carry a node of the contact between objects past the speed envelope
@@ -280,14 +290,13 @@ struct ImplicitIntegrator::Workspace {
   void restore(State& state) const {
     state.contact_touching = touching_start;
     state.x = x_start;
-    state.v_half = v_start;
+    state.velocity = v_start;
     state.time = t_next - h;
   }
 
   // 7. Newton's method from x̂ (the free nodes; the driven ones are placed); false where it did
   // not converge.
-  bool minimise(const Model& model, State& state, const IncrementalPotential& potential,
-                ImplicitStats& stats) {
+  bool minimise(const Model& model, State& state, ImplicitStats& stats) {
     for (std::size_t i = 0; i < state.x.size(); ++i) {
       if (dofs.first_dof[i] >= 0) {
         state.x[i] = predicted[i];
@@ -297,17 +306,25 @@ struct ImplicitIntegrator::Workspace {
       factored = false;
       trust_radius = 0.0;
     }
+    auto gradient = [&](Vector& g) { potential.gradient(g); };
+    auto energy = [&] { return potential.energy(); };
+    auto factor_here = [&] {
+      return factor(model, state, hs, *potential.damping, potential.inertia);
+    };
+    auto precondition = [&](const Vector& r, Vector& solved) { solver.solve(r, solved); };
+    auto join_new_touches = [&] { return friction.join_new_touches(model, x_start, state.x); };
+    auto add_new_touches = [&] { return friction.add_new_touches(model, x_start, state.x); };
     const StepPotential step{
-        .gradient = [&](Vector& g) { potential.gradient(g); },
-        .energy = [&] { return potential.energy(); },
-        .factor = [&] { return factor(model, state, hs, potential.damping, potential.inertia); },
-        .precondition = [&](const Vector& r) { return solver.solve(r); },
-        .join_new_touches = [&] { return friction.join_new_touches(model, x_start, state.x); },
-        .add_new_touches = [&] { return friction.add_new_touches(model, x_start, state.x); },
+        .gradient = gradient,
+        .energy = energy,
+        .factor = factor_here,
+        .precondition = precondition,
+        .join_new_touches = join_new_touches,
+        .add_new_touches = add_new_touches,
     };
     NewtonCounts counts;
     const bool done =
-        minimise_step(state.x, dofs, mass, hs, bar, step, factored, trust_radius, counts);
+        minimise_step(state.x, dofs, mass, hs, bar, step, factored, trust_radius, counts, newton);
     stats.iterations += counts.iterations;
     stats.solve_iterations += counts.solve_iterations;
     stats.factorizations += counts.factorizations;
@@ -315,14 +332,13 @@ struct ImplicitIntegrator::Workspace {
   }
 
   // 8. The step's ends for the energy ledger (implicit_energy.hpp), while it is kept: P, with the
-  // friction springs the step ended with, at x_{n+1} and at x_n, and its forces at x_{n+1}.
-  std::optional<ImplicitStepEnds> measure_ends(const Model& model, State& state,
-                                               const IncrementalPotential& potential) {
+  // friction springs the step ended with, at x_{n+1} and at x_n, and its forces at x_{n+1}. Null
+  // while the energy is not tracked.
+  const ImplicitStepEnds* measure_ends(const Model& model, State& state) {
     if (!state.energy_workspace.enabled) {
-      return std::nullopt;
+      return nullptr;
     }
-    std::optional<ImplicitStepEnds> ends;
-    ImplicitStepEnds& measured = ends.emplace();
+    ImplicitStepEnds& measured = step_ends;
     auto step_potential = [&] {  // P and its friction springs' share, at state.x
       const double ground_friction = friction.energy(state.x);
       return std::pair{
@@ -331,35 +347,44 @@ struct ImplicitIntegrator::Workspace {
               ground_friction + objects.energy(model, state),
           ground_friction + objects.friction_energy(state.x)};
     };
-    Vector g_end;
-    potential.gradient(g_end);  // leaves the potential's forces at x_{n+1} in state.force
-    measured.potential_force = free_part(dofs, state.force);
+    potential.gradient(newton.g_moved);  // leaves the potential's forces at x_{n+1} in state.force
+    free_part(dofs, state.force, measured.potential_force);
+    measured.support_work = 0.0;
     for (std::size_t i = 0; i < state.x.size(); ++i) {
       if (dofs.first_dof[i] < 0) {  // a pinned node: its support's work
         measured.support_work += state.force[i].dot(x_start[i] - state.x[i]);
       }
     }
     std::tie(measured.potential_end, measured.friction_end) = step_potential();
-    const std::vector<Vec3> x_end = state.x;
+    x_end = state.x;
     state.x = x_start;
     std::tie(measured.potential_start, measured.friction_start) = step_potential();
     state.x = x_end;
     measured.mass = mass;
-    measured.x_start = free_part(dofs, x_start);
-    measured.v_start = free_part(dofs, v_start);
+    free_part(dofs, x_start, measured.x_start);
+    free_part(dofs, v_start, measured.v_start);
     measured.x_base = potential.start;
-    measured.v_base = free_part(dofs, v_base);
-    measured.x_end = free_part(dofs, state.x);
-    const Vector moved = measured.x_end - potential.start;
+    free_part(dofs, v_base, measured.v_base);
+    free_part(dofs, state.x, measured.x_end);
+    potential.moved = measured.x_end - potential.start;
+    const Vector& moved = potential.moved;
     measured.v_end = moved / hs;
-    measured.damper_force = -(potential.alpha / hs) * mass.cwiseProduct(moved) -
-                            potential.damping * moved + potential.pinned_damping;
+    potential.damped.noalias() = *potential.damping * moved;
+    measured.damper_force = -(potential.alpha / hs) * mass.cwiseProduct(moved) - potential.damped +
+                            potential.pinned_damping;
+    std::size_t loads = 0;
     for (std::size_t k = 0; k < kForceKinds.size(); ++k) {
       if (!load_forces[k].empty()) {
-        measured.loads.push_back({kForceKinds[k]->ledger[0].work, free_part(dofs, load_forces[k])});
+        if (loads == measured.loads.size()) {
+          measured.loads.emplace_back();
+        }
+        ImplicitStepEnds::Load& load = measured.loads[loads++];
+        load.work = kForceKinds[k]->ledger[0].work;
+        free_part(dofs, load_forces[k], load.force);
       }
     }
-    return ends;
+    measured.loads.resize(loads);
+    return &measured;
   }
 
   // 9. v_{n+1} = (x_{n+1} − x_b)/h; the local error h²/2 |a_{n+1} − a_n|, a_n = (v_{n+1} − v_n)/h
@@ -386,7 +411,7 @@ struct ImplicitIntegrator::Workspace {
       if (have_accel && !model.pinned(static_cast<Index>(i))) {
         error = std::max(error, 0.5 * h * h * (accel[i] - accel_before[i]).norm());
       }
-      state.v_half[i] = v;
+      state.velocity[i] = v;
     }
     return !(check_error && !contact_changed && error > kImplicitErrorShare * bar);
   }
@@ -396,26 +421,25 @@ struct ImplicitIntegrator::Workspace {
   // contact's (implicit_object_contact.hpp). The energy the rebound gives back is the scheme's:
   // backward Euler's step into the penalty took it. The springs that flowed keep their new
   // plastic sets (the return mapping at x_{n+1}).
-  void book_and_rebound(const Model& model, State& state,
-                        const std::optional<ImplicitStepEnds>& ends) {
+  void book_and_rebound(const Model& model, State& state, const ImplicitStepEnds* ends) {
     state.contact_touching = touching_start;
     if (ends) {
       const EnergyAccounts step = implicit_step_accounts(*ends);
       state.energy.add_works(step, 1.0);
       state.energy.numerical_dissipation += step.numerical_dissipation;
     }
-    const double kinetic_before = ends ? kinetic_energy(model, state.v_half) : 0.0;
+    const double kinetic_before = ends ? kinetic_energy(model, state.velocity) : 0.0;
     const bool landed = rebound_landing_nodes(model, x_start, v_start, state);
     rebounded = objects.rebound_pairs(model, v_start, h, state) || landed;
     if (ends) {
-      state.energy.numerical_dissipation -= kinetic_energy(model, state.v_half) - kinetic_before;
+      state.energy.numerical_dissipation -= kinetic_energy(model, state.velocity) - kinetic_before;
     }
     friction.finish_step(model, state);
     objects.finish_step(model, h, state);
     if (any_yield) {
-      const std::vector<Vec3> velocities = state.v_half;
+      held_velocity = state.velocity;
       compute_forces(model, spring_switches(), state, true);
-      state.v_half = velocities;
+      state.velocity = held_velocity;
     }
   }
 
@@ -434,19 +458,38 @@ struct ImplicitIntegrator::Workspace {
     state.step += 1;
   }
 
-  std::vector<Vec3> accel;       // this step's accelerations, while it is judged
+  std::vector<Vec3> accel;          // this step's accelerations, while it is judged
+  std::vector<Vec3> held_velocity;  // v_{n+1}, while the springs' plastic sets move on
+  // The step's ends (measure_ends), and the positions x_{n+1} while P is measured at x_n.
+  ImplicitStepEnds step_ends;
+  std::vector<Vec3> x_end;
   bool contact_changed = false;  // a node met or left the ground, or a pair touched or parted
   bool rebounded = false;        // a node or a pair of the contact rebounded
 };
 
-ImplicitIntegrator::ImplicitIntegrator(const Model& model)
-    : model_(model), work_(std::make_unique<Workspace>()) {
-  work_->dofs = free_dofs(model);
-  work_->mass = free_masses(model, work_->dofs);
-  work_->bar = median_bar(model);
-  work_->envelope = contact_envelope(model);
+namespace {
+
+std::unique_ptr<const Model> softened_ground(const Model& model, const ImplicitOptions& options) {
+  if (!options.longest_step || !model.ground.enabled || !model.ground.automatic_frequency_squared) {
+    return nullptr;  // nothing to soften: the model itself is stepped, not a copy
+  }
+  auto softened = std::make_unique<Model>(model);
+  soften_ground(*softened, kImplicitGroundFrequency / *options.longest_step);
+  return softened;
+}
+
+}  // namespace
+
+ImplicitIntegrator::ImplicitIntegrator(const Model& model, const ImplicitOptions& options)
+    : softened_(softened_ground(model, options)),
+      model_(softened_ ? *softened_ : model),
+      work_(std::make_unique<Workspace>()) {
+  work_->dofs = free_dofs(model_);
+  work_->mass = free_masses(model_, work_->dofs);
+  work_->bar = median_bar(model_);
+  work_->envelope = contact_envelope(model_);
   work_->any_yield = std::any_of(kSpringKinds.begin(), kSpringKinds.end(),
-                                 [&](const SpringKind* kind) { return kind->yields(model); });
+                                 [&](const SpringKind* kind) { return kind->yields(model_); });
 }
 
 ImplicitIntegrator::~ImplicitIntegrator() = default;
@@ -458,7 +501,7 @@ void ImplicitIntegrator::report_energy(State& state) {
   // The objects' penalty where they touch at the start (before a step there are no friction
   // springs), where the report reads it.
   state.object_contact.energy = work_->objects.energy(model_, state);
-  state.energy_workspace.last = energy_report(model_, state, state.v_half);
+  state.energy_workspace.last = energy_report(model_, state, state.velocity);
 }
 
 void ImplicitIntegrator::advance(State& state, double h, std::int64_t steps) {
@@ -518,18 +561,18 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   w.take_loads(model, state);
   w.start_contact(model, state);
   w.predict(model, state);
-  const IncrementalPotential potential = w.incremental_potential(model, state);
+  w.set_potential(model, state);
   // A step that would carry a node of the contact between objects past the speed envelope even
   // without the forces of the potential is split before it is solved.
   if (w.past_envelope(model, w.predicted)) {
     w.restore(state);
     return false;
   }
-  if (!w.minimise(model, state, potential, stats_) || w.past_envelope(model, state.x)) {
+  if (!w.minimise(model, state, stats_) || w.past_envelope(model, state.x)) {
     w.restore(state);
     return false;
   }
-  const std::optional<ImplicitStepEnds> ends = w.measure_ends(model, state, potential);
+  const ImplicitStepEnds* ends = w.measure_ends(model, state);
   if (!w.accept(model, state, check_error)) {
     w.restore(state);
     return false;
@@ -538,10 +581,10 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   w.keep_history(model, state);
   stats_.steps += 1;
   if (ends) {
-    state.energy_workspace.last = energy_report(model, state, state.v_half);
+    state.energy_workspace.last = energy_report(model, state, state.velocity);
   }
   for (std::size_t i = 0; i < state.x.size(); ++i) {
-    if (!state.x[i].allFinite() || !state.v_half[i].allFinite()) {
+    if (!state.x[i].allFinite() || !state.velocity[i].allFinite()) {
       throw RuntimeError(
           fmt::format("the motion diverged at node {} at t = {:.6g} s", i, state.time));
     }

@@ -39,12 +39,12 @@ constexpr int kMostLandingRounds = 3;
 
 bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mass, double h,
                    double bar, const StepPotential& potential, bool& factored, double& radius,
-                   NewtonCounts& counts) {
+                   NewtonCounts& counts, NewtonWorkspace& work) {
   const std::size_t n = x.size();
   const double converged =  // m/s², a node's |g|/m
       std::min(kConvergedShare * bar / (h * h), kConvergedAcceleration);
   const double small_step = converged * h * h;  // m
-  Vector g;
+  Vector& g = work.g;
   potential.gradient(g);
   double e = potential.energy();
   // The largest out-of-balance acceleration of a residual, m/s²: what convergence is judged by.
@@ -73,8 +73,9 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
   }
   const double difference_step =
       std::sqrt(std::numeric_limits<double>::epsilon() * extent * bar);  // m
-  Vector g_moved;
-  std::vector<Vec3> x_iterate;
+  double solve_target = 0.0;  // m/s², the path's end for the gradient it is built for
+  Vector& g_moved = work.g_moved;
+  std::vector<Vec3>& x_iterate = work.x_iterate;
   auto hessian_times = [&](const Vector& v, Vector& product) {
     const double furthest = longest_move(v);
     if (furthest == 0.0) {
@@ -93,6 +94,7 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     x = x_iterate;
     product = (g_moved - g) / epsilon;
   };
+  auto solved = [&](const Vector& r) { return worst_of(r) <= solve_target; };
   // The Newton step's path (truncated_cg.hpp), preconditioned with the kept factorised Hessian P
   // (an earlier iterate's or step's; exactly H for a linear problem, where the first iteration
   // is the whole step). A node that met the ground or a spring that turned since P was
@@ -102,12 +104,11 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
   // a direction of negative curvature (the structure buckles there), which it follows to the
   // region's edge; at the region's edge; or after kMostSolveIterations, where P no longer
   // describes H and is factorised again at the next iterate.
-  TruncatedCg path;
-  double solve_target = 0.0;  // m/s², the path's end for the gradient it is built for
+  TruncatedCg& path = work.path;
   const TruncatedCg::Operators operators{
       .hessian_times = hessian_times,
       .precondition = potential.precondition,
-      .solved = [&](const Vector& r) { return worst_of(r) <= solve_target; },
+      .solved = solved,
   };
   // The factorised Hessian is kept from iterate to iterate and from step to step (assembling and
   // factorising it costs far more than a force), and factorised again where the solve above
@@ -136,7 +137,7 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
   // so that a step the model describes well is never cut by a region that an earlier, harder
   // step shrank.
   bool region_set = false;
-  std::vector<Vec3> from;
+  std::vector<Vec3>& from = work.from;
   for (int iteration = 0; iteration < kMostIterations; ++iteration) {
     // At least one Newton step: from x̂ alone a slow motion would pass the test unsolved (a
     // linear step is exact after one).
@@ -156,10 +157,10 @@ bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Vector& mas
     // promised.
     from = x;
     bool accepted = false;
-    TruncatedCg::Point point;
+    TruncatedCg::Point& point = work.point;
     double longest = 0.0;
     for (int shrink = 0; shrink < kMostShrinks && !accepted; ++shrink) {
-      point = path.at(radius);
+      path.at(radius, point);
       longest = longest_move(point.step);
       for (std::size_t i = 0; i < n; ++i) {
         const Index d = dofs.first_dof[i];

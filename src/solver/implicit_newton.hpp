@@ -14,10 +14,11 @@
 // minimum is found and when it is found.
 #include <Eigen/Core>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
+#include "core/function_ref.hpp"
 #include "core/types.hpp"
+#include "solver/truncated_cg.hpp"
 
 namespace dinam {
 
@@ -38,21 +39,31 @@ inline constexpr double kConvergedShare = 1e-5;
 inline constexpr double kConvergedAcceleration = 1e-2;  // m/s²
 
 // One step's incremental potential, as the integrator defines it for the step. Each function
-// works at state.x, the iterate.
+// works at state.x, the iterate. Referred to, not kept: each must outlive the minimisation.
 struct StepPotential {
-  std::function<void(Eigen::VectorXd& g)> gradient;  // ∇E, over the free degrees of freedom
-  std::function<double()> energy;                    // E
+  FunctionRef<void(Eigen::VectorXd& g)> gradient;  // ∇E, over the free degrees of freedom
+  FunctionRef<double()> energy;                    // E
   // Assembles and factorises the Hessian here into the kept factorisation; false where even its
   // definite projection is not positive definite.
-  std::function<bool()> factor;
+  FunctionRef<bool()> factor;
   // The kept factorisation's solve, P⁻¹ r.
-  std::function<Eigen::VectorXd(const Eigen::VectorXd& r)> precondition;
+  FunctionRef<void(const Eigen::VectorXd& r, Eigen::VectorXd& solved)> precondition;
   // Nodes that went below the ground at this iterate since the step's start join its friction
   // (ImplicitFriction::join_new_touches): true where E has changed with them.
-  std::function<bool()> join_new_touches;
+  FunctionRef<bool()> join_new_touches;
   // At what would be the step's solution: true where nodes that landed within the step join its
   // friction (ImplicitFriction::add_new_touches), so that the step must be solved on.
-  std::function<bool()> add_new_touches;
+  FunctionRef<bool()> add_new_touches;
+};
+
+// What a minimisation works in, kept by the caller from step to step so that once its arrays
+// have their sizes a step allocates nothing.
+struct NewtonWorkspace {
+  Eigen::VectorXd g, g_moved;   // the gradient at the iterate, and at the iterate moved
+  std::vector<Vec3> x_iterate;  // the iterate, while the Hessian's product moves it
+  std::vector<Vec3> from;       // the iterate, while a step from it is tried
+  TruncatedCg path;             // the Newton step's
+  TruncatedCg::Point point;     // the step tried
 };
 
 // What a minimisation did, to be added to the run's counts (ImplicitStats).
@@ -71,6 +82,6 @@ struct NewtonCounts {
 // minimum; false where Newton's method found no step (the caller splits the step).
 bool minimise_step(std::vector<Vec3>& x, const FreeDofs& dofs, const Eigen::VectorXd& mass,
                    double h, double bar, const StepPotential& potential, bool& factored,
-                   double& radius, NewtonCounts& counts);
+                   double& radius, NewtonCounts& counts, NewtonWorkspace& work);
 
 }  // namespace dinam

@@ -459,7 +459,7 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
       continue;  // still touching, though another pair of features may carry it on
     }
     any = set_separating_speed(model, point, separation / distance, restitution * point.struck,
-                               state.v_half) ||
+                               state.velocity) ||
           any;
   }
   // Pairs that met within the step: the speed they struck at, for when they part; or, where the
@@ -489,7 +489,7 @@ bool ImplicitObjectContact::rebound_pairs(const Model& model, const std::vector<
     if (omega * h < std::numbers::pi) {
       struck_.push_back({point.key, struck, omega});
     } else {
-      any = set_separating_speed(model, point, n, restitution * struck, state.v_half) || any;
+      any = set_separating_speed(model, point, n, restitution * struck, state.velocity) || any;
     }
   }
   return any;

@@ -87,7 +87,7 @@ class ImplicitObjectContact {
   // True where the pairs touching at state.x (a step's solution) differ from those at x_n: a step
   // with an impact, whose jump in acceleration is no error a shorter step would remove.
   bool touching_changed(const Model& model, State& state);
-  // After an accepted step of h to state.x, v_{n+1} in state.v_half, and before finish_step: the
+  // After an accepted step of h to state.x, v_{n+1} in state.velocity, and before finish_step: the
   // restitution of the contact's damping ratio (the ground's law, ground_restitution.hpp, on a
   // pair's relative motion along its normal). A pair that parts within the step, its impact not
   // yet over (two of the half periods backward Euler gives the penalty, π/atan(ω h) steps of h,

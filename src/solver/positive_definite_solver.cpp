@@ -80,4 +80,13 @@ Eigen::VectorXd PositiveDefiniteSolver::solve(const Eigen::VectorXd& rhs) const 
                       : Eigen::VectorXd(b.simplicial.solve(rhs));
 }
 
+void PositiveDefiniteSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& x) const {
+  const Backend& b = *backend_;
+  if (b.supernodal) {
+    x = b.cholmod.solve(rhs);
+  } else {
+    x = b.simplicial.solve(rhs);
+  }
+}
+
 }  // namespace dinam

@@ -20,8 +20,8 @@ namespace dinam {
 // bench/notes/performance.md, "Settling and modes").
 inline constexpr Eigen::Index kSupernodalFrom = 16000;
 // Where speed is all that counts (the implicit integrator's steps): CHOLMOD through OpenBLAS
-// factorises and solves faster from a couple of hundred unknowns on (bench/notes/implicit-integrator.md,
-// "CHOLMOD through OpenBLAS").
+// factorises and solves faster from a couple of hundred unknowns on
+// (bench/notes/implicit-integrator.md, "CHOLMOD through OpenBLAS").
 inline constexpr Eigen::Index kFastestSupernodalFrom = 100;
 
 class PositiveDefiniteSolver {
@@ -39,6 +39,8 @@ class PositiveDefiniteSolver {
   bool factorize(const SparseMatrix& matrix);
   // x = matrix⁻¹ b, after a factorize that returned true.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // The same into `x`, reusing its storage.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
 
  private:
   struct Backend;

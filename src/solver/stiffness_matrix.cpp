@@ -172,13 +172,18 @@ void add_elements(const Model& model, const State& state, const ForceSwitches& s
 }  // namespace
 
 Eigen::VectorXd free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node) {
-  Eigen::VectorXd v(dofs.count);
+  Eigen::VectorXd v;
+  free_part(dofs, per_node, v);
+  return v;
+}
+
+void free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node, Eigen::VectorXd& free) {
+  free.resize(dofs.count);
   for (std::size_t i = 0; i < per_node.size(); ++i) {
     if (dofs.first_dof[i] >= 0) {
-      v.segment<3>(dofs.first_dof[i]) = per_node[i];
+      free.segment<3>(dofs.first_dof[i]) = per_node[i];
     }
   }
-  return v;
 }
 
 FreeDofs free_dofs(const Model& model) {

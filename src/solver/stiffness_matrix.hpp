@@ -25,6 +25,8 @@ FreeDofs free_dofs(const Model& model);
 
 // A per-node array (forces, positions) as a vector over the free dofs.
 Eigen::VectorXd free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node);
+// The same into `free`, its storage reused.
+void free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node, Eigen::VectorXd& free);
 
 // The lumped mass of each free degree of freedom, kg: each free node's mass three times, in the
 // order of `dofs`. M of Newton's shift μM and of the modes' K φ = ω² M φ.

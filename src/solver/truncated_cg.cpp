@@ -8,14 +8,18 @@
 namespace dinam {
 
 TruncatedCg::Segment& TruncatedCg::next_segment() {
-  if (used_ == segments_.size()) {
-    segments_.emplace_back();
-  }
   return segments_[used_++];
 }
 
 int TruncatedCg::build(const Vector& g, double radius, bool widen, int most,
                        const Operators& operators) {
+  // Room for the longest path, each direction of g's size: a step's solves then allocate nothing.
+  if (segments_.size() < static_cast<std::size_t>(most)) {
+    segments_.resize(static_cast<std::size_t>(most));
+  }
+  for (Segment& segment : segments_) {
+    segment.direction.resize(g.size());
+  }
   used_ = 0;
   solved_ = exhausted_ = past_edge_ = false;
   region_ = radius;
@@ -27,7 +31,7 @@ int TruncatedCg::build(const Vector& g, double radius, bool widen, int most,
     solved_ = true;
     return 0;
   }
-  preconditioned_ = operators.precondition(residual_);
+  operators.precondition(residual_, preconditioned_);
   direction_ = -preconditioned_;
   double along = residual_.dot(preconditioned_);  // rᵀP⁻¹r
   if (widen) {
@@ -63,12 +67,12 @@ int TruncatedCg::build(const Vector& g, double radius, bool widen, int most,
       return k + 1;
     }
     model += length * segment.slope + 0.5 * length * length * curvature;
-    residual_ += length * product_;
+    residual_.noalias() += length * product_;
     if (operators.solved(residual_)) {
       solved_ = true;
       return k + 1;
     }
-    preconditioned_ = operators.precondition(residual_);
+    operators.precondition(residual_, preconditioned_);
     const double along_next = residual_.dot(preconditioned_);
     const double beta = along_next / along;
     s_dot_d = beta * (s_dot_d + length * d_norm2);
@@ -81,13 +85,15 @@ int TruncatedCg::build(const Vector& g, double radius, bool widen, int most,
   return most;
 }
 
-TruncatedCg::Point TruncatedCg::at(double radius) const {
+void TruncatedCg::at(double radius, Point& point) const {
   // A path that stopped at its region's edge is known no further.
   if (past_edge_) {
     radius = std::min(radius, region_);
   }
-  Point point;
   point.step.setZero(residual_.size());  // the zero step where the path has no segment
+  point.model = 0.0;
+  point.norm = 0.0;
+  point.at_edge = false;
   for (std::size_t k = 0; k < used_; ++k) {
     const Segment& segment = segments_[k];
     const double length = segment.length;
@@ -110,9 +116,8 @@ TruncatedCg::Point TruncatedCg::at(double radius) const {
     point.model = segment.model + tau * segment.slope + 0.5 * tau * tau * segment.curvature;
     point.norm = radius;
     point.at_edge = true;
-    return point;
+    return;
   }
-  return point;
 }
 
 }  // namespace dinam

@@ -14,20 +14,22 @@
 // in the smaller region is cut from the same path without new products with H (each costs a
 // force evaluation).
 #include <Eigen/Core>
-#include <functional>
 #include <vector>
+
+#include "core/function_ref.hpp"
 
 namespace dinam {
 
 class TruncatedCg {
  public:
   using Vector = Eigen::VectorXd;
+  // Referred to, not kept: each must outlive the build it is given to.
   struct Operators {
-    std::function<void(const Vector& v, Vector& product)> hessian_times;  // H v
-    std::function<Vector(const Vector& r)> precondition;                  // P⁻¹ r
+    FunctionRef<void(const Vector& v, Vector& product)> hessian_times;  // H v
+    FunctionRef<void(const Vector& r, Vector& solved)> precondition;    // P⁻¹ r
     // Whether a residual r = g + Hs is small enough to end the path (the caller knows the g it
     // built the path for).
-    std::function<bool(const Vector& r)> solved;
+    FunctionRef<bool(const Vector& r)> solved;
   };
   // A point of the path.
   struct Point {
@@ -40,12 +42,17 @@ class TruncatedCg {
   // Builds the path from s = 0 for the gradient g, ending as above, once it passes the region's
   // edge, or after `most` products with H. The region is `radius`, or with `widen` at least
   // |P⁻¹g|_P, the whole Newton step's norm where P is H (region() says which). Returns the
-  // products taken.
+  // products taken. Allocates only where g's size or `most` is larger than any before.
   int build(const Vector& g, double radius, bool widen, int most, const Operators& operators);
 
   // The path's point at |s|_P = radius, or its end where the path ends inside (a path that stopped
-  // at its region's edge ends there).
-  Point at(double radius) const;
+  // at its region's edge ends there), into `point` (its step reused).
+  void at(double radius, Point& point) const;
+  Point at(double radius) const {
+    Point point;
+    at(radius, point);
+    return point;
+  }
 
   double region() const { return region_; }
   bool solved() const { return solved_; }        // ended at the Newton step

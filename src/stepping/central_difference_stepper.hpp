@@ -1,6 +1,6 @@
 #pragma once
 // Central differences (the paper's method): leapfrog, explicit, its step bounded by the stiffest
-// spring (dynamics/stability.hpp). State::v_half is v_{n−½}.
+// spring (dynamics/stability.hpp). State::velocity is v_{n−½}.
 #include "stepping/stepper.hpp"
 
 namespace dinam {

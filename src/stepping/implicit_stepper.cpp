@@ -5,7 +5,7 @@
 namespace dinam {
 
 State ImplicitStepper::start(bool track_energy, Settling settling) {
-  State state = initial_state(model_, timestep_.dt, {}, track_energy, settling);
+  State state = initial_state(integrator_.model(), timestep_.dt, {}, track_energy, settling);
   integrator_.report_energy(state);
   return state;
 }

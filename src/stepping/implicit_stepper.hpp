@@ -1,6 +1,6 @@
 #pragma once
 // The implicit schemes (backward Euler, BDF2: solver/implicit_integrator.hpp): each step a
-// minimisation by Newton's method, stable at any step. State::v_half holds v_n, not leapfrog's
+// minimisation by Newton's method, stable at any step. State::velocity holds v_n, not leapfrog's
 // v_{n−½}.
 #include "solver/implicit_integrator.hpp"
 #include "stepping/stepper.hpp"
@@ -9,8 +9,9 @@ namespace dinam {
 
 class ImplicitStepper final : public Stepper {
  public:
+  // The ground softened for the run's step (ImplicitOptions).
   ImplicitStepper(const Model& model, const TimeStep& timestep)
-      : Stepper(model, timestep), integrator_(model) {}
+      : Stepper(model, timestep), integrator_(model, {.longest_step = timestep.dt}) {}
 
   // v_0 itself; the settling phase relaxes by the automatic explicit step (settling_step), the
   // run's being far longer than relaxation can take.

@@ -95,7 +95,7 @@ double measured_first_frequency(int segments) {
     const double x = model.node_initial_x[i].x();
     const double shape = std::cosh(beta * x) - std::cos(beta * x) -
                          sigma * (std::sinh(beta * x) - std::sin(beta * x));
-    state.v_half[i] = Vec3(0, 0, 1e-4 * kOmega1 * shape);  // tip amplitude ~ 0.2 mm
+    state.velocity[i] = Vec3(0, 0, 1e-4 * kOmega1 * shape);  // tip amplitude ~ 0.2 mm
   }
   const Index tip = model.node_count() - 1;
   std::vector<double> crossings;

@@ -136,7 +136,7 @@ objects:
     step(model, dt, {}, tracked);
   }
   EXPECT_EQ(plain.x, tracked.x);
-  EXPECT_EQ(plain.v_half, tracked.v_half);
+  EXPECT_EQ(plain.velocity, tracked.velocity);
 }
 
 TEST(Integrator, PinnedNodesNeverMove) {

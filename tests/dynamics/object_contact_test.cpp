@@ -256,7 +256,7 @@ TEST(ObjectContact, ANodeThatCrossesATrianglesMiddleInOneStepIsPushedBackToItsSi
   const ModelObject& pebble = model.objects[1];
   for (Index i = pebble.first_node; i < pebble.first_node + pebble.node_count; ++i) {
     state.x[i].z() = 1.05 * reach;
-    state.v_half[i] = Vec3(0, 0, -1.1 * reach / dt);
+    state.velocity[i] = Vec3(0, 0, -1.1 * reach / dt);
   }
   double lowest = 1.0;
   while (state.time < 0.01) {
@@ -265,7 +265,7 @@ TEST(ObjectContact, ANodeThatCrossesATrianglesMiddleInOneStepIsPushedBackToItsSi
   }
   EXPECT_LT(lowest, 0.0);                            // it did cross the middle
   EXPECT_GT(state.x[pebble.first_node].z(), reach);  // and went back the way it came
-  EXPECT_GT(state.v_half[pebble.first_node].z(), 0.0);
+  EXPECT_GT(state.velocity[pebble.first_node].z(), 0.0);
 }
 
 // The least distance between the axes of the two wires' bars, and the side of the fixed wire
@@ -316,7 +316,7 @@ TEST(ObjectContact, WireThrownAtAWireNeverPassesThrough) {
         "wire at %g°: axes at least %.4f m apart (radii 0.005 each), 10 m/s × Δt = %.2g m\n",
         degrees, watch.closest, 10.0 * dt);
     const Index middle = model.objects[1].first_node + model.objects[1].node_count / 2;
-    EXPECT_GT(state.v_half[middle].z(), 0.0) << degrees;  // on its way back up
+    EXPECT_GT(state.velocity[middle].z(), 0.0) << degrees;  // on its way back up
   }
 }
 
@@ -378,7 +378,7 @@ TEST(ObjectContact, ElasticCollisionKeepsTheEnergy) {
   const ModelObject& thrown = model.objects[1];
   double momentum = 0.0;
   for (Index i = thrown.first_node; i < thrown.first_node + thrown.node_count; ++i) {
-    momentum += model.node_mass[i] * state.v_half[i].z();
+    momentum += model.node_mass[i] * state.velocity[i].z();
   }
   EXPECT_GT(momentum, 0.0);  // and it bounced
 }
@@ -407,7 +407,7 @@ TEST(ObjectContact, ReboundHasTheRestitutionOfTheDampingRatio) {
         step(model, dt, {}, state);
       }
       const double rebound =
-          0.5 * (state.v_half[bar.first_node].z() + state.v_half[bar.first_node + 1].z());
+          0.5 * (state.velocity[bar.first_node].z() + state.velocity[bar.first_node + 1].z());
       lowest = std::min(lowest, rebound);
       highest = std::max(highest, rebound);
     }
@@ -490,7 +490,7 @@ TEST(ObjectContact, RodDroppedOnATautNetReboundsWithTheRestitutionOfItsDampingRa
     }
     const double rod_mass = model.node_mass[rod.first_node] + model.node_mass[rod.first_node + 1];
     const double rebound =
-        0.5 * (state.v_half[rod.first_node].z() + state.v_half[rod.first_node + 1].z()) / 0.3;
+        0.5 * (state.velocity[rod.first_node].z() + state.velocity[rod.first_node + 1].z()) / 0.3;
     const double expected = test::restitution_of(zeta * std::sqrt(moved_mass / rod_mass));
     std::printf(
         "taut net, damping ratio %.1f: restitution %.4f, closed form %.4f (ratio for the "

@@ -112,7 +112,7 @@ TEST(SpringKinds, TheEnergyReportBooksEveryKind) {
     EXPECT_GT(energy, 0.0) << kind->name();
     springs += energy;
   }
-  const EnergyReport report = energy_report(p.model, p.state, p.state.v_half);
+  const EnergyReport report = energy_report(p.model, p.state, p.state.velocity);
   EXPECT_NEAR(report.axial + report.bending + report.torsion, springs, 1e-12 * springs);
 }
 

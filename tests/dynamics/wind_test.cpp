@@ -29,10 +29,10 @@ double mean_speed_after(const Model& model, double duration) {
     step(model, dt, {}, state);
   }
   Vec3 v = Vec3::Zero();
-  for (const Vec3& vi : state.v_half) {
+  for (const Vec3& vi : state.velocity) {
     v += vi;
   }
-  return v.x() / static_cast<double>(state.v_half.size());
+  return v.x() / static_cast<double>(state.velocity.size());
 }
 
 TEST(Wind, PlateFacingTheWindIsCarriedOffAsDragPredicts) {

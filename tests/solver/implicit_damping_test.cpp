@@ -29,7 +29,7 @@ std::complex<double> modal(const Model& model, const NaturalMode& mode, double o
   for (Index i = 0; i < model.node_count(); ++i) {
     const double m = model.node_mass[i];
     q += m * mode.shape[i].dot(state.x[i] - model.node_initial_x[i]);
-    q_dot += m * mode.shape[i].dot(state.v_half[i]);
+    q_dot += m * mode.shape[i].dot(state.velocity[i]);
   }
   return {q, -q_dot / omega};
 }
@@ -60,7 +60,7 @@ Vibration vibrate(const std::string& integrator, int steps_per_period, int perio
   // squared (1e-8), is far below what is measured.
   const double speed = 1e-4 * omega / mode.shape.back().norm();
   for (Index i = 0; i < model.node_count(); ++i) {
-    state.v_half[i] = speed * mode.shape[i];
+    state.velocity[i] = speed * mode.shape[i];
   }
   ImplicitIntegrator integrator_run(model);
   integrator_run.advance(state, h, static_cast<std::int64_t>(periods - 1) * steps_per_period);

@@ -120,15 +120,15 @@ TEST(ImplicitIntegrator, BDF2FollowsItsClosedFormAndDampsLessThanBackwardEuler) 
     now = next;
     integrator.advance(state, h, 1);
     EXPECT_NEAR(state.x[1].x() - 1.0, now.real(), 1e-6 * amplitude) << "step " << n;
-    EXPECT_NEAR(state.v_half[1].x() / omega, -now.imag(), 1e-6 * amplitude) << "step " << n;
+    EXPECT_NEAR(state.velocity[1].x() / omega, -now.imag(), 1e-6 * amplitude) << "step " << n;
     if (n == 48) {
-      halfway = std::hypot(state.x[1].x() - 1.0, state.v_half[1].x() / omega);
+      halfway = std::hypot(state.x[1].x() - 1.0, state.velocity[1].x() / omega);
     }
   }
   // Over the last 48 steps the amplitude fell as the principal root says: the other root, about
   // 1/3, has long died out.
   const double root = std::abs((2.0 + std::sqrt(1.0 + 2.0 * z)) / (3.0 - 2.0 * z));
-  const double last = std::hypot(state.x[1].x() - 1.0, state.v_half[1].x() / omega);
+  const double last = std::hypot(state.x[1].x() - 1.0, state.velocity[1].x() / omega);
   EXPECT_NEAR(last / halfway / std::pow(root, 48), 1.0, 1e-4);
   EXPECT_LT(1.0 - root, 0.1 * (1.0 - 1.0 / std::sqrt(1.0 + std::norm(z))));
   EXPECT_EQ(integrator.stats().splits, 0);
@@ -215,7 +215,7 @@ objects:
     // differences of the gradient (exact to about 1e-8 of the step's motion): what is left is
     // rounding, and that difference's error.
     EXPECT_LT((state.x[i] - expected).norm(), 1e-9 * fall) << "node " << i;
-    EXPECT_NEAR(state.v_half[i].z(), -9.81 * h * steps, 1e-8 * 9.81 * h * steps) << "node " << i;
+    EXPECT_NEAR(state.velocity[i].z(), -9.81 * h * steps, 1e-8 * 9.81 * h * steps) << "node " << i;
   }
   EXPECT_EQ(integrator.stats().steps, steps);
   EXPECT_EQ(integrator.stats().factorizations, 1);

@@ -42,7 +42,7 @@ Vec3 momentum(const Model& model, const State& state, int object) {
   Vec3 p = Vec3::Zero();
   for (Index i = 0; i < model.node_count(); ++i) {
     if (model.node_object[i] == object) {
-      p += model.node_mass[i] * state.v_half[i];
+      p += model.node_mass[i] * state.velocity[i];
     }
   }
   return p;
@@ -242,9 +242,9 @@ TEST(ImplicitObjectContact, ARodOnRailsSlidesAtCoulombsAcceleration) {
   ImplicitIntegrator integrator(model);
   const Index rod = model.node_count() - 2;
   integrator.advance(state, h, 20);  // 0.25 s: sliding
-  const double v1 = state.v_half[rod].x();
+  const double v1 = state.velocity[rod].x();
   integrator.advance(state, h, 40);  // 0.5 s more
-  const double v2 = state.v_half[rod].x();
+  const double v2 = state.velocity[rod].x();
   const double theta = 30.0 * std::numbers::pi / 180.0;
   const double a = kG * (std::sin(theta) - 0.4 * std::cos(theta));
   std::printf("slides at %.5g m/s², Coulomb's %.5g; %lld steps (%lld split)\n", (v2 - v1) / 0.5, a,
@@ -252,7 +252,7 @@ TEST(ImplicitObjectContact, ARodOnRailsSlidesAtCoulombsAcceleration) {
               static_cast<long long>(integrator.stats().splits));
   EXPECT_GT(v1, 0.0);
   EXPECT_NEAR((v2 - v1) / 0.5, a, 2.0 * kResidualAcceleration);
-  EXPECT_NEAR(state.v_half[rod + 1].x(), state.v_half[rod].x(), 1e-6);  // square to the rails
+  EXPECT_NEAR(state.velocity[rod + 1].x(), state.velocity[rod].x(), 1e-6);  // square to the rails
   EXPECT_GT(state.x[rod].z(), 0.0);
 }
 
@@ -286,7 +286,7 @@ TEST(ImplicitObjectContact, AThrownWireBouncesOffAPinnedOne) {
     double slowest = 100.0;
     for (Index i = first; i < model.node_count(); ++i) {
       lowest = std::min(lowest, state.x[i].z());
-      slowest = std::min(slowest, state.v_half[i].z());
+      slowest = std::min(slowest, state.velocity[i].z());
     }
     std::printf("%g°: lowest node at %.4g m, rising at %.3g m/s or more\n", degrees, lowest,
                 slowest);
@@ -347,7 +347,7 @@ TEST(ImplicitObjectContact, MovesTheSameOnAnyThreadCount) {
   const State one = run(1);
   const State two = run(2);
   EXPECT_EQ(one.x, two.x);
-  EXPECT_EQ(one.v_half, two.v_half);
+  EXPECT_EQ(one.velocity, two.velocity);
   // It moved, and lies on the rod.
   EXPECT_NE(one.x, model.node_initial_x);
   EXPECT_GT(one.object_contact.previous.size(), 0U);
@@ -454,7 +454,7 @@ TEST(ImplicitObjectContact, ABarThrownAtAPinnedWireReboundsAtItsDampingRatio) {
         while (state.time < 0.2) {  // it meets the wire within 0.02 / speed s
           integrator.advance(state, c.step, 1);
         }
-        const double rebound = 0.5 * (state.v_half[first].z() + state.v_half[first + 1].z());
+        const double rebound = 0.5 * (state.velocity[first].z() + state.velocity[first + 1].z());
         lowest = std::min(lowest, rebound / c.speed);
         highest = std::max(highest, rebound / c.speed);
       }
@@ -483,8 +483,8 @@ TEST(ImplicitObjectContact, TwoFreeBarsPartAtTheRestitutionWithTheMomentumKept) 
     integrator.advance(state, h, 16);
     const Index struck = model.objects[0].first_node;
     const Index thrown = model.objects[1].first_node;
-    const double v_struck = 0.5 * (state.v_half[struck].z() + state.v_half[struck + 1].z());
-    const double v_thrown = 0.5 * (state.v_half[thrown].z() + state.v_half[thrown + 1].z());
+    const double v_struck = 0.5 * (state.velocity[struck].z() + state.velocity[struck + 1].z());
+    const double v_thrown = 0.5 * (state.velocity[thrown].z() + state.velocity[thrown + 1].z());
     std::printf("two free bars, damping ratio %.1f: %.4f and %.4f m/s, closed form %.4f, %.4f\n",
                 zeta, v_thrown, v_struck, -(1.0 - e) / 2.0, -(1.0 + e) / 2.0);
     EXPECT_NEAR(v_thrown, -(1.0 - e) / 2.0, 0.005) << zeta;
@@ -563,7 +563,7 @@ TEST(ImplicitObjectContact, ABarThatCameToRestIsNotThrownWhenItLiftsOff) {
   while (state.time < 1.1 - 0.5 * h) {
     integrator.advance(state, h, 1);
   }
-  const double rising = 0.5 * (state.v_half[first].z() + state.v_half[first + 1].z());
+  const double rising = 0.5 * (state.velocity[first].z() + state.velocity[first + 1].z());
   const double expected = kG * (state.time - 1.0) * (state.time - 1.0);
   std::printf(
       "rested (highest %.3g m above touching); at %.4g s rising at %.4g m/s, closed form "

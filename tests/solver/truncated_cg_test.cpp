@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <Eigen/Dense>
 
 namespace dinam {
@@ -19,16 +21,19 @@ struct Quadratic {
   Matrix h, p;
   int products = 0;
   double size = 1.0;
+  // The operators refer to these, which live as long as the quadratic.
+  std::function<void(const Vector&, Vector&)> times = [this](const Vector& v, Vector& product) {
+    ++products;
+    product = h * v;
+  };
+  std::function<void(const Vector&, Vector&)> solve = [this](const Vector& r, Vector& solved) {
+    solved = p.ldlt().solve(r);
+  };
+  std::function<bool(const Vector&)> small = [this](const Vector& r) {
+    return r.norm() <= 1e-12 * size;
+  };
   TruncatedCg::Operators operators() {
-    return {
-        .hessian_times =
-            [this](const Vector& v, Vector& product) {
-              ++products;
-              product = h * v;
-            },
-        .precondition = [this](const Vector& r) { return Vector(p.ldlt().solve(r)); },
-        .solved = [this](const Vector& r) { return r.norm() <= 1e-12 * size; },
-    };
+    return {.hessian_times = times, .precondition = solve, .solved = small};
   }
   double model(const Vector& g, const Vector& s) const { return g.dot(s) + 0.5 * s.dot(h * s); }
   double norm(const Vector& s) const { return std::sqrt(s.dot(p * s)); }
