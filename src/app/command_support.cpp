@@ -7,7 +7,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
-#include "dynamics/contact_at_rest.hpp"
+#include "dynamics/contact/contact_at_rest.hpp"
 
 namespace dinam {
 
@@ -15,7 +15,7 @@ namespace {
 
 // Contact pairs that overlap at rest by more than this share of their reach are refused: a hair
 // of overlap is a mesh modelled touching (a cloth laid on a table), more is a radius too large for
-// the mesh or objects placed inside each other (dynamics/contact_at_rest.hpp).
+// the mesh or objects placed inside each other (dynamics/contact/contact_at_rest.hpp).
 constexpr double kRestOverlapTolerance = 0.05;
 
 void refuse_contact_overlap_at_rest(const SceneDescription& scene, const Model& model) {

@@ -9,9 +9,9 @@
 #include <string_view>
 
 #include "core/error.hpp"
-#include "dynamics/contact_grid.hpp"
+#include "dynamics/contact/contact_grid.hpp"
+#include "dynamics/contact/object_contact_state.hpp"
 #include "dynamics/force_kinds.hpp"
-#include "dynamics/object_contact_state.hpp"
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"

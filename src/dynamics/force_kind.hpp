@@ -40,7 +40,7 @@ enum class ImplicitTreatment {
   kLoadAtStart,  // a force that depends on the motion, taken at (x_n, v_n) as a load (lagged)
   kDamper,       // linear in the velocities: its Hessian at x_n (solver/implicit_dampers.hpp)
   kOwnContact,   // contact between objects: its penalty and lagged friction
-                 // (solver/implicit_object_contact.hpp), beside the potential
+                 // (dynamics/contact/object_contact_implicit.hpp), beside the potential
 };
 
 // A part of the energy ledger (state.hpp): the array the kind keeps its own forces in while the

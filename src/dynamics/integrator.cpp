@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "core/stop_request.hpp"
 #include "core/thread_team.hpp"
-#include "dynamics/contact_candidates.hpp"
+#include "dynamics/contact/contact_candidates.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"

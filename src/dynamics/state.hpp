@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "dynamics/object_contact_state.hpp"
+#include "dynamics/contact/object_contact_state.hpp"
 #include "dynamics/work_split.hpp"
 
 namespace dinam {

@@ -1,7 +1,7 @@
 #pragma once
 // Contact with the ground (model.ground: each node's penalty) and between objects and within one
 // (model.contact: which bars, nodes and face triangles take part, their radii and the penalty);
-// the forces are dynamics/ground_contact.hpp's and dynamics/object_contact.hpp's.
+// the forces are dynamics/contact/ground_contact.hpp's and dynamics/contact/object_contact.hpp's.
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
 

@@ -90,9 +90,10 @@ struct GroundContact {
   Vec3 foot(const Vec3& x) const { return x - (x - point).dot(normal) * normal; }
 };
 
-// Contact between objects and within one, as the dynamics sees it (dynamics/object_contact.hpp):
-// the bars as capsules and the faces, fanned into triangles, as shells, of each object's contact
-// radius; which objects touch which; and the penalty. Empty when the scene asks for no contact.
+// Contact between objects and within one, as the dynamics sees it
+// (dynamics/contact/object_contact.hpp): the bars as capsules and the faces, fanned into triangles,
+// as shells, of each object's contact radius; which objects touch which; and the penalty. Empty
+// when the scene asks for no contact.
 struct ObjectContact {
   bool enabled = false;
   std::vector<std::uint8_t> object_between;  // (n_objects) 1: touches other objects

@@ -290,7 +290,7 @@ struct GroundDesc {
   FileLoc loc;
 };
 
-// Contact between objects and within one (dynamics/object_contact.hpp): bars are capsules and
+// Contact between objects and within one (dynamics/contact/object_contact.hpp): bars are capsules and
 // faces thin shells that push apart by a penalty, with Coulomb friction. Off unless asked for.
 struct ContactDesc {
   bool objects = false;             // between different objects

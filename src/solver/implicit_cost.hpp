@@ -2,10 +2,11 @@
 // What a step of the implicit integrator costs, estimated from what the model holds and from the
 // size of its Hessian's Cholesky factor (CHOLMOD's analysis of the pattern, no numbers), so that
 // `info` can set the two integrators side by side the same way on a quiet machine and a busy one
-// (bench/notes/threads.md, "The estimate of a run"). The per-item costs are bench_implicit --costs's on
-// the machine of bench/notes/performance.md; how many Newton iterations and factorisations a step takes
-// depends on the motion (a swing takes a few, a structure that folds where it lands tens), and the
-// estimate assumes what bench_implicit measured for models that move alike.
+// (bench/notes/threads.md, "The estimate of a run"). The per-item costs are bench_implicit
+// --costs's on the machine of bench/notes/performance.md; how many Newton iterations and
+// factorisations a step takes depends on the motion (a swing takes a few, a structure that folds
+// where it lands tens), and the estimate assumes what bench_implicit measured for models that move
+// alike.
 #include "dynamics/step_cost.hpp"
 
 namespace dinam {
@@ -22,8 +23,8 @@ struct ImplicitStepCounts {
 
 // How the model's motion is expected to go, which sets the counts a step is assumed to take. They
 // differ by ten times in factorisations a step between models of the same size, material and
-// drop (bench/notes/implicit-integrator.md, "Which integrator"), and what sets them is whether the bars
-// alone hold the structure's shape:
+// drop (bench/notes/implicit-integrator.md, "Which integrator"), and what sets them is whether the
+// bars alone hold the structure's shape:
 enum class ImplicitMotion {
   // Its bars leave under 2 % of its motions free (a triangulated closed surface leaves none):
   // it keeps its shape where it lands, and the Hessian changes little from step to step.

@@ -11,18 +11,18 @@
 
 #include "core/error.hpp"
 #include "core/stop_request.hpp"
+#include "dynamics/contact/ground_friction_implicit.hpp"
+#include "dynamics/contact/ground_restitution.hpp"
+#include "dynamics/contact/object_contact_implicit.hpp"
 #include "dynamics/energy.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/tearing.hpp"
 #include "model/contact_builder.hpp"
 #include "model/model.hpp"
-#include "solver/ground_restitution.hpp"
 #include "solver/implicit_dampers.hpp"
 #include "solver/implicit_energy.hpp"
-#include "solver/implicit_friction.hpp"
 #include "solver/implicit_newton.hpp"
-#include "solver/implicit_object_contact.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -281,7 +281,7 @@ struct ImplicitIntegrator::Workspace {
   }
 
   // Whether positions `x` carry a node of the contact between objects past the speed envelope
-  // (implicit_object_contact.hpp).
+  // (object_contact_implicit.hpp).
   bool past_envelope(const Model& model, const std::vector<Vec3>& x) {
     return model.contact.enabled && objects.longest_move(model, x) > envelope;
   }
@@ -418,7 +418,7 @@ struct ImplicitIntegrator::Workspace {
 
   // 10. The step kept: its works booked; the nodes that landed leave with the ground's
   // restitution (ground_restitution.hpp), and the pairs of primitives that met with the
-  // contact's (implicit_object_contact.hpp). The energy the rebound gives back is the scheme's:
+  // contact's (object_contact_implicit.hpp). The energy the rebound gives back is the scheme's:
   // backward Euler's step into the penalty took it. The springs that flowed keep their new
   // plastic sets (the return mapping at x_{n+1}).
   void book_and_rebound(const Model& model, State& state, const ImplicitStepEnds* ends) {

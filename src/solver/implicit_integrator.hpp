@@ -4,8 +4,8 @@
 //   E(x) = Σ m/(2h²) |x − x̂|² + V(x) + h D((x − x_n)/h),   x̂ = x_n + h v_n + h² M⁻¹ F_e,
 // where V is the potential of the springs, gravity, the ground's normal penalty (potential.hpp)
 // and the ground's friction (its stick springs, capped at μ times the normal force at x_n:
-// implicit_friction.hpp), and contact between objects' penalty and friction (likewise:
-// implicit_object_contact.hpp), D the dampers' dissipation (the bars' axial dampers along their
+// ground_friction_implicit.hpp), and contact between objects' penalty and friction (likewise:
+// object_contact_implicit.hpp), D the dampers' dissipation (the bars' axial dampers along their
 // directions at x_n, and the global damping), and F_e the forces outside the potential: the
 // fields at t_{n+1} (they depend on the time alone) and the wind at (x_n, v_n). The ground's and
 // the contact's dampers are left out: backward Euler's long step into a penalty ends an impact
@@ -31,7 +31,7 @@
 // the flattened force: a return mapping at every iterate), and kept at the step's end.
 // Bars past their breaking limit at x_n break at the step's start, as in central differences.
 // Contact between objects and within one: its penalty a potential and its friction lagged
-// (implicit_object_contact.hpp), the step split where a node of it would pass its speed envelope.
+// (object_contact_implicit.hpp), the step split where a node of it would pass its speed envelope.
 // The state's velocities are v_n, not leapfrog's v_{n−½}.
 #include <memory>
 #include <optional>

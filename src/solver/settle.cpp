@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
-#include "dynamics/ground_contact.hpp"
+#include "dynamics/contact/ground_contact.hpp"
 #include "dynamics/relaxation.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/state_arrays.hpp"

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "dynamics/free_dofs.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/state.hpp"
 
@@ -14,23 +15,6 @@ namespace dinam {
 struct Model;
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
-
-// The free degrees of freedom: x, y and z of each free node, in node order. Pinned nodes (driven
-// or not) have none: their positions are given.
-struct FreeDofs {
-  std::vector<Index> first_dof;  // (n_nodes) the node's x dof (y, z follow), −1 when pinned
-  Index count = 0;
-};
-FreeDofs free_dofs(const Model& model);
-
-// A per-node array (forces, positions) as a vector over the free dofs.
-Eigen::VectorXd free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node);
-// The same into `free`, its storage reused.
-void free_part(const FreeDofs& dofs, const std::vector<Vec3>& per_node, Eigen::VectorXd& free);
-
-// The lumped mass of each free degree of freedom, kg: each free node's mass three times, in the
-// order of `dofs`. M of Newton's shift μM and of the modes' K φ = ω² M φ.
-Eigen::VectorXd free_masses(const Model& model, const FreeDofs& dofs);
 
 // kExact: the stiffness as it is, which is indefinite where the structure is unstable (a bar in
 // compression, a bent spring near its straight). kProjected: each element's matrix made positive

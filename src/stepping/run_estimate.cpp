@@ -7,11 +7,11 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "dynamics/contact/object_contact_implicit.hpp"
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/implicit_object_contact.hpp"
 #include "stepping/time_step.hpp"
 
 namespace dinam {

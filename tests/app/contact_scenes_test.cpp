@@ -11,8 +11,8 @@
 
 #include "app/frame_source.hpp"
 #include "app/shipped_scenes.hpp"
-#include "dynamics/contact_geometry.hpp"
-#include "dynamics/contact_grid.hpp"
+#include "dynamics/contact/contact_geometry.hpp"
+#include "dynamics/contact/contact_grid.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"

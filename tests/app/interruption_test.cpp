@@ -192,8 +192,8 @@ objects:
 )";
   int polls = 0;
   const Stopped stopped = stop_while_running(
-      {"simulate", path("settle.yaml").string(), "-o", path("cache").string(), "--force"},
-      SIGTERM, path("cache"), [&](const std::filesystem::path&) { return ++polls >= 80; });
+      {"simulate", path("settle.yaml").string(), "-o", path("cache").string(), "--force"}, SIGTERM,
+      path("cache"), [&](const std::filesystem::path&) { return ++polls >= 80; });
   EXPECT_TRUE(WIFEXITED(stopped.status) && WEXITSTATUS(stopped.status) == 128 + SIGTERM)
       << stopped.status << stopped.messages;
   EXPECT_NE(stopped.messages.find("no cache was written"), std::string::npos) << stopped.messages;

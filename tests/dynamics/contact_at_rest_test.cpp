@@ -1,6 +1,6 @@
-// Contact pairs overlapping at rest (dynamics/contact_at_rest.hpp), on a square grid whose
+// Contact pairs overlapping at rest (dynamics/contact/contact_at_rest.hpp), on a square grid whose
 // geometry gives the answer in closed form.
-#include "dynamics/contact_at_rest.hpp"
+#include "dynamics/contact/contact_at_rest.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

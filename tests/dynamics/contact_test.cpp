@@ -101,9 +101,10 @@ TEST(Friction, StickModeNeverSlides) {
 
 // The same three with the implicit integrator at steps of 10 ms, 28 times central differences'
 // bound here: its friction is the same stick spring, held implicitly within each step, and from
-// the start of the step in which a node lands (solver/implicit_friction.hpp), so a block that
-// sticks does not creep. (With the friction lagged a step, as before, this block slid 0.31 m in
-// the first second: the free slide of its first step was more than μk = 0.3 could stop at 20°.)
+// the start of the step in which a node lands (dynamics/contact/ground_friction_implicit.hpp), so a
+// block that sticks does not creep. (With the friction lagged a step, as before, this block slid
+// 0.31 m in the first second: the free slide of its first step was more than μk = 0.3 could stop at
+// 20°.)
 TEST(Friction, ImplicitBlockBelowTheFrictionAngleStaysPut) {
   const Model model = block_on_incline(20, "{static: 0.5, kinetic: 0.3}", "implicit");
   ASSERT_GT(0.01, 25.0 * critical_timestep(block_on_incline(20, "{static: 0.5, kinetic: 0.3}")));
@@ -161,9 +162,9 @@ objects:
 // one mass; backward Euler's step into the ground from x̂ = h v + h² g below where it starts
 // stops it at x̂ / (1 + ω_c² h²), a hundredth of what it would travel in the step (later steps
 // sink less: the first takes nearly all its speed). It bounces at the ground's restitution
-// (solver/ground_restitution.hpp: 0.45 at the default damping ratio, so bounces of 1.35, 0.61,
-// 0.27 m/s… that are over within 0.55 s) and then rests at its weight's g/ω_c². A steel wire, so
-// that central differences' ω_c, an eighth of its highest frequency, is far stiffer.
+// (dynamics/contact/ground_restitution.hpp: 0.45 at the default damping ratio, so bounces of 1.35,
+// 0.61, 0.27 m/s… that are over within 0.55 s) and then rests at its weight's g/ω_c². A steel wire,
+// so that central differences' ω_c, an eighth of its highest frequency, is far stiffer.
 TEST(Contact, ImplicitImpactSinksATenthOfAStepAndStops) {
   const Model model = build_model(test::scene_from_yaml(R"(version: 1
 duration: 1

@@ -1,4 +1,4 @@
-// Contact between objects and within one (dynamics/object_contact.hpp): the closest-point
+// Contact between objects and within one (dynamics/contact/object_contact.hpp): the closest-point
 // kernels and the grid against brute force, then the contact law against closed forms and
 // conservation laws, and thrown wires that must not pass through.
 #include <gtest/gtest.h>
@@ -10,8 +10,8 @@
 #include <random>
 #include <set>
 
-#include "dynamics/contact_geometry.hpp"
-#include "dynamics/contact_grid.hpp"
+#include "dynamics/contact/contact_geometry.hpp"
+#include "dynamics/contact/contact_grid.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/restitution.hpp"
 #include "dynamics/stability.hpp"

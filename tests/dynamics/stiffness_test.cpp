@@ -15,10 +15,10 @@
 
 #include "dynamics/axial_spring.hpp"
 #include "dynamics/bending_spring.hpp"
+#include "dynamics/contact/ground_contact.hpp"
+#include "dynamics/contact/object_contact.hpp"
 #include "dynamics/force_kinds.hpp"
-#include "dynamics/ground_contact.hpp"
 #include "dynamics/integrator.hpp"
-#include "dynamics/object_contact.hpp"
 #include "dynamics/perturbed_lattice.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/stiffness.hpp"

@@ -144,17 +144,19 @@ TEST(MovieEncoder, TheMovieIsTaggedBt709AndDecodesToItsColours) {
   test::expect_contains(probe.output, {"color_range=tv", "color_space=bt709",
                                        "color_transfer=bt709", "color_primaries=bt709"});
   const std::filesystem::path decoded = folder.path() / "decoded.png";
-  const test::CommandResult decode = test::run_command(
-      "ffmpeg -v error -i '" + movie.string() + "' -frames:v 1 -vf scale=in_color_matrix=auto '" +
-      decoded.string() + "'");
+  const test::CommandResult decode =
+      test::run_command("ffmpeg -v error -i '" + movie.string() +
+                        "' -frames:v 1 -vf scale=in_color_matrix=auto '" + decoded.string() + "'");
   ASSERT_EQ(decode.exit_code, 0) << decode.output;
   const Image back = read_png(decoded);
   for (std::size_t q = 0; q < colours.size(); ++q) {
     const int x = 16 + 32 * static_cast<int>(q % 2);  // the middle of each quarter
     const int y = 16 + 32 * static_cast<int>(q / 2);
     for (int c = 0; c < 3; ++c) {
-      const int got = back.rgba[4 * static_cast<std::size_t>(y * 64 + x) + static_cast<std::size_t>(c)];
-      EXPECT_NEAR(got, colours[q][static_cast<std::size_t>(c)], 3) << "quarter " << q << " channel " << c;
+      const int got =
+          back.rgba[4 * static_cast<std::size_t>(y * 64 + x) + static_cast<std::size_t>(c)];
+      EXPECT_NEAR(got, colours[q][static_cast<std::size_t>(c)], 3)
+          << "quarter " << q << " channel " << c;
     }
   }
 }

@@ -1,7 +1,7 @@
-// The ground's restitution with the implicit integrator (solver/ground_restitution.hpp): its law
-// against the spring–dashpot's motion integrated numerically, and a bar dropped on the ground at
-// steps of 12.5 ms, hundreds of impacts long, bouncing as central differences bounce it.
-#include "solver/ground_restitution.hpp"
+// The ground's restitution with the implicit integrator (dynamics/contact/ground_restitution.hpp):
+// its law against the spring–dashpot's motion integrated numerically, and a bar dropped on the
+// ground at steps of 12.5 ms, hundreds of impacts long, bouncing as central differences bounce it.
+#include "dynamics/contact/ground_restitution.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
-// The ground's friction inside an implicit step (solver/implicit_friction.hpp) for a node that
-// lands within the step: it is held from the iterate after the one it went below the plane at,
-// with the cap μs k d of its depth d there, which it keeps for the step; it lets go where the
-// step's solution has it above the plane again.
-#include "solver/implicit_friction.hpp"
+// The ground's friction inside an implicit step (dynamics/contact/ground_friction_implicit.hpp) for
+// a node that lands within the step: it is held from the iterate after the one it went below the
+// plane at, with the cap μs k d of its depth d there, which it keeps for the step; it lets go where
+// the step's solution has it above the plane again.
+#include "dynamics/contact/ground_friction_implicit.hpp"
 
 #include <gtest/gtest.h>
 

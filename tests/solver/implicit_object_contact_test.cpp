@@ -1,9 +1,9 @@
-// Contact between objects with the implicit integrator (solver/implicit_object_contact.hpp),
-// against numbers from outside the code: momentum conserved through a collision, the rest height
-// a penalty of known stiffness gives under a known weight, Coulomb's law on a slope (a rod that
-// sticks below its angle of friction, and slides above it at g (sin θ − μk cos θ)), wires that
-// never pass through each other at steps hundreds of times the explicit bound, and the motion
-// bit for bit on any thread count.
+// Contact between objects with the implicit integrator
+// (dynamics/contact/object_contact_implicit.hpp), against numbers from outside the code: momentum
+// conserved through a collision, the rest height a penalty of known stiffness gives under a known
+// weight, Coulomb's law on a slope (a rod that sticks below its angle of friction, and slides above
+// it at g (sin θ − μk cos θ)), wires that never pass through each other at steps hundreds of times
+// the explicit bound, and the motion bit for bit on any thread count.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -16,13 +16,13 @@
 
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
+#include "dynamics/contact/ground_restitution.hpp"
+#include "dynamics/contact/object_contact_implicit.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/restitution.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
-#include "solver/ground_restitution.hpp"
 #include "solver/implicit_integrator.hpp"
-#include "solver/implicit_object_contact.hpp"
 #include "solver_support.hpp"
 #include "stepping/time_step.hpp"
 #include "test_support.hpp"
@@ -260,7 +260,7 @@ TEST(ImplicitObjectContact, ARodOnRailsSlidesAtCoulombsAcceleration) {
 // step; the speed envelope splits the steps so that it bounces off instead, at 90°, 45°, 15° and
 // 0° to it: after 0.1 s every node of it is above the fixed wire by more than the two radii,
 // moving up. (Parallel, with their nodes over each other, the bars' closest points are not
-// unique: the mollifier and the node–bar pairs of implicit_object_contact.hpp hold them.)
+// unique: the mollifier and the node–bar pairs of object_contact_implicit.hpp hold them.)
 TEST(ImplicitObjectContact, AThrownWireBouncesOffAPinnedOne) {
   for (const double degrees : {90.0, 45.0, 15.0, 0.0}) {
     const double phi = degrees * std::numbers::pi / 180.0;  // from the fixed wire, along y

@@ -1,6 +1,6 @@
 #pragma once
-// Contact between objects and within one (dynamics/object_contact.hpp) inside an implicit step,
-// as potentials of the positions that Newton's method minimises with the rest.
+// Contact between objects and within one (dynamics/contact/object_contact.hpp) inside an implicit
+// step, as potentials of the positions that Newton's method minimises with the rest.
 //
 // Normal: the penalty's energy E_p(δ) summed over the pairs of primitives touching at the
 // iterate, δ their penetration, found again at every iterate (a pair that comes within reach

@@ -1,8 +1,8 @@
 #pragma once
 // The ground's Coulomb friction inside an implicit step: the stick spring of central differences'
-// contact (dynamics/ground_contact.hpp), as a potential of the positions that Newton's method
-// minimises with the rest. Each node below the plane at x_n keeps its anchor a on the plane and
-// is held by the tangential spring k u, u = P (x − a) (P the projection onto the plane, k the
+// contact (dynamics/contact/ground_contact.hpp), as a potential of the positions that Newton's
+// method minimises with the rest. Each node below the plane at x_n keeps its anchor a on the plane
+// and is held by the tangential spring k u, u = P (x − a) (P the projection onto the plane, k the
 // ground's penalty stiffness), up to the cap μ N (μs while it sticks, μk while it slides; N =
 // k × its depth at x_n, lagged), beyond which it slides at the cap (capped_stick_spring.hpp):
 // convex and once differentiable, so the step stays a minimisation. A node that sticks moves

@@ -1,6 +1,6 @@
-#include "dynamics/contact_closest.hpp"
+#include "dynamics/contact/contact_closest.hpp"
 
-#include "dynamics/contact_geometry.hpp"
+#include "dynamics/contact/contact_geometry.hpp"
 
 namespace dinam {
 namespace {

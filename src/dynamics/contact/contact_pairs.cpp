@@ -1,10 +1,10 @@
-#include "dynamics/contact_pairs.hpp"
+#include "dynamics/contact/contact_pairs.hpp"
 
 #include <algorithm>
 #include <optional>
 
-#include "dynamics/contact_candidates.hpp"
-#include "dynamics/contact_closest.hpp"
+#include "dynamics/contact/contact_candidates.hpp"
+#include "dynamics/contact/contact_closest.hpp"
 #include "model/model.hpp"
 
 namespace dinam {

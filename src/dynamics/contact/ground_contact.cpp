@@ -1,4 +1,4 @@
-#include "dynamics/ground_contact.hpp"
+#include "dynamics/contact/ground_contact.hpp"
 
 #include <algorithm>
 
@@ -173,7 +173,7 @@ constexpr double kNsPerGroundNode = 9.2;
 
 // The ground: its normal penalty a potential, its damper and friction booked on their lines.
 // Under the implicit step the penalty is a term of the step's potential and the friction the
-// stick springs of solver/implicit_friction.hpp.
+// stick springs of dynamics/contact/ground_friction_implicit.hpp.
 const ForceKind kGroundContact{
     .label = "ground",
     .spring = nullptr,

@@ -1,4 +1,4 @@
-#include "dynamics/contact_grid.hpp"
+#include "dynamics/contact/contact_grid.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "dynamics/contact_grid.hpp"
+#include "dynamics/contact/contact_grid.hpp"
 
 namespace dinam {
 

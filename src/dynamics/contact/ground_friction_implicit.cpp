@@ -1,11 +1,11 @@
-#include "solver/implicit_friction.hpp"
+#include "dynamics/contact/ground_friction_implicit.hpp"
 
 #include <algorithm>
 #include <limits>
 
+#include "dynamics/contact/capped_stick_spring.hpp"
+#include "dynamics/free_dofs.hpp"
 #include "model/model.hpp"
-#include "solver/capped_stick_spring.hpp"
-#include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
 

@@ -1,4 +1,4 @@
-#include "solver/ground_restitution.hpp"
+#include "dynamics/contact/ground_restitution.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "dynamics/contact_at_rest.hpp"
+#include "dynamics/contact/contact_at_rest.hpp"
 
-#include "dynamics/contact_pairs.hpp"
+#include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/state.hpp"
 #include "dynamics/tearing.hpp"

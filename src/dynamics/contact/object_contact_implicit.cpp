@@ -1,18 +1,18 @@
-#include "solver/implicit_object_contact.hpp"
+#include "dynamics/contact/object_contact_implicit.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "dynamics/contact_closest.hpp"
-#include "dynamics/contact_geometry.hpp"
-#include "dynamics/contact_pairs.hpp"
-#include "dynamics/object_contact.hpp"
+#include "dynamics/contact/capped_stick_spring.hpp"
+#include "dynamics/contact/contact_closest.hpp"
+#include "dynamics/contact/contact_geometry.hpp"
+#include "dynamics/contact/contact_pairs.hpp"
+#include "dynamics/contact/ground_restitution.hpp"
+#include "dynamics/contact/object_contact.hpp"
+#include "dynamics/free_dofs.hpp"
 #include "model/model.hpp"
-#include "solver/capped_stick_spring.hpp"
-#include "solver/ground_restitution.hpp"
-#include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
 namespace {

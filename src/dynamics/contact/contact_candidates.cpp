@@ -1,8 +1,8 @@
-#include "dynamics/contact_candidates.hpp"
+#include "dynamics/contact/contact_candidates.hpp"
 
 #include <algorithm>
 
-#include "dynamics/contact_closest.hpp"
+#include "dynamics/contact/contact_closest.hpp"
 #include "model/model.hpp"
 
 namespace dinam {

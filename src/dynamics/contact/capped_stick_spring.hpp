@@ -1,7 +1,7 @@
 #pragma once
 // The stick spring of Coulomb friction inside an implicit step, as a potential of its stretch u
-// (implicit_friction.hpp for the ground, implicit_object_contact.hpp between objects): k u up to
-// the cap μN, beyond which it slides at the cap,
+// (ground_friction_implicit.hpp for the ground, object_contact_implicit.hpp between objects): k u
+// up to the cap μN, beyond which it slides at the cap,
 //   E(u) = ½ k |u|²  for |u| ≤ r_c = μN/k,   μN (|u| − r_c) + ½ k r_c²  beyond,
 // convex and once differentiable.
 #include "core/types.hpp"

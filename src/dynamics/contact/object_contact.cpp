@@ -1,4 +1,4 @@
-#include "dynamics/object_contact.hpp"
+#include "dynamics/contact/object_contact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <type_traits>
 #include <utility>
 
-#include "dynamics/contact_candidates.hpp"
-#include "dynamics/contact_geometry.hpp"
-#include "dynamics/contact_grid.hpp"
-#include "dynamics/contact_pairs.hpp"
+#include "dynamics/contact/contact_candidates.hpp"
+#include "dynamics/contact/contact_geometry.hpp"
+#include "dynamics/contact/contact_grid.hpp"
+#include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "model/model.hpp"
 
@@ -280,7 +280,8 @@ constexpr double kNsPerWatched = 30.0;
 
 // Contact between objects and within one: found after the team's job (its pair search shares
 // its own loops), its penalty's energy booked where the pairs touch at the last force evaluation.
-// Under the implicit step its penalty and lagged friction are solver/implicit_object_contact.hpp's.
+// Under the implicit step its penalty and lagged friction are
+// dynamics/contact/object_contact_implicit.hpp's.
 const ForceKind kObjectContact{
     .label = "contact between objects",
     .spring = nullptr,

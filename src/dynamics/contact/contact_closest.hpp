@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "dynamics/contact_grid.hpp"
-#include "dynamics/contact_pairs.hpp"
+#include "dynamics/contact/contact_grid.hpp"
+#include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/state.hpp"
 #include "model/model.hpp"
 
