@@ -1,5 +1,6 @@
 #include "dynamics/axial_spring.hpp"
 
+#include "dynamics/broken.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/parallel_loops.hpp"
@@ -44,8 +45,7 @@ void add_axial_damper_forces(ForceContext& context) {
   for_each_spring_chunk(worker, &MemberShare::bars, model.bar_count(), kSpringBlockSize,
                         [&](Index first, Index count) {
                           for (Index b = first; b < first + count; ++b) {
-                            if (model.bar_damping[b] == 0.0 ||
-                                (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
+                            if (model.bar_damping[b] == 0.0 || is_broken(state.bar_broken, b)) {
                               continue;
                             }
                             const Index n0 = model.bar_nodes[2 * b];
@@ -64,18 +64,13 @@ void add_axial_damper_forces(ForceContext& context) {
 }
 
 double axial_spring_energy(const Model& model, const State& state, SpringEnergy which) {
-  double energy = 0.0;
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    if (!state.bar_broken.empty() && state.bar_broken[b] != 0) {
-      continue;
-    }
+  return sum_over_intact(state.bar_broken, model.bar_count(), [&](Index b) {
     const auto r = axial_spring(
         state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
         model.bar_rest_length[b], model.bar_axial_stiffness[b],
         plastic_set_of(state.bar_plastic_set, b), yield_limit(model.bar_yield_force, b));
-    energy += which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
-  }
-  return energy;
+    return which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
+  });
 }
 
 const SpringKind kAxialSprings{

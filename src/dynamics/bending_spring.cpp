@@ -1,5 +1,6 @@
 #include "dynamics/bending_spring.hpp"
 
+#include "dynamics/broken.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/spring_block.hpp"
 #include "model/model.hpp"
@@ -34,19 +35,14 @@ void add_bending_spring_forces(ForceContext& context) {
 }
 
 double bending_spring_energy(const Model& model, const State& state, SpringEnergy which) {
-  double energy = 0.0;
-  for (Index s = 0; s < model.bend_count(); ++s) {
-    if (!state.bend_broken.empty() && state.bend_broken[s] != 0) {
-      continue;
-    }
+  return sum_over_intact(state.bend_broken, model.bend_count(), [&](Index s) {
     const Index* nodes = &model.bend_nodes[3 * s];
     const auto r = bending_spring(state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]],
                                   model.bend_rest_angle[s], model.bend_stiffness[s],
                                   plastic_set_of(state.bend_plastic_set, s),
                                   yield_limit(model.bend_yield_moment, s));
-    energy += which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
-  }
-  return energy;
+    return which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
+  });
 }
 
 const SpringKind kBendingSprings{

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "dynamics/bending_spring.hpp"
+#include "dynamics/broken.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "model/model.hpp"
@@ -30,7 +31,7 @@ void add_clamp_forces(ForceContext& context) {
     if (!context.worker.owns(a)) {
       continue;
     }
-    if (!state.clamp_broken.empty() && state.clamp_broken[s] != 0) {
+    if (is_broken(state.clamp_broken, s)) {
       if (context.update_history && ledger.enabled && model.clamps_yield) {
         ledger.clamp_flow[s] = 0.0;
       }
@@ -48,15 +49,10 @@ void add_clamp_forces(ForceContext& context) {
 }
 
 double clamp_spring_energy(const Model& model, const State& state, SpringEnergy which) {
-  double energy = 0.0;
-  for (Index s = 0; s < model.clamp_count(); ++s) {
-    if (!state.clamp_broken.empty() && state.clamp_broken[s] != 0) {
-      continue;
-    }
+  return sum_over_intact(state.clamp_broken, model.clamp_count(), [&](Index s) {
     const auto r = clamp_spring(model, state, s);
-    energy += which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
-  }
-  return energy;
+    return which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
+  });
 }
 
 // A clamp is a bending spring, booked with them in the energy report.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "dynamics/broken.hpp"
 #include "dynamics/force_context.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/vector_lanes.hpp"
@@ -43,11 +44,6 @@ inline constexpr Index kSpringBlockSize = 64;
 // the context advances history (the array is empty for a kind that cannot yield); null otherwise.
 inline std::vector<double>* flow_record(const ForceContext& context, std::vector<double>& flow) {
   return context.update_history && !flow.empty() ? &flow : nullptr;
-}
-
-// The broken flags of one kind of spring, or null when the model cannot tear.
-inline const std::uint8_t* broken_flags(const std::vector<std::uint8_t>& flags) {
-  return flags.empty() ? nullptr : flags.data();
 }
 
 template <int kNodes>

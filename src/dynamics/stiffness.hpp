@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
 #include "core/types.hpp"
+#include "dynamics/broken.hpp"
 
 namespace dinam {
 
@@ -94,14 +95,13 @@ void add_spring_stiffness(Index count, const std::vector<Index>& nodes,
                           const std::vector<std::uint8_t>& broken, const std::vector<Vec3>& x,
                           StiffnessSink& sink, const Stiffness& stiffness) {
   constexpr std::size_t kSize = 9 * kNodes * kNodes;
-  auto is_broken = [&](Index s) { return !broken.empty() && broken[s] != 0; };
   // Kept from call to call: the matrices of the Wuson's torsion springs are 6.6 MB.
   thread_local std::vector<double> kept;
   std::vector<double>& matrices = kept;  // the calling thread's, whichever thread computes
   matrices.resize(kSize * static_cast<std::size_t>(count));
   auto compute = [&](Index begin, Index end) {
     for (Index s = begin; s < end; ++s) {
-      if (is_broken(s)) {
+      if (is_broken(broken, s)) {
         continue;
       }
       const Index* spring = &nodes[static_cast<std::size_t>(kNodes) * s];
@@ -123,7 +123,7 @@ void add_spring_stiffness(Index count, const std::vector<Index>& nodes,
       },
       !shared);
   for (Index s = 0; s < count; ++s) {
-    if (!is_broken(s)) {
+    if (!is_broken(broken, s)) {
       sink.add_prepared(&nodes[static_cast<std::size_t>(kNodes) * s], kNodes,
                         &matrices[kSize * static_cast<std::size_t>(s)]);
     }

@@ -1,5 +1,6 @@
 #include "dynamics/torsion_spring.hpp"
 
+#include "dynamics/broken.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/spring_block.hpp"
 #include "model/model.hpp"
@@ -35,19 +36,14 @@ void add_torsion_spring_forces(ForceContext& context) {
 }
 
 double torsion_spring_energy(const Model& model, const State& state, SpringEnergy which) {
-  double energy = 0.0;
-  for (Index s = 0; s < model.torsion_count(); ++s) {
-    if (!state.torsion_broken.empty() && state.torsion_broken[s] != 0) {
-      continue;
-    }
+  return sum_over_intact(state.torsion_broken, model.torsion_count(), [&](Index s) {
     const Index* nodes = &model.torsion_nodes[4 * s];
     const auto r = torsion_spring(
         state.x[nodes[0]], state.x[nodes[1]], state.x[nodes[2]], state.x[nodes[3]],
         model.torsion_rest_angle[s], model.torsion_stiffness[s],
         plastic_set_of(state.torsion_plastic_set, s), yield_limit(model.torsion_yield_moment, s));
-    energy += which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
-  }
-  return energy;
+    return which == SpringEnergy::kWithFlow ? r.energy + r.dissipated : r.energy;
+  });
 }
 
 const SpringKind kTorsionSprings{

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/geometry.hpp"
+#include "dynamics/broken.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/vector_lanes.hpp"
@@ -25,10 +26,6 @@ struct DragBlock {
   double size[kWindBlock];         // a face's node count; a bar's diameter, m
   double acts[kWindBlock];         // 1, or 0 for a torn face or bar
 };
-
-bool torn(const std::vector<std::uint8_t>& broken, Index item) {
-  return !broken.empty() && broken[item] != 0;
-}
 
 // The wind at every node in the wind, when it is turbulent (uniform otherwise: no node needs it).
 void evaluate_node_winds(const TeamMember& member, const WindLoad& wind, const Vec3& uniform,
@@ -117,7 +114,7 @@ void face_forces(const TeamMember& member, const Model& model, const Vec3& unifo
       block.velocity.set(k, velocity);
       block.wind.set(k, turbulent ? felt : uniform);
       block.size[k] = nodes;
-      block.acts[k] = torn(state.face_broken, f) ? 0.0 : 1.0;  // torn open: the wind passes
+      block.acts[k] = is_broken(state.face_broken, f) ? 0.0 : 1.0;  // torn open: the wind passes
     }
     compute_drag(
         block, size, wind.field, wind.field.face_drag,
@@ -150,7 +147,7 @@ void bar_forces(const TeamMember& member, const Model& model, const Vec3& unifor
                             ? Vec3(0.5 * (state.wind.node_wind[n0] + state.wind.node_wind[n1]))
                             : uniform);
       block.size[k] = 2.0 * model.bar_radius[b];
-      block.acts[k] = torn(state.bar_broken, b) ? 0.0 : 1.0;
+      block.acts[k] = is_broken(state.bar_broken, b) ? 0.0 : 1.0;
     }
     compute_drag(
         block, size, wind.field, wind.field.bar_drag,

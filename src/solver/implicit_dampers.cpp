@@ -3,6 +3,7 @@
 #include <tuple>
 #include <utility>
 
+#include "dynamics/broken.hpp"
 #include "dynamics/state.hpp"
 #include "model/model.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -17,7 +18,7 @@ void for_each_damped_bar(const Model& model, const State& state, const std::vect
                          const Body& body) {
   for (Index bar = 0; bar < model.bar_count(); ++bar) {
     const double c = model.bar_damping[bar];
-    if (c == 0.0 || (!state.bar_broken.empty() && state.bar_broken[bar] != 0)) {
+    if (c == 0.0 || is_broken(state.bar_broken, bar)) {
       continue;
     }
     const Index a = model.bar_nodes[2 * bar];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "dynamics/broken.hpp"
 #include "dynamics/contact/contact_grid.hpp"
 #include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/state.hpp"
@@ -30,11 +31,11 @@ inline bool objects_may_touch(const ObjectContact& contact, Index object_a, Inde
 }
 
 inline bool bar_broken(const State& state, Index bar) {
-  return !state.bar_broken.empty() && state.bar_broken[bar] != 0;
+  return is_broken(state.bar_broken, bar);
 }
 
 inline bool triangle_broken(const ObjectContact& contact, const State& state, Index triangle) {
-  return !state.face_broken.empty() && state.face_broken[contact.triangle_face[triangle]] != 0;
+  return is_broken(state.face_broken, contact.triangle_face[triangle]);
 }
 
 // The pair's closest points' weights (A's positive, B's negative) and separation p_A − p_B.
