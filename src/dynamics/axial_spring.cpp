@@ -1,5 +1,7 @@
 #include "dynamics/axial_spring.hpp"
 
+#include "dynamics/axial_damper_implicit.hpp"
+
 #include "dynamics/broken.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/integrator.hpp"
@@ -95,6 +97,9 @@ const ForceKind kAxialDampers{
     .spring = nullptr,
     .role = ForceRole::kDissipation,
     .implicit = ImplicitTreatment::kDamper,
+    .damper = {.mass_rate = nullptr,
+               .add_hessian = add_axial_damper_hessian,
+               .add_support_pull = add_axial_damper_support_pull},
     .switched = &ForceSwitches::axial_dampers,
     .present = [](const Model& model) { return model.any_bar_damping; },
     .prepare_forces = nullptr,

@@ -16,6 +16,7 @@
 #include "core/types.hpp"
 #include "dynamics/force_context.hpp"
 #include "dynamics/force_switches.hpp"
+#include "dynamics/free_dofs.hpp"
 #include "dynamics/spring_kind.hpp"
 #include "dynamics/state.hpp"
 #include "dynamics/step_cost.hpp"
@@ -38,7 +39,7 @@ enum class ImplicitTreatment {
   kInPotential,  // a term of the step's potential: its forces and stiffness at every iterate
   kLoadAtEnd,    // a load of the time alone, taken at t_{n+1}
   kLoadAtStart,  // a force that depends on the motion, taken at (x_n, v_n) as a load (lagged)
-  kDamper,       // linear in the velocities: its Hessian at x_n (solver/implicit_dampers.hpp)
+  kDamper,       // linear in the velocities: its dissipation over the step (ImplicitDamper)
   kOwnContact,   // contact between objects: its penalty and lagged friction
                  // (dynamics/contact/object_contact_implicit.hpp), beside the potential
 };
@@ -70,11 +71,30 @@ struct Potential {
   }
 };
 
+// A damper under the implicit step (ImplicitTreatment::kDamper): its dissipation over a step of
+// h, a quadratic ½ ΔxᵀDΔx of the free nodes' move from the step's base with D taken at x_n (a term
+// of the incremental potential, solver/implicit_integrator.hpp).
+struct ImplicitDamper {
+  // 1/s, a damping in proportion to the masses, D = α M/h on the Hessian's diagonal; null where
+  // none.
+  double (*mass_rate)(const Model&);
+  // D's other terms for a step of h from `x_start` (x_n), as triplets over the free dofs; null
+  // where none.
+  void (*add_hessian)(const Model&, const State&, const FreeDofs&, const std::vector<Vec3>& x_start,
+                      double h, DofTriplets&);
+  // N, added to `force` over the free dofs: the pull of its dampers whose other end is a support
+  // that moves, from `x_base` to where state.x has placed it at t_{n+1}; null where none.
+  void (*add_support_pull)(const Model&, const State&, const FreeDofs&,
+                           const std::vector<Vec3>& x_start, const std::vector<Vec3>& x_base,
+                           double h, Eigen::VectorXd& force);
+};
+
 struct ForceKind {
   const char* label;         // "gravity"; null for a spring kind, whose SpringKind names it
   const SpringKind* spring;  // a spring kind's own half (plastic sets, flow, tearing), else null
   ForceRole role;
   ImplicitTreatment implicit;
+  ImplicitDamper damper;          // how the implicit step takes it, for kDamper; nulls otherwise
   bool ForceSwitches::*switched;  // its switch: off, every loop leaves it out (tests isolate kinds)
   // Whether the model holds any of it (null: any model may); a kind absent costs nothing.
   bool (*present)(const Model&);

@@ -30,6 +30,7 @@ inline constexpr ForceKind kSpringForces{
     .spring = &kSpring,
     .role = ForceRole::kPotential,
     .implicit = ImplicitTreatment::kInPotential,
+    .damper = {},
     .switched = kSwitch,
     .present = nullptr,
     .prepare_forces = nullptr,

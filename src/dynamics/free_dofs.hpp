@@ -3,6 +3,7 @@
 // x, y and z of each free node, in node order. Pinned nodes (driven or not) have none: their
 // positions are given.
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "core/types.hpp"
@@ -10,6 +11,10 @@
 namespace dinam {
 
 struct Model;
+
+// Entries of a sparse matrix over the free dofs, summed where they repeat (Eigen's
+// setFromTriplets).
+using DofTriplets = std::vector<Eigen::Triplet<double>>;
 
 struct FreeDofs {
   std::vector<Index> first_dof;  // (n_nodes) the node's x dof (y, z follow), −1 when pinned

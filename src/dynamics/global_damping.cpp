@@ -24,6 +24,9 @@ const ForceKind kGlobalDamping{
     .spring = nullptr,
     .role = ForceRole::kDissipation,
     .implicit = ImplicitTreatment::kDamper,
+    .damper = {.mass_rate = [](const Model& model) { return model.global_damping; },
+               .add_hessian = nullptr,
+               .add_support_pull = nullptr},
     .switched = &ForceSwitches::global_damping,
     .present = nullptr,  // the settling phase may damp a model that has none
     .prepare_forces = nullptr,

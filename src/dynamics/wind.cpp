@@ -224,6 +224,7 @@ const ForceKind kWind{
     .spring = nullptr,
     .role = ForceRole::kLoad,
     .implicit = ImplicitTreatment::kLoadAtStart,
+    .damper = {},
     .switched = &ForceSwitches::wind,
     .present = [](const Model& model) { return model.wind.field.enabled; },
     .prepare_forces = compute_wind_drag,

@@ -20,7 +20,6 @@
 #include "dynamics/tearing.hpp"
 #include "model/contact_builder.hpp"
 #include "model/model.hpp"
-#include "solver/implicit_dampers.hpp"
 #include "solver/implicit_energy.hpp"
 #include "solver/implicit_newton.hpp"
 #include "solver/positive_definite_solver.hpp"
@@ -262,20 +261,33 @@ struct ImplicitIntegrator::Workspace {
     place_driven_nodes(model, t_next, state);
   }
 
-  // 6. The incremental potential of this step: the dampers' Hessian, with the bars' directions at
-  // x_n (implicit_dampers.hpp), and α m / h on the diagonal; the dampers' pull from supports
-  // that move, their ends placed at t_{n+1} above.
+  // 6. The incremental potential of this step: each damper kind's dissipation (its ImplicitDamper,
+  // force_kind.hpp: the bars' along their directions at x_n, the global damping's α m / h on the
+  // diagonal) and its pull from supports that move, their ends placed at t_{n+1} above.
   void set_potential(const Model& model, State& state) {
-    const bool global = model.global_damping > 0.0;
     potential.model = &model;
     potential.state = &state;
     potential.hs = hs;
-    potential.alpha = global ? model.global_damping : 0.0;
+    potential.alpha = 0.0;
     damper_triplets.clear();
-    add_damper_hessian(model, state, dofs, x_start, hs, damper_triplets);
+    potential.pinned_damping.setZero(dofs.count);
+    for (const ForceKind* kind : kForceKinds) {
+      const ImplicitDamper& damper = kind->damper;
+      if (kind->implicit != ImplicitTreatment::kDamper || !kind->acts_in(model, ForceSwitches{})) {
+        continue;
+      }
+      if (damper.mass_rate != nullptr) {
+        potential.alpha += damper.mass_rate(model);
+      }
+      if (damper.add_hessian != nullptr) {
+        damper.add_hessian(model, state, dofs, x_start, hs, damper_triplets);
+      }
+      if (damper.add_support_pull != nullptr) {
+        damper.add_support_pull(model, state, dofs, x_start, x_base, hs, potential.pinned_damping);
+      }
+    }
     potential.damping = &dampers.set(dofs.count, damper_triplets);
-    pinned_damper_forces(model, state, dofs, x_start, x_base, hs, potential.pinned_damping);
-    potential.inertia = mass / (hs * hs) + (global ? model.global_damping / hs : 0.0) * mass;
+    potential.inertia = mass / (hs * hs) + (potential.alpha / hs) * mass;
     free_part(dofs, predicted, potential.predicted);
     free_part(dofs, x_base, potential.start);
   }

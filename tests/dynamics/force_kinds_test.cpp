@@ -62,6 +62,13 @@ TEST(ForceKinds, EachKindsHooksFitItsRole) {
     for (const LedgerLine& line : kind->ledger) {
       EXPECT_EQ(line.force == nullptr, line.work == nullptr);
     }
+    const ImplicitDamper& damper = kind->damper;
+    const bool damps = damper.mass_rate != nullptr || damper.add_hessian != nullptr;
+    EXPECT_EQ(damps, kind->implicit == ImplicitTreatment::kDamper)
+        << "a damper gives the implicit step its dissipation; nothing else does";
+    if (damper.add_support_pull != nullptr) {
+      EXPECT_NE(damper.add_hessian, nullptr) << "a support's pull is its Hessian's cross term";
+    }
     switch (kind->implicit) {
       case ImplicitTreatment::kInPotential:
         EXPECT_TRUE(stores);

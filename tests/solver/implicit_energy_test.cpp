@@ -237,7 +237,7 @@ objects:
 }
 
 // A rod with axial dampers swinging from a support shaken up and down (5 cm at 2 Hz), the damper
-// on the support pulled by its move (implicit_dampers.hpp). The support is placed at
+// on the support pulled by its move (dynamics/axial_damper_implicit.hpp). The support is placed at
 // t_{n+1} before each step, so the springs on it take its move as energy: booked as the
 // support's work, F_P·(x_n − x_{n+1}) at the pinned node, the balance holds to the same bound as
 // above, while the support moves far more energy than that (left out, the balance strayed by it:

@@ -179,6 +179,7 @@ const ForceKind kGroundContact{
     .spring = nullptr,
     .role = ForceRole::kContact,
     .implicit = ImplicitTreatment::kInPotential,
+    .damper = {},
     .switched = &ForceSwitches::ground,
     .present = [](const Model& model) { return model.ground.enabled; },
     .prepare_forces = nullptr,

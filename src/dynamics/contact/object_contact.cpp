@@ -287,6 +287,7 @@ const ForceKind kObjectContact{
     .spring = nullptr,
     .role = ForceRole::kContact,
     .implicit = ImplicitTreatment::kOwnContact,
+    .damper = {},
     .switched = &ForceSwitches::object_contact,
     .present = [](const Model& model) { return model.contact.enabled; },
     .prepare_forces = nullptr,

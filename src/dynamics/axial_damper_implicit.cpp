@@ -1,4 +1,4 @@
-#include "solver/implicit_dampers.hpp"
+#include "dynamics/axial_damper_implicit.hpp"
 
 #include <tuple>
 #include <utility>
@@ -6,7 +6,6 @@
 #include "dynamics/broken.hpp"
 #include "dynamics/state.hpp"
 #include "model/model.hpp"
-#include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
 namespace {
@@ -29,9 +28,9 @@ void for_each_damped_bar(const Model& model, const State& state, const std::vect
 
 }  // namespace
 
-void add_damper_hessian(const Model& model, const State& state, const FreeDofs& dofs,
-                        const std::vector<Vec3>& x_start, double h,
-                        std::vector<Eigen::Triplet<double>>& triplets) {
+void add_axial_damper_hessian(const Model& model, const State& state, const FreeDofs& dofs,
+                              const std::vector<Vec3>& x_start, double h,
+                              std::vector<Eigen::Triplet<double>>& triplets) {
   if (!model.any_bar_damping) {
     return;
   }
@@ -53,10 +52,10 @@ void add_damper_hessian(const Model& model, const State& state, const FreeDofs& 
   });
 }
 
-void pinned_damper_forces(const Model& model, const State& state, const FreeDofs& dofs,
-                          const std::vector<Vec3>& x_start, const std::vector<Vec3>& x_base,
-                          double h, Eigen::VectorXd& force) {
-  force.setZero(dofs.count);
+void add_axial_damper_support_pull(const Model& model, const State& state, const FreeDofs& dofs,
+                                   const std::vector<Vec3>& x_start,
+                                   const std::vector<Vec3>& x_base, double h,
+                                   Eigen::VectorXd& force) {
   if (!model.any_bar_damping || model.pin_motions.empty()) {
     return;
   }
