@@ -32,6 +32,10 @@ struct StepOptions {
   std::optional<double> global_damping;
   // Driven pins stay where they are instead of following their paths (PinMotion).
   bool pins_hold_still = false;
+  // The potential's forces alone, −∇V (compute_potential_forces): the ground gives its elastic
+  // push without its damper and friction, so that neither the velocities nor the contact history
+  // are read.
+  bool elastic_only = false;
 };
 
 }  // namespace dinam

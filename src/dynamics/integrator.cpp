@@ -265,12 +265,12 @@ void end_step(State& state, double dt) {
 namespace {
 
 void compute_forces_at(const Model& model, const ForceSwitches& switches, State& state,
-                       bool update_history, double time) {
+                       bool update_history, double time, const StepOptions& options = {}) {
   const bool alone = !step_runs_in_parallel(model);
   const WorkSplit* split = share_work(model, state);
   thread_team().run(
       [&](const TeamMember& member) {
-        add_forces({member, split}, model, switches, {}, state, update_history, time);
+        add_forces({member, split}, model, switches, options, state, update_history, time);
       },
       alone);
   write_plastic_sets_put_aside(state);
@@ -299,6 +299,12 @@ void compute_static_forces(const Model& model, const ForceSwitches& switches, St
   const double dt = std::exchange(state.dt, 0.0);
   compute_forces(model, switches, state, false);
   state.dt = dt;
+}
+
+void compute_potential_forces(const Model& model, const ForceSwitches& switches, State& state) {
+  StepOptions options;
+  options.elastic_only = true;
+  compute_forces_at(model, switches, state, false, state.time, options);
 }
 
 State make_state(const Model& model, bool track_energy) {

@@ -37,6 +37,12 @@ void compute_forces_at(const Model& model, const ForceSwitches& switches, State&
 // or drag), plastic sets and contact anchors left as they are.
 void compute_static_forces(const Model& model, const ForceSwitches& switches, State& state);
 
+// The forces of the potential alone at the present positions into state.force, −∇V of the kinds
+// `switches` leaves on (potential kinds: springs, gravity and fields, the ground's penalty), the
+// plastic sets held: neither the velocities nor the contact history are read, nor anything of the
+// state but state.force written. Newton's gradient in the implicit step.
+void compute_potential_forces(const Model& model, const ForceSwitches& switches, State& state);
+
 // Whether a step of `model` has enough work to pay for sharing it between threads
 // (kMinParallelItems springs), and whether it does: where the process's team (core/
 // thread_team.hpp) has several threads.

@@ -39,9 +39,8 @@ constexpr int kErrorSplits = 5;
 constexpr int kTakenBeforeLonger = 2;
 
 // The forces that derive from V: springs, gravity and the ground's normal penalty
-// (force_kinds.hpp). The friction anchors are not updated (compute_static_forces), and no node is
-// marked touching, so no stick spring acts. Contact between objects is ImplicitObjectContact's,
-// outside the switches.
+// (force_kinds.hpp), found by compute_potential_forces, which reads no velocity and no friction
+// anchor. Contact between objects is ImplicitObjectContact's, outside the switches.
 ForceSwitches potential_switches() {
   return switches_treated_as(ImplicitTreatment::kInPotential);
 }
@@ -94,7 +93,7 @@ struct IncrementalPotential {
 
   // g = M(x − x̂)/h² − F(x) + ∇hD; leaves the potential's forces at x in state.force.
   void gradient(Vector& g) const {
-    compute_static_forces(*model, switches, *state);
+    compute_potential_forces(*model, switches, *state);
     friction.add_forces(state->x, state->force);
     objects.add_forces(*model, *state);
     free_part(dofs, state->x, x);
@@ -143,7 +142,6 @@ struct ImplicitIntegrator::Workspace {
   TripletMatrix dampers;          // D, the dampers' Hessian
   IncrementalPotential potential{dofs, mass, x_start, friction, objects};
   NewtonWorkspace newton;
-  std::vector<std::uint8_t> touching_start;  // State::contact_touching at x_n
   std::vector<Eigen::Triplet<double>> friction_triplets;
   TripletMatrix held;     // the friction springs' Hessian, from friction_triplets
   SparseMatrix system;    // the Hessian factorised last
@@ -240,13 +238,10 @@ struct ImplicitIntegrator::Workspace {
   }
 
   // 4. The friction springs of the nodes on the ground, and the contact between objects, at x_n.
-  // Central differences' own friction, which compute_static_forces applies to the nodes marked
-  // touching, is no potential: the solve sees none marked (the marks come back with the step).
+  // (Central differences' own friction is no potential: the step's potential forces leave it out.)
   void start_contact(const Model& model, State& state) {
     friction.start_step(model, state);
     objects.start_step(model, state);
-    touching_start = state.contact_touching;
-    std::fill(state.contact_touching.begin(), state.contact_touching.end(), 0);
   }
 
   // 5. x̂ = x_b + h v_b + h² M⁻¹ F_e (h: the step solved for); driven pins go to their places at
@@ -300,7 +295,6 @@ struct ImplicitIntegrator::Workspace {
 
   // The state as it was before the step was tried.
   void restore(State& state) const {
-    state.contact_touching = touching_start;
     state.x = x_start;
     state.velocity = v_start;
     state.time = t_next - h;
@@ -434,7 +428,6 @@ struct ImplicitIntegrator::Workspace {
   // backward Euler's step into the penalty took it. The springs that flowed keep their new
   // plastic sets (the return mapping at x_{n+1}).
   void book_and_rebound(const Model& model, State& state, const ImplicitStepEnds* ends) {
-    state.contact_touching = touching_start;
     if (ends) {
       const EnergyAccounts step = implicit_step_accounts(*ends);
       state.energy.add_works(step, 1.0);
@@ -449,9 +442,7 @@ struct ImplicitIntegrator::Workspace {
     friction.finish_step(model, state);
     objects.finish_step(model, h, state);
     if (any_yield) {
-      held_velocity = state.velocity;
       compute_forces(model, spring_switches(), state, true);
-      state.velocity = held_velocity;
     }
   }
 
@@ -470,8 +461,7 @@ struct ImplicitIntegrator::Workspace {
     state.step += 1;
   }
 
-  std::vector<Vec3> accel;          // this step's accelerations, while it is judged
-  std::vector<Vec3> held_velocity;  // v_{n+1}, while the springs' plastic sets move on
+  std::vector<Vec3> accel;  // this step's accelerations, while it is judged
   // The step's ends (measure_ends), and the positions x_{n+1} while P is measured at x_n.
   ImplicitStepEnds step_ends;
   std::vector<Vec3> x_end;

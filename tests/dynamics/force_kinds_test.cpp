@@ -143,3 +143,42 @@ TEST(ForceKinds, EveryPotentialsForceIsMinusItsGradient) {
 
 }  // namespace
 }  // namespace dinam
+
+namespace dinam {
+namespace {
+
+// The implicit step's gradient (compute_potential_forces) is −∇V alone: whatever the velocities
+// and the ground's friction history say, the forces are the static ones of a state with neither,
+// and the state is left as it was but for its forces.
+TEST(ForceKinds, PotentialForcesReadNoVelocityNorFrictionHistory) {
+  test::PerturbedLattice p = perturbed_lattice();
+  const Model& model = p.model;
+  const ForceSwitches potential = switches_treated_as(ImplicitTreatment::kInPotential);
+  State quiet = p.state;  // at rest, nothing touching: the static forces
+  std::fill(quiet.contact_touching.begin(), quiet.contact_touching.end(), 0);
+  compute_static_forces(model, potential, quiet);
+
+  State moving = p.state;
+  int below = 0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    moving.velocity[i] = Vec3(0.3 * i, -0.2, 0.1 * (i % 3));
+    if (model.ground.clearance(i, moving.x[i]) < 0.0 && !model.pinned(i)) {
+      below += 1;
+      moving.contact_touching[i] = 1;  // anchored away from its foot: a stretched stick spring
+      moving.contact_anchor[i] = model.ground.foot(moving.x[i]) + Vec3(0.01, 0.02, 0.0);
+    }
+  }
+  ASSERT_GT(below, 0) << "the lattice dips into the ground";
+  const State before = moving;
+  compute_potential_forces(model, potential, moving);
+  for (Index i = 0; i < model.node_count(); ++i) {
+    EXPECT_EQ(moving.force[i], quiet.force[i]) << "node " << i;
+    EXPECT_EQ(moving.velocity[i], before.velocity[i]);
+    EXPECT_EQ(moving.contact_touching[i], before.contact_touching[i]);
+    EXPECT_EQ(moving.contact_anchor[i], before.contact_anchor[i]);
+  }
+  EXPECT_EQ(moving.dt, before.dt);
+}
+
+}  // namespace
+}  // namespace dinam

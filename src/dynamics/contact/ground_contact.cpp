@@ -125,6 +125,24 @@ void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping
       });
 }
 
+void add_ground_penalty_forces(ForceContext& context) {
+  const Model& model = context.model;
+  const GroundContact& ground = model.ground;
+  if (!ground.enabled) {
+    return;
+  }
+  const State& state = context.state;
+  for_each_own_node(context.worker, model.node_count(), [&](Index i) {
+    const double d = dot3(state.x[i] - ground.point, ground.normal) - ground.node_radius[i];
+    if (d < 0.0 && !model.pinned(i)) {
+      // As ground_contact() finds it: the depth of the node's lowest point, x − r n.
+      const Vec3 lowest = state.x[i] - ground.node_radius[i] * ground.normal;
+      const double penetration = -dot3(lowest - ground.point, ground.normal);
+      context.force[i] += (ground.node_stiffness[i] * penetration) * ground.normal;
+    }
+  });
+}
+
 double ground_contact_energy(const Model& model, const State& state) {
   const GroundContact& ground = model.ground;
   if (!ground.enabled) {
@@ -184,7 +202,11 @@ const ForceKind kGroundContact{
     .present = [](const Model& model) { return model.ground.enabled; },
     .prepare_forces = nullptr,
     .add_forces =
-        [](ForceContext& total, const StepOptions&) {
+        [](ForceContext& total, const StepOptions& options) {
+          if (options.elastic_only) {
+            add_ground_penalty_forces(total);
+            return;
+          }
           add_ground_contact_forces(total,
                                     ledger_part(total.state, &EnergyWorkspace::contact_damping),
                                     ledger_part(total.state, &EnergyWorkspace::friction));

@@ -93,6 +93,10 @@ struct ContactForces {
 void add_ground_contact_forces(ForceContext& context, std::vector<Vec3>* damping_ledger = nullptr,
                                std::vector<Vec3>* friction_ledger = nullptr);
 
+// The elastic push alone, k (−d) n on every free node below the plane (the same bits as above's
+// first term): the ground's share of −∇V. Reads no velocity and no contact history.
+void add_ground_penalty_forces(ForceContext& context);
+
 double ground_contact_energy(const Model& model, const State& state);  // Σ ½ k d², J
 
 // Every free node below the plane marked touching and sticking, its stick spring anchored at its
