@@ -32,6 +32,9 @@ constexpr double kAssemblyNsPerSpring = 3000.0;
 constexpr double kForceEvaluationsPerIteration = 3.0;
 constexpr double kNsPerFactorNonzero = 0.4;
 
+// How many times short a free structure's implicit estimate may be (estimate_margin).
+constexpr double kFreeStructureMargin = 10.0;
+
 // Below this share of its motions left free by its bars, a structure holds its shape.
 constexpr double kHeldShapeShare = 0.02;
 
@@ -104,8 +107,15 @@ ImplicitMotion expected_motion(const Model& model) {
   }
   const bool free_piece = std::any_of(pieces.piece.begin(), pieces.piece.end(),
                                       [&](Index piece) { return pieces.held[piece] == 0; });
+  if (!free_piece) {
+    return ImplicitMotion::kSwings;
+  }
   const bool something_to_land_on = model.ground.enabled || model.contact.enabled;
-  return free_piece && something_to_land_on ? ImplicitMotion::kFolds : ImplicitMotion::kSwings;
+  return something_to_land_on ? ImplicitMotion::kFolds : ImplicitMotion::kTumbles;
+}
+
+double estimate_margin(ImplicitMotion motion) {
+  return motion == ImplicitMotion::kSwings ? 1.0 : kFreeStructureMargin;
 }
 
 ImplicitStepCounts assumed_step_counts(ImplicitMotion motion) {
@@ -113,6 +123,7 @@ ImplicitStepCounts assumed_step_counts(ImplicitMotion motion) {
     case ImplicitMotion::kHoldsItsShape:
       return {4.0, 35.0, 0.1};
     case ImplicitMotion::kFolds:
+    case ImplicitMotion::kTumbles:
       return {14.0, 140.0, 1.0};
     case ImplicitMotion::kSwings:
       break;
@@ -127,10 +138,13 @@ const char* motion_text(ImplicitMotion motion) {
     case ImplicitMotion::kFolds:
       return "its bars leave some of its motions to the bending and torsion springs, and it "
              "lands: it folds";
+    case ImplicitMotion::kTumbles:
+      return "no pin holds it, its bars do not hold its shape, and it has nothing to land on: "
+             "it tumbles";
     case ImplicitMotion::kSwings:
       break;
   }
-  return "held by its pins or with nothing to land on: it swings";
+  return "held by its pins: it swings";
 }
 
 HessianFactorSize hessian_factor_size(const Model& model) {

@@ -37,11 +37,26 @@ enum class ImplicitMotion {
   // where it lands, nearly a static problem of a buckling shell at each step. Measured: the
   // Wuson 12.3, 114 and 0.94; issue_2229.dxf 13, 108 and 0.7; MotionCaptureROM.ase 15.5, 144 and
   // 1.13; HUMAN.blend's first second 19, 190 and 1.18.
+  // The counts above are of the Wuson's first half second; once it lies folded on the ground its
+  // steps take far more (the whole 3 s ran over 300 s against 19 s estimated), and no count
+  // measured on one folding model has held for another: the estimate is not to be trusted.
   kFolds,
-  // Held by its pins, or nothing to land on: it swings. Measured: the paper's flag 5.0, 52 and
-  // 0.27; a steel cable 5.4, 56 and 0.85.
+  // A piece that no pin holds and that its bars do not hold in shape, with nothing to land on:
+  // it tumbles, turning through large angles a step, where Newton's method takes more iterations
+  // the faster it turns. Not measured; assumed as a fold, and not trusted either.
+  kTumbles,
+  // Held by its pins: it swings. Measured: the paper's flag 5.0, 52 and 0.27; a steel cable 5.4,
+  // 56 and 0.85.
   kSwings,
 };
+
+// How many times short the implicit estimate of a structure that moves so may be: 1 where it
+// swings (held by its pins, its estimates measured within a factor of two); 10 for a free
+// structure, which lands or tumbles, where runs of the real-mesh sweep took up to ten times and
+// more their estimate (E-AT-AT.q3o folding, over 10; collada.ogex, holding its shape, 11;
+// MotionCaptureROM.ase's 26 tumbling shells, 10: bench/notes/implicit-integrator.md). The
+// recommendation (stepping/integrator_choice.hpp) weighs the estimate by it.
+double estimate_margin(ImplicitMotion motion);
 
 // The share of the model's free motions that its bars leave free: Maxwell's count of a bar
 // framework, 3 n − 6 − b for each piece of the mesh with n free nodes and b bars with a free node

@@ -1,6 +1,7 @@
 // `dinam info`'s choice of integrator (stepping/integrator_choice.hpp): the implicit integrator
-// where its estimate is under half of central differences', which bench_implicit confirms for the
-// scenes used here (bench/notes/implicit-integrator.md, "Which integrator").
+// where its estimate is under half of central differences', even ten times over for a free
+// structure, which bench_implicit and bench/estimate_check.py confirm for the scenes used here
+// (bench/notes/implicit-integrator.md, "Which integrator").
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -69,9 +70,10 @@ TEST(Info, CountsTheContactsSpeedEnvelopeInTheImplicitEstimate) {
 
 // And a 1 mm steel cable let fall onto a pinned steel bar, contact between objects too: central
 // differences need some 814 700 steps of 1.2 µs (2.1 s measured), the implicit integrator 779 (0.24
-// s; bench/notes/implicit-integrator.md), so it is recommended: backward Euler, the cable landing
-// on the bar and folding over it.
-TEST(Info, RecommendsTheImplicitIntegratorForASteelCableOnABar) {
+// s; bench/notes/implicit-integrator.md). But nothing holds the cable: it lands and folds over the
+// bar, and a free structure's implicit run may take ten times its estimate (the real-mesh sweep's
+// did), which would lose here: central differences are recommended, the estimate still shown.
+TEST(Info, KeepsCentralDifferencesForAFoldingCableOnABar) {
   test::TemporaryFolder folder("info");
   const auto scene = folder.path() / "drape.yaml";
   std::ofstream(scene) << R"(version: 1
@@ -89,8 +91,9 @@ objects:
 )";
   const test::CommandResult info = test::run_dinam({"info", scene.string()});
   ASSERT_EQ(info.exit_code, 0) << info.output;
-  EXPECT_EQ(recommendation(info), "implicit") << info.output;
-  test::expect_contains(info.output, {"central_difference: 814728 steps"});
+  EXPECT_EQ(recommendation(info), "central_difference") << info.output;
+  test::expect_contains(info.output, {"central_difference: 814728 steps", "implicit: ",
+                                      "nothing holds the structure", "ten times their estimate"});
 }
 
 // `info` is the cheap command users run first: on a cloth of 190 000 bars it stays within an

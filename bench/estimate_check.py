@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+"""`dinam info`'s run estimates against the runs themselves (issue 53).
+
+    python3 bench/estimate_check.py build/dinam [--budget S] [--only NAME] [--no-other]
+
+For each scene of a fixed set -- the shipped scenes, a swinging steel cable, assimp's Wuson and
+the real-mesh sweep's slowest models (bench/notes/implicit-integrator.md) -- it asks `dinam info
+--json` which integrator it recommends and what the run would take, runs `dinam simulate` with
+that integrator and times it, and prints the measured time over the estimate. A run whose estimate
+passes the budget (default 30 s) is shortened to a duration whose estimate fits, and estimated
+again as shortened. With the other integrator too (unless --no-other), each run stopped at four
+times its estimate or 120 s. Exits non-zero where a recommended run is off its estimate by more
+than a factor of two: that is the promise `info` makes.
+
+The machine should be otherwise idle: the runs are timed by the wall clock.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ASSIMP = "/usr/share/assimp/models"
+
+# The swinging steel cable of tests/app/info_test.cpp: BDF2 keeps its swing.
+STEEL_CABLE = """version: 1
+duration: 3
+ground: {contact: false}
+objects:
+  - name: cable
+    mesh: {polyline: {points: [[0, 0, 2], [1, 0, 2]], segments: 100}}
+    material: {density: 7850, youngs_modulus: 2.0e11, radius: 0.001}
+    pinned: {indices: [0]}
+"""
+
+# The real-mesh sweep's scene (tests/real_meshes/real_mesh_sweep.py): a rubbery wire fitted to
+# 1 m and dropped from 0.5 m for 3 s.
+SWEEP = """version: 1
+duration: 3
+fps: 20
+objects:
+  - mesh: {{file: "{path}", fit: {{size: 1}}, translation: [0, 0, 0.5]}}
+    material: {{density: 1100, youngs_modulus: 5.0e7, radius: 0.004}}
+    style: wire
+"""
+SWEEP_MODELS = [
+    "OFF/Wuson.off",
+    "Collada/COLLADA.dae",
+    "OpenGEX/collada.ogex",
+    "DXF/issue_2229.dxf",
+    "ASE/MotionCaptureROM.ase",
+    "X/fromtruespace_bin32.x",
+    "Q3D/E-AT-AT.q3o",
+    "BLEND/HUMAN.blend",
+    "NFF/NFF/spheres.nff",
+    "NFF/NFF/WithCamera.nff",
+    "AC/SphereWithLight.ac",
+]
+
+
+def scenes(folder):
+    """(name, path) of every scene of the set that this machine has."""
+    shipped = os.path.join(REPO, "scenes")
+    for name in sorted(os.listdir(shipped)):
+        if name.endswith(".yaml"):
+            yield name[:-5], os.path.join(shipped, name)
+    cable = os.path.join(folder, "scenes", "steel_cable.yaml")
+    with open(cable, "w") as f:
+        f.write(STEEL_CABLE)
+    yield "steel_cable", cable
+    for model in SWEEP_MODELS:
+        path = os.path.join(ASSIMP, model)
+        if os.path.exists(path):
+            scene = os.path.join(folder, "scenes", os.path.basename(model) + ".yaml")
+            with open(scene, "w") as f:
+                f.write(SWEEP.format(path=path))
+            yield os.path.basename(model), scene
+
+
+def top_level(text, key):
+    match = re.search(r"^%s:\s*(.*?)\s*(#.*)?$" % key, text, re.M)
+    return match.group(1) if match else None
+
+
+def with_keys(text, **keys):
+    """The scene's text with top-level single-line keys set (None: removed)."""
+    for key, value in keys.items():
+        text = re.sub(r"^%s:.*\n" % key, "", text, flags=re.M)
+        if value is not None:
+            text = re.sub(r"^(version:.*\n)", r"\g<1>%s: %s\n" % (key, value), text, count=1,
+                          flags=re.M)
+    return text
+
+
+def info(dinam, scene):
+    out = subprocess.run([dinam, "info", "--json", scene], capture_output=True, text=True)
+    if out.returncode != 0:
+        raise RuntimeError(out.stdout + out.stderr)
+    return json.loads(out.stdout)
+
+
+def timed_run(dinam, scene, output, timeout):
+    """Seconds the run took as `dinam simulate` reports it (its settle and steps, what `info`
+    estimates; not the model's build or the process's start), or None past `timeout`."""
+    try:
+        out = subprocess.run([dinam, "simulate", scene, "-o", output, "--force"],
+                             capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None
+    if out.returncode != 0:
+        raise RuntimeError(out.stdout + out.stderr)
+    match = re.search(r"motion cache of .*; ([0-9.]+) s\)", out.stdout + out.stderr)
+    if not match:
+        raise RuntimeError("no run time in: " + (out.stdout + out.stderr)[-300:])
+    return float(match.group(1))
+
+
+def variant(folder, name, source, integrator, duration, own_integrator):
+    """The scene with `integrator` (and the scene's own `timestep` only for its own integrator),
+    `duration` seconds long, written where its relative paths still hold (../assets)."""
+    with open(source) as f:
+        text = f.read()
+    keys = {"integrator": integrator, "duration": repr(duration)}
+    if integrator != own_integrator:
+        keys["timestep"] = None
+    path = os.path.join(folder, "scenes", "%s.%s.yaml" % (name, integrator))
+    with open(path, "w") as f:
+        f.write(with_keys(text, **keys))
+    return path
+
+
+def measure(dinam, folder, name, source, integrator, own, budget, timeout_for):
+    with open(source) as f:
+        duration = float(top_level(f.read(), "duration") or 1.0)
+    scene = variant(folder, name, source, integrator, duration, own)
+    estimate = info(dinam, scene)
+    seconds = estimate["estimated_run_s"]
+    fps = estimate["fps"]
+    if seconds > budget:  # shortened, in whole frames, and estimated again
+        frames = max(2, math.floor(duration * fps * budget / seconds))
+        duration = frames / fps
+        scene = variant(folder, name, source, integrator, duration, own)
+        estimate = info(dinam, scene)
+        seconds = estimate["estimated_run_s"]
+    timeout = timeout_for(seconds)
+    measured = timed_run(dinam, scene, os.path.join(folder, "out", name + "." + integrator),
+                         timeout)
+    return duration, seconds, measured, timeout
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("dinam")
+    parser.add_argument("--budget", type=float, default=30.0)
+    parser.add_argument("--only")
+    parser.add_argument("--no-other", action="store_true")
+    args = parser.parse_args()
+    dinam = os.path.abspath(args.dinam)
+    folder = tempfile.mkdtemp(prefix="dinam-estimates-")
+    os.makedirs(os.path.join(folder, "scenes"))
+    os.makedirs(os.path.join(folder, "out"))
+    os.symlink(os.path.join(REPO, "assets"), os.path.join(folder, "assets"))
+    print("%-26s %-20s %-11s %9s %10s %10s %7s" %
+          ("scene", "recommended", "integrator", "motion s", "estimate s", "measured s", "ratio"))
+    off = []
+    try:
+        for name, source in scenes(folder):
+            if args.only and args.only != name:
+                continue
+            whole = info(dinam, source)
+            recommended = whole["recommended_integrator"]
+            with open(source) as f:
+                own = top_level(f.read(), "integrator") or "central_difference"
+            other = "implicit" if recommended == "central_difference" else "central_difference"
+            others = [] if args.no_other else [other]
+            for integrator in [recommended] + others:
+                chosen = integrator == recommended
+                duration, estimate, measured, timeout = measure(
+                    dinam, folder, name, source, integrator, own, args.budget,
+                    (lambda s: None) if chosen else (lambda s: min(max(4.0 * s, 10.0), 120.0)))
+                ratio = measured / estimate if measured is not None and estimate > 0 else None
+                shown = "%.2f" % measured if measured is not None else "> %.0f" % timeout
+                print("%-26s %-20s %-11s %9.2f %10.2f %10s %7s%s" %
+                      (name, recommended if chosen else "", integrator.replace(
+                          "central_difference", "central"), duration, estimate, shown,
+                       "%.2f" % ratio if ratio is not None else "",
+                       "" if not chosen or (ratio is not None and 0.5 <= ratio <= 2.0)
+                       else "  <- off by more than 2x"), flush=True)
+                if chosen and (ratio is None or not 0.5 <= ratio <= 2.0):
+                    off.append(name)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    if off:
+        print("recommended runs off their estimate by more than 2x: " + ", ".join(off))
+        return 1
+    print("every recommended run within 2x of its estimate")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
