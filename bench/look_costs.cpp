@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "median_time.hpp"
 #include "model/model.hpp"

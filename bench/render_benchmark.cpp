@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "bench_scenes.hpp"
 #include "dynamics/stability.hpp"
 #include "io/png_file.hpp"

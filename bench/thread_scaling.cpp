@@ -78,7 +78,7 @@ class BusyProcesses {
 
 // A step's time on `threads` threads: the median of `repeats` batches of `steps` steps, from a
 // state 20 steps into the motion, taken as a render takes them (runs of at most 256 steps,
-// app/frame_source.cpp).
+// run/frame_source.cpp).
 double step_seconds(const Model& model, double dt, int threads, int steps, int repeats) {
   set_thread_count(threads);
   State state = initial_state(model, dt);

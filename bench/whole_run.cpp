@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "bench_scenes.hpp"
 #include "cache/motion_cache.hpp"
 #include "cache/motion_cache_writer.hpp"

@@ -7,11 +7,11 @@
 #include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
-#include "app/frame_folder.hpp"
-#include "app/progress.hpp"
 #include "core/error.hpp"
 #include "io/movie_encoder.hpp"
 #include "io/png_file.hpp"
+#include "run/frame_folder.hpp"
+#include "run/progress.hpp"
 
 namespace dinam {
 

@@ -3,11 +3,11 @@
 #include <fmt/format.h>
 
 #include "app/command_support.hpp"
-#include "app/energy_csv.hpp"
-#include "app/memory_estimate.hpp"
-#include "app/progress.hpp"
 #include "core/error.hpp"
 #include "core/thread_team.hpp"
+#include "run/energy_csv.hpp"
+#include "run/memory_estimate.hpp"
+#include "run/progress.hpp"
 #include "stepping/run_estimate.hpp"
 #include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"

@@ -6,12 +6,12 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "app/frame_range.hpp"
-#include "app/frame_source.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/image.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "run/frame_range.hpp"
+#include "run/frame_source.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam {

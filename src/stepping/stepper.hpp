@@ -1,5 +1,5 @@
 #pragma once
-// The one seam between a run and its integrator. A run (app/frame_source.cpp) starts a stepper,
+// The one seam between a run and its integrator. A run (run/frame_source.cpp) starts a stepper,
 // advances it a number of steps at a time and reads the state between; what a step is — central
 // differences' leapfrog, or a Newton solve of backward Euler or BDF2 — is the stepper's. The
 // integrator kinds are mapped to their steppers, step choices and cost estimates in this folder

@@ -9,7 +9,7 @@
 #include <functional>
 #include <optional>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "app/shipped_scenes.hpp"
 #include "dynamics/contact/contact_geometry.hpp"
 #include "dynamics/contact/contact_grid.hpp"

@@ -1,5 +1,5 @@
 // A folder of frames: which are missing and which do not belong, named by number.
-#include "app/frame_folder.hpp"
+#include "run/frame_folder.hpp"
 
 #include <gtest/gtest.h>
 

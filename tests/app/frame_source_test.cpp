@@ -1,5 +1,5 @@
 // The pipeline without OpenGL: a recording Renderer shows what would be drawn, from which camera.
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "render/camera.hpp"

@@ -1,6 +1,6 @@
 // Progress in a log: where stderr is not a terminal (a farm job, CI, this test), a line each time
 // another tenth of the frames is done, saying how far, how long it has taken and what is left.
-#include "app/progress.hpp"
+#include "run/progress.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -4,7 +4,7 @@
 #include <functional>
 #include <string>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"

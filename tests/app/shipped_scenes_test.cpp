@@ -7,7 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "app/shipped_scenes.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/relaxation.hpp"

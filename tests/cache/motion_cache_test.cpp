@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "cache/motion_cache.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "dynamics/stability.hpp"

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <map>
 
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "stepping/time_step.hpp"

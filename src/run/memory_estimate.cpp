@@ -1,4 +1,4 @@
-#include "app/memory_estimate.hpp"
+#include "run/memory_estimate.hpp"
 
 #include <fmt/format.h>
 

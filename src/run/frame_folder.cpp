@@ -1,4 +1,4 @@
-#include "app/frame_folder.hpp"
+#include "run/frame_folder.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -11,9 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <system_error>
 
-#include "app/command_support.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
+#include "core/wall_clock.hpp"
+#include "run/movie_format.hpp"
 
 namespace dinam {
 namespace {

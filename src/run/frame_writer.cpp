@@ -1,4 +1,4 @@
-#include "app/frame_writer.hpp"
+#include "run/frame_writer.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "app/frame_range.hpp"
+#include "run/frame_range.hpp"
 
 #include <charconv>
 

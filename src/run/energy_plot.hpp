@@ -4,8 +4,8 @@
 #include <array>
 #include <vector>
 
-#include "app/energy_csv.hpp"
 #include "core/output_file.hpp"
+#include "run/energy_csv.hpp"
 
 namespace dinam {
 

@@ -1,4 +1,4 @@
-#include "app/frame_source.hpp"
+#include "run/frame_source.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,9 +6,10 @@
 #include <cstdint>
 #include <optional>
 
-#include "app/command_support.hpp"
 #include "cache/motion_cache.hpp"
+#include "core/stop_request.hpp"
 #include "core/subject_box.hpp"
+#include "core/wall_clock.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"

@@ -1,4 +1,4 @@
-#include "app/energy_plot.hpp"
+#include "run/energy_plot.hpp"
 
 #include <fmt/format.h>
 

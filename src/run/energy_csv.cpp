@@ -1,6 +1,6 @@
-#include "app/energy_csv.hpp"
+#include "run/energy_csv.hpp"
 
-#include "app/energy_plot.hpp"
+#include "run/energy_plot.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
