@@ -472,7 +472,7 @@ struct ImplicitIntegrator::Workspace {
 namespace {
 
 std::unique_ptr<const Model> softened_ground(const Model& model, const ImplicitOptions& options) {
-  if (!options.longest_step || !model.ground.enabled || !model.ground.automatic_frequency_squared) {
+  if (!options.longest_step || !ImplicitIntegrator::copies_model(model)) {
     return nullptr;  // nothing to soften: the model itself is stepped, not a copy
   }
   auto softened = std::make_unique<Model>(model);
@@ -481,6 +481,10 @@ std::unique_ptr<const Model> softened_ground(const Model& model, const ImplicitO
 }
 
 }  // namespace
+
+bool ImplicitIntegrator::copies_model(const Model& model) {
+  return model.ground.enabled && model.ground.automatic_frequency_squared.has_value();
+}
 
 ImplicitIntegrator::ImplicitIntegrator(const Model& model, const ImplicitOptions& options)
     : softened_(softened_ground(model, options)),

@@ -70,6 +70,9 @@ struct ImplicitOptions {
 
 class ImplicitIntegrator {
  public:
+  // Whether it steps its own copy of `model` (the ground softened) rather than the model itself.
+  static bool copies_model(const Model& model);
+
   // Steps `model`, or its copy with the ground softened for `options.longest_step`.
   explicit ImplicitIntegrator(const Model& model, const ImplicitOptions& options = {});
   ~ImplicitIntegrator();

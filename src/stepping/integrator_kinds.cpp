@@ -17,6 +17,10 @@ std::unique_ptr<Stepper> make_stepper(const Model& model, const TimeStep& timest
   return std::make_unique<CentralDifferenceStepper>(model, timestep);
 }
 
+bool stepper_copies_model(const Model& model) {
+  return model.integrator == IntegratorKind::kImplicit && ImplicitIntegrator::copies_model(model);
+}
+
 TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,
                          const FileLoc& where) {
   return choose_timestep(model, model.integrator, requested, fps, where);

@@ -44,4 +44,8 @@ class Stepper {
 // The stepper of the model's integrator (model.integrator) at `timestep` (choose_timestep).
 std::unique_ptr<Stepper> make_stepper(const Model& model, const TimeStep& timestep);
 
+// Whether the model's stepper holds a copy of the model (the implicit schemes' with the ground
+// softened), which a memory estimate counts.
+bool stepper_copies_model(const Model& model);
+
 }  // namespace dinam

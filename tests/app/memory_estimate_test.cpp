@@ -144,6 +144,31 @@ TEST(ModelArrays, StateEstimateIsWhatTheMadeStateHolds) {
   }
 }
 
+// The implicit schemes step a copy of the model with the ground softened (ImplicitOptions): the
+// estimate counts the model twice for them, once without a ground to soften or under central
+// differences.
+TEST(ModelArrays, TheImplicitSteppersCopyOfTheModelIsCounted) {
+  const std::string cloth = R"(version: 1
+duration: 1
+objects:
+  - mesh: {grid: {width: 1, height: 1, columns: 8, rows: 8, diagonals: one}, translation: [0, 0, 0.5]}
+    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001}
+)";
+  const auto model_part = [](const std::string& yaml) {
+    const SceneDescription scene = test::scene_from_yaml(yaml);
+    return estimate_memory(scene, build_model(scene), {}).model;
+  };
+  const std::uint64_t explicit_model = model_part(cloth);
+  EXPECT_EQ(
+      model_part(test::replaced(cloth, "duration: 1\n", "duration: 1\nintegrator: implicit\n")),
+      2 * explicit_model);
+  const std::string no_ground =
+      test::replaced(cloth, "duration: 1\n", "duration: 1\nground: {contact: false}\n");
+  EXPECT_EQ(
+      model_part(test::replaced(no_ground, "duration: 1\n", "duration: 1\nintegrator: implicit\n")),
+      model_part(no_ground));
+}
+
 class MemoryEstimateTest : public ::testing::Test {
  protected:
   std::filesystem::path write_scene(const std::string& name, const std::string& yaml) const {
