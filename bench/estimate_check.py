@@ -166,7 +166,7 @@ def main():
     os.makedirs(os.path.join(folder, "out"))
     os.symlink(os.path.join(REPO, "assets"), os.path.join(folder, "assets"))
     print("%-26s %-20s %-11s %9s %10s %10s %7s" %
-          ("scene", "recommended", "integrator", "motion s", "estimate s", "measured s", "ratio"))
+          ("scene", "recommended", "integrator", "duration s", "estimate s", "measured s", "ratio"))
     off = []
     try:
         for name, source in scenes(folder):
