@@ -1,7 +1,8 @@
 // `dinam render --preview`: the look of a scene in seconds. Draft quality (one sample, hard
 // shadows, no motion blur), 320 pixels wide, about 30 frames spread over the motion; drawn into an
 // animated GIF that plays in real time and a contact sheet of the same frames, side by side in
-// rows. The motion is the scene's whole, simulated as render simulates it (or read from --cache).
+// rows, each numbered. The motion is the scene's whole, simulated as render simulates it (or read
+// from --cache).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include "core/output_file.hpp"
 #include "io/movie_encoder.hpp"
 #include "io/png_file.hpp"
+#include "render/digit_label.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "run/progress.hpp"
 #include "visual/draw_list_from_model.hpp"
@@ -27,6 +29,15 @@ constexpr int kPreviewWidth = 320;
 constexpr int kPreviewFrames = 30;  // about: every Nth frame of the range, N the least that fits
 constexpr int kSheetColumns = 6;
 constexpr int kSheetGap = 2;  // pixels between the sheet's pictures
+// Each picture's frame number, in a band below it: digits of 2 × 2 pixels, 14 high, 3 apart from
+// the picture and from the next row.
+constexpr int kLabelScale = 2;
+constexpr int kLabelPad = 3;
+constexpr unsigned char kLabelColor[3] = {210, 210, 210};
+
+int label_band() {
+  return digit_label_height(kLabelScale) + 2 * kLabelPad;
+}
 
 void draft_at_preview_size(SceneDescription& scene) {
   scene.quality = quality_preset(QualityPreset::kDraft);
@@ -35,25 +46,29 @@ void draft_at_preview_size(SceneDescription& scene) {
   scene.image_width = kPreviewWidth;
 }
 
-// The pictures in rows of kSheetColumns on the scene's sky grey, frame order left to right.
-Image contact_sheet(const std::vector<Image>& pictures) {
+// The pictures in rows of kSheetColumns on a dark grey, frame order left to right, each with its
+// frame number below it, so that a shot can be picked from the sheet.
+Image contact_sheet(const std::vector<Image>& pictures, const std::vector<int>& frames) {
   const int w = pictures.front().width;
   const int h = pictures.front().height;
+  const int cell = h + label_band();
   const int columns = std::min(kSheetColumns, static_cast<int>(pictures.size()));
   const int rows = (static_cast<int>(pictures.size()) + columns - 1) / columns;
-  Image sheet(columns * w + (columns + 1) * kSheetGap, rows * h + (rows + 1) * kSheetGap);
+  Image sheet(columns * w + (columns + 1) * kSheetGap, rows * cell + (rows + 1) * kSheetGap);
   for (std::size_t k = 0; k < sheet.rgba.size(); k += 4) {
     sheet.rgba[k] = sheet.rgba[k + 1] = sheet.rgba[k + 2] = 40;
     sheet.rgba[k + 3] = 255;
   }
   for (std::size_t p = 0; p < pictures.size(); ++p) {
     const int x0 = kSheetGap + static_cast<int>(p % columns) * (w + kSheetGap);
-    const int y0 = kSheetGap + static_cast<int>(p / columns) * (h + kSheetGap);
+    const int y0 = kSheetGap + static_cast<int>(p / columns) * (cell + kSheetGap);
     for (int y = 0; y < h; ++y) {
       std::copy_n(
           pictures[p].pixel(0, y), 4 * w,
           sheet.rgba.begin() + 4 * (static_cast<std::ptrdiff_t>(y0 + y) * sheet.width + x0));
     }
+    draw_digit_label(sheet, x0 + kLabelPad, y0 + h + kLabelPad, std::to_string(frames[p]),
+                     kLabelScale, kLabelColor);
   }
   return sheet;
 }
@@ -93,17 +108,19 @@ int run_preview(const RenderOptions& options) {
   const FrameCameras cameras = frame_cameras(scene, input.model, frames);
   OsmesaRenderer renderer(render_settings(scene));
   std::vector<Image> pictures;
+  std::vector<int> drawn;  // each picture's frame
   Progress progress((range.count() + every - 1) / every, !options.quiet, "draw");
   for (int frame = range.first; frame <= range.last; frame += every) {
     draw_frames(renderer, draw_list, frames, cameras, frame, frame, [&](int, const Image& image) {
       stop_if_asked();
       pictures.push_back(image);
+      drawn.push_back(frame);
       progress.update(static_cast<int>(pictures.size()), "");
     });
   }
   progress.finish();
 
-  write_png(sheet, contact_sheet(pictures));
+  write_png(sheet, contact_sheet(pictures, drawn));
   std::string made = sheet.string();
   // The GIF plays at the scene's pace: every Nth frame, each shown N frames long.
   const std::unique_ptr<MovieEncoder> movie = MovieEncoder::start(

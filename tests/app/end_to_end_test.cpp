@@ -15,6 +15,7 @@
 #include <numbers>
 
 #include "io/png_file.hpp"
+#include "render/digit_label.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
@@ -129,7 +130,8 @@ TEST_F(EndToEnd, AFrameRangesMovieIsNamedForTheRange) {
 }
 
 // --preview: the scene drawn as `image: {quality: draft}` at 320 pixels wide would draw it, every
-// Nth frame, as a contact sheet whose pictures are those frames, and as a GIF of them.
+// Nth frame, as a contact sheet whose pictures are those frames, each with its frame number below
+// it, and as a GIF of them.
 TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
   std::string text = kTinyScene;
   text.replace(text.find("duration: 0.3"), 13, "duration: 4.0");  // 40 frames: every 2nd, 20
@@ -140,9 +142,11 @@ TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
   EXPECT_NE(preview.output.find("preview of 20 frames (every 2nd frame)"), std::string::npos)
       << preview.output;
   const Image sheet = read_png(out() / "tiny_preview.png");
-  // 6 columns and 4 rows of 320 × 240 pictures, 2 pixels apart and around.
+  // 6 columns and 4 rows of 320 × 240 pictures with a band of 20 pixels for the number below
+  // each, 2 pixels apart and around.
+  constexpr int kCell = 240 + 20;
   EXPECT_EQ(sheet.width, 6 * 320 + 7 * 2);
-  EXPECT_EQ(sheet.height, 4 * 240 + 5 * 2);
+  EXPECT_EQ(sheet.height, 4 * kCell + 5 * 2);
   const CommandResult probe = run_command(
       "ffprobe -v error -count_frames -show_entries stream=nb_read_frames,width,height -of "
       "csv=p=0 '" +
@@ -165,11 +169,31 @@ TEST_F(EndToEnd, PreviewIsADraftContactSheetAndGifOfEveryNthFrame) {
   for (int y = 0; y < 240; ++y) {
     for (int x = 0; x < 320; ++x) {
       differing += std::equal(frame.pixel(x, y), frame.pixel(x, y) + 3,
-                              sheet.pixel(2 + 1 * 322 + x, 2 + 1 * 242 + y))
+                              sheet.pixel(2 + 1 * 322 + x, 2 + 1 * (kCell + 2) + y))
                        ? 0
                        : 1;
     }
   }
+  EXPECT_EQ(differing, 0);
+  // Below it, its number: the band is the sheet's grey but for "15" in the label font, at the
+  // band's left (3 pixels in), and nothing else.
+  Image band(320, 20);
+  for (std::size_t k = 0; k < band.rgba.size(); k += 4) {
+    band.rgba[k] = band.rgba[k + 1] = band.rgba[k + 2] = 40;
+    band.rgba[k + 3] = 255;
+  }
+  const unsigned char light[3] = {210, 210, 210};
+  draw_digit_label(band, 3, 3, "15", 2, light);
+  int lit = 0;
+  differing = 0;
+  for (int y = 0; y < 20; ++y) {
+    for (int x = 0; x < 320; ++x) {
+      const std::uint8_t* drawn = sheet.pixel(2 + 1 * 322 + x, 2 + 1 * (kCell + 2) + 240 + y);
+      lit += drawn[0] == 210 ? 1 : 0;
+      differing += std::equal(band.pixel(x, y), band.pixel(x, y) + 3, drawn) ? 0 : 1;
+    }
+  }
+  EXPECT_GT(lit, 2 * 4 * 7);  // two digits of several 2 × 2 pixels each
   EXPECT_EQ(differing, 0);
 }
 
