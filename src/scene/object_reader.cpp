@@ -13,6 +13,7 @@
 #include <numbers>
 #include <system_error>
 
+#include "core/srgb.hpp"
 #include "scene/element_readers.hpp"
 #include "scene/mesh_generators.hpp"
 #include "scene/mesh_loader.hpp"
@@ -32,6 +33,37 @@ BoxDesc read_box(YamlMap map) {
                      map.name());
   }
   return box;
+}
+
+// A colour as artists pick it: [r, g, b] in sRGB (Blender's colour picker, Houdini, Photoshop,
+// CSS), each 0 to 1, decoded to linear light for shading; or {linear: [r, g, b]}, taken as it is
+// (values from a renderer's linear workflow). The model and the cache keep linear values.
+Vec3f read_color(YamlMap& map, const std::string& key) {
+  const YAML::Node node = map.get(key);
+  const bool linear = node.IsMap();
+  Vec3 color;
+  if (linear) {
+    YamlMap given(node, map.file(), map.path(key));
+    if (!given.has("linear")) {
+      given.finish();  // names a key given in its place (`srgb`: sRGB is the list form)
+    }
+    color = given.required_vec3("linear");
+    given.finish();
+  } else {
+    color = map.vec3(key, Vec3::Zero());
+  }
+  if ((color.array() < 0.0).any() || (color.array() > 1.0).any()) {
+    throw_user_error(map.loc(key),
+                     "'{}' must be [r, g, b] (sRGB, as a colour picker gives it) or {{linear: "
+                     "[r, g, b]}}, each between 0 and 1",
+                     map.path(key));
+  }
+  if (!linear) {
+    for (int c = 0; c < 3; ++c) {
+      color[c] = srgb_to_linear(color[c]);
+    }
+  }
+  return color.cast<float>();
 }
 
 }  // namespace
@@ -204,12 +236,9 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
     }
     damping.finish();
   }
-  const Vec3 color = map.vec3("color", object.color.cast<double>());
-  if ((color.array() < 0.0).any() || (color.array() > 1.0).any()) {
-    throw_user_error(map.loc("color"), "'{}' must be [r, g, b] with each between 0 and 1",
-                     map.path("color"));
+  if (map.has("color")) {
+    object.color = read_color(map, "color");
   }
-  object.color = color.cast<float>();
   if (map.has("finish")) {
     object.finish = read_finish(map.get("finish"), map.file(), map.path("finish"));
   }

@@ -572,3 +572,31 @@ objects:
 
 }  // namespace
 }  // namespace dinam
+
+namespace dinam {
+namespace {
+
+// Colours as artists pick them: [r, g, b] is sRGB, decoded by the sRGB transfer function
+// (IEC 61966-2-1: 0.5 is 0.2140 in linear light, 0.04 below the curve's knee is 0.04 / 12.92);
+// {linear: [...]} is kept as it is; out of range or an unknown key is an error at its line.
+TEST(SceneReader, ColoursAreSrgbUnlessGivenLinear) {
+  const std::string base =
+      "version: 1\nduration: 1\nobjects:\n  - name: rope\n    mesh: {file: rope.obj}\n    "
+      "material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}\n";
+  const Vec3f picked = scene_from_yaml(base + "    color: [0.5, 1, 0.04]\n").objects[0].color;
+  EXPECT_NEAR(picked.x(), 0.21404, 1e-5);
+  EXPECT_FLOAT_EQ(picked.y(), 1.0f);
+  EXPECT_NEAR(picked.z(), 0.04 / 12.92, 1e-7);
+  const Vec3f linear =
+      scene_from_yaml(base + "    color: {linear: [0.5, 1, 0.04]}\n").objects[0].color;
+  EXPECT_FLOAT_EQ(linear.x(), 0.5f);
+  EXPECT_FLOAT_EQ(linear.z(), 0.04f);
+  expect_user_error([&] { scene_from_yaml(base + "    color: [1.5, 0, 0]\n"); }, 7,
+                    {"sRGB, as a colour picker gives it", "{linear: [r, g, b]}"});
+  expect_user_error([&] { scene_from_yaml(base + "    color: {linear: [0, -1, 0]}\n"); }, 7,
+                    {"between 0 and 1"});
+  expect_user_error([&] { scene_from_yaml(base + "    color: {srgb: [0, 1, 0]}\n"); }, 7, {"srgb"});
+}
+
+}  // namespace
+}  // namespace dinam
