@@ -225,6 +225,12 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   }
   if (map.has("damping")) {
     YamlMap damping(map.get("damping"), map.file(), map.path("damping"));
+    if (damping.has("global")) {
+      throw_user_error(damping.loc("global"),
+                       "'{}': global damping is the whole scene's, a top-level 'damping: {{global: "
+                       "…}}'; an object's damping takes 'axial' (N·s/m) or 'axial_ratio'",
+                       damping.path("global"));
+    }
     if (damping.has("axial") && damping.has("axial_ratio")) {
       throw_user_error(damping.loc(), "'{}': give 'axial' (N·s/m) or 'axial_ratio', not both",
                        damping.name());

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <regex>
+#include <string>
 
 namespace dinam {
 namespace {
@@ -49,9 +52,43 @@ FileLoc loc_of(const YAML::Node& node, const std::string& file) {
   return FileLoc{file, mark.line + 1, mark.column + 1};
 }
 
+// A number written with a unit ("200 GPa", "5 mm", "3 kg"), in SI base units (grams as kg), or
+// empty where the text is not one.
+std::optional<double> in_si_units(const std::string& text) {
+  static const std::regex number_and_unit(
+      R"(\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*([a-zA-Z]+)\s*)");
+  std::smatch match;
+  if (!std::regex_match(text, match, number_and_unit)) {
+    return std::nullopt;
+  }
+  static const std::map<std::string, double> units = {
+      {"Pa", 1.0}, {"N", 1.0}, {"m", 1.0}, {"s", 1.0}, {"Hz", 1.0}, {"J", 1.0}, {"g", 1e-3}};
+  static const std::map<char, double> prefixes = {{'G', 1e9},  {'M', 1e6},  {'k', 1e3}, {'c', 1e-2},
+                                                  {'m', 1e-3}, {'u', 1e-6}, {'n', 1e-9}};
+  const std::string unit = match[2].str();
+  double scale = 0.0;
+  if (const auto base = units.find(unit); base != units.end()) {
+    scale = base->second;
+  } else if (const auto prefix = prefixes.find(unit.front());
+             prefix != prefixes.end() && units.contains(unit.substr(1))) {
+    scale = prefix->second * units.at(unit.substr(1));
+  } else {
+    return std::nullopt;
+  }
+  return std::stod(match[1].str()) * scale;
+}
+
 double as_double(const YAML::Node& node, const std::string& file, const std::string& what) {
   double value = 0.0;
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, value)) {
+    if (node.IsScalar()) {
+      if (const std::optional<double> si = in_si_units(node.Scalar())) {
+        throw_user_error(loc_of(node, file),
+                         "'{}' must be a number, got {}: units are not read; give it in SI base "
+                         "units (Pa, N, m, s, kg) as a plain number, here {:g}",
+                         what, describe(node), *si);
+      }
+    }
     throw_user_error(loc_of(node, file), "'{}' must be a number, got {}", what, describe(node));
   }
   if (!std::isfinite(value)) {

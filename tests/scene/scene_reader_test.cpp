@@ -600,3 +600,43 @@ TEST(SceneReader, ColoursAreSrgbUnlessGivenLinear) {
 
 }  // namespace
 }  // namespace dinam
+
+namespace dinam {
+namespace {
+
+// Mistakes a new user makes, answered with the fix: a number written with its unit is refused
+// with its value in SI units (the scene's units are SI base units, grams as kilograms), and a
+// scene-wide key given to an object names where it belongs.
+TEST(SceneReader, UnitsAndMisplacedKeysAreAnsweredWithTheFix) {
+  const std::string head =
+      "version: 1\nduration: 1\nobjects:\n  - name: rope\n    mesh: {file: rope.obj}\n";
+  expect_user_error(
+      [&] {
+        scene_from_yaml(head +
+                        "    material: {density: 1000, youngs_modulus: 200 GPa, radius: 0.01}\n");
+      },
+      6, {"'200 GPa'", "units are not read", "here 2e+11"});
+  expect_user_error(
+      [&] {
+        scene_from_yaml(head +
+                        "    material: {density: 1000, youngs_modulus: 1e6, radius: 5 mm}\n");
+      },
+      6, {"here 0.005"});
+  expect_user_error(
+      [&] {
+        scene_from_yaml(head +
+                        "    material: {density: 1000, youngs_modulus: 1e6, radius: 0.01}\n" +
+                        "    damping: {global: 0.5}\n");
+      },
+      7, {"'objects[0].damping.global'", "top-level 'damping: {global: …}'", "axial_ratio"});
+  // Text that is no number with a unit keeps the plain message.
+  expect_user_error(
+      [&] {
+        scene_from_yaml(head +
+                        "    material: {density: lots, youngs_modulus: 1e6, radius: 0.01}\n");
+      },
+      6, {"must be a number, got 'lots'"});
+}
+
+}  // namespace
+}  // namespace dinam
