@@ -57,8 +57,10 @@ FileLoc loc_of(const YAML::Node& node, const std::string& file) {
 std::optional<double> in_si_units(const std::string& text) {
   static const std::regex number_and_unit(
       R"(\s*([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*([a-zA-Z]+)\s*)");
+  // std::regex recurses per character: only text as short as a number and its unit is tried.
+  constexpr std::size_t kLongest = 40;
   std::smatch match;
-  if (!std::regex_match(text, match, number_and_unit)) {
+  if (text.size() > kLongest || !std::regex_match(text, match, number_and_unit)) {
     return std::nullopt;
   }
   static const std::map<std::string, double> units = {
