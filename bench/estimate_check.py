@@ -38,16 +38,11 @@ objects:
     pinned: {indices: [0]}
 """
 
-# The real-mesh sweep's scene (tests/real_meshes/real_mesh_sweep.py): a rubbery wire fitted to
-# 1 m and dropped from 0.5 m for 3 s.
-SWEEP = """version: 1
-duration: 3
-fps: 20
-objects:
-  - mesh: {{file: "{path}", fit: {{size: 1}}, translation: [0, 0, 0.5]}}
-    material: {{density: 1100, youngs_modulus: 5.0e7, radius: 0.004}}
-    style: wire
-"""
+# The real-mesh sweep's scene (a rubbery wire fitted to 1 m and dropped from 0.5 m for 3 s), as
+# tests/real_meshes/real_mesh_sweep.py defines it.
+sys.path.insert(0, os.path.join(REPO, "tests", "real_meshes"))
+from real_mesh_sweep import SCENE as SWEEP  # noqa: E402
+SWEEP_PLACEMENT = "fit: {size: 1}, translation: [0, 0, 0.5]"
 SWEEP_MODELS = [
     "OFF/Wuson.off",
     "Collada/COLLADA.dae",
@@ -78,7 +73,7 @@ def scenes(folder):
         if os.path.exists(path):
             scene = os.path.join(folder, "scenes", os.path.basename(model) + ".yaml")
             with open(scene, "w") as f:
-                f.write(SWEEP.format(path=path))
+                f.write(SWEEP.format(file=path, placement=SWEEP_PLACEMENT))
             yield os.path.basename(model), scene
 
 
