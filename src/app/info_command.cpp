@@ -23,9 +23,10 @@
 #include "scene/material_presets.hpp"
 #include "scene/scene_description.hpp"
 #include "solver/implicit_damping.hpp"
+#include "stepping/central_difference_stepper.hpp"
 #include "stepping/integrator_choice.hpp"
-#include "stepping/integrator_notes.hpp"
 #include "stepping/run_estimate.hpp"
+#include "stepping/stepper_kind.hpp"
 #include "stepping/time_step.hpp"
 
 namespace dinam {
@@ -165,10 +166,9 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"output", scene.output.string()},
       {"movie", movie_format_name(scene.movie)},
   };
-  if (const std::vector<ModeDamping> damping = numerical_damping(model, timestep);
-      !damping.empty()) {
+  if (const StepperKind& kind = stepper_kind(model); kind.numerical_damping != nullptr) {
     nlohmann::ordered_json modes = nlohmann::ordered_json::array();
-    for (const ModeDamping& mode : damping) {
+    for (const ModeDamping& mode : kind.numerical_damping(timestep)) {
       modes.push_back({{"steps_per_period", mode.steps_per_period},
                        {"frequency_hz", mode.frequency},
                        {"backward_euler", mode.backward_euler},
@@ -252,7 +252,8 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
   print_step_limits(model);
   fmt::print("stability limit  {:.6g} s ((2/ω)(√(1+ζ²) − ζ), ω and ζ bounded from above)\n",
              timestep.critical);
-  fmt::print("time step        {:.6g} s ({})\n", timestep.dt, timestep_note(model, timestep));
+  fmt::print("time step        {:.6g} s ({})\n", timestep.dt,
+             stepper_kind(model).timestep_note(model, timestep));
   fmt::print("steps per frame  {}\n", timestep.steps_per_frame);
   const long long steps_to_last_frame =
       static_cast<long long>(frames - 1) * timestep.steps_per_frame;
@@ -278,8 +279,8 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
              cost.threads < run.threads.threads
                  ? std::string("; this model's steps run on 1, too small to share")
                  : std::string());
-  fmt::print("run time         {}\n", run_time_note(model, run.estimate));
-  if (step_can_be_timed(model)) {
+  fmt::print("run time         {}\n", stepper_kind(model).run_time_note(model, run.estimate));
+  if (stepper_kind(model).step_can_be_timed) {
     if (run.measured.steps > 0) {
       fmt::print(
           "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
@@ -318,8 +319,8 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   // step) does not measure.
   const RunFigures run{
       estimate_run(scene, model, timestep, thread_count()),
-      !step_can_be_timed(model) || !room_for_a_run ? MeasuredStep{}
-                                                   : measure_step_now(model, timestep),
+      !stepper_kind(model).step_can_be_timed || !room_for_a_run ? MeasuredStep{}
+                                                                : measure_step_now(model, timestep),
       threads, compare_integrators(scene, model, thread_count(), room_for_another_model)};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
@@ -330,7 +331,7 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   } else {
     print_text(scene, model, timestep, pinned, run);
     if (energy) {
-      fmt::print("energy balance   {}\n", energy_balance_note(model, timestep));
+      fmt::print("energy balance   {}\n", stepper_kind(model).energy_balance_note(model, timestep));
     }
   }
   return kExitOk;

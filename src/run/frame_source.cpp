@@ -14,7 +14,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
-#include "stepping/stepper.hpp"
+#include "stepping/stepper_kind.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
@@ -60,7 +60,7 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
   if (instants > 0) {
     final_step = std::max(final_step, instant_step(instants - 1));
   }
-  const std::unique_ptr<Stepper> stepper = make_stepper(model, timestep);
+  const std::unique_ptr<Stepper> stepper = stepper_kind(model).make_stepper(model, timestep);
   State state = stepper->start(track_energy);
   const std::int64_t steps_between_checks = steps_between_stop_checks(model);
   int frame = 1;

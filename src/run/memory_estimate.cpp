@@ -15,7 +15,7 @@
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"
-#include "stepping/stepper.hpp"
+#include "stepping/stepper_kind.hpp"
 #include "visual/draw_list_from_model.hpp"
 
 namespace dinam {
@@ -141,7 +141,7 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
   estimate.program = kProgramBytes;
   estimate.scene = scene_bytes(scene);
   // Twice where the stepper steps a copy of its own (the implicit schemes' softened ground).
-  estimate.model = model_bytes(model) * (stepper_copies_model(model) ? 2 : 1);
+  estimate.model = model_bytes(model) * (stepper_kind(model).copies_model(model) ? 2 : 1);
   estimate.dynamics = state_bytes(model, use.energy);
   if (model.settle.enabled) {
     // settle.cpp relaxes the model (no driving forces) in a state of its own.

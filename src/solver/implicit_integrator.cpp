@@ -244,6 +244,16 @@ struct ImplicitIntegrator::Workspace {
     objects.start_step(model, state);
   }
 
+  // While the energy is tracked, P at x_n (the springs, gravity and the ground's penalty, as the
+  // step holds them) for the ledger (measure_ends), before the driven pins move.
+  void weigh_start(const Model& model, const State& state) {
+    if (state.energy_workspace.enabled) {
+      potential_at_start =
+          potential_energy(model, state, potential.switches, x_start, SpringEnergy::kWithFlow)
+              .energy;
+    }
+  }
+
   // 5. x̂ = x_b + h v_b + h² M⁻¹ F_e (h: the step solved for); driven pins go to their places at
   // t_{n+1}.
   void predict(const Model& model, State& state) {
@@ -338,8 +348,9 @@ struct ImplicitIntegrator::Workspace {
   }
 
   // 8. The step's ends for the energy ledger (implicit_energy.hpp), while it is kept: P, with the
-  // friction springs the step ended with, at x_{n+1} and at x_n, and its forces at x_{n+1}. Null
-  // while the energy is not tracked.
+  // friction springs the step ended with, at x_{n+1} and at x_n (weigh_start's share and the
+  // friction's, from x_n kept: the state stays at x_{n+1}), and its forces at x_{n+1}. Null while
+  // the energy is not tracked.
   const ImplicitStepEnds* measure_ends(const Model& model, State& state) {
     if (!state.energy_workspace.enabled) {
       return nullptr;
@@ -362,10 +373,10 @@ struct ImplicitIntegrator::Workspace {
       }
     }
     std::tie(measured.potential_end, measured.friction_end) = step_potential();
-    x_end = state.x;
-    state.x = x_start;
-    std::tie(measured.potential_start, measured.friction_start) = step_potential();
-    state.x = x_end;
+    const double ground_friction_start = friction.energy(x_start);
+    measured.potential_start =
+        potential_at_start + ground_friction_start + objects.energy_at_start(model);
+    measured.friction_start = ground_friction_start + objects.friction_energy(x_start);
     measured.mass = mass;
     free_part(dofs, x_start, measured.x_start);
     free_part(dofs, v_start, measured.v_start);
@@ -462,9 +473,9 @@ struct ImplicitIntegrator::Workspace {
   }
 
   std::vector<Vec3> accel;  // this step's accelerations, while it is judged
-  // The step's ends (measure_ends), and the positions x_{n+1} while P is measured at x_n.
+  // P at x_n (weigh_start) and the step's ends (measure_ends), while the energy is tracked.
+  double potential_at_start = 0.0;
   ImplicitStepEnds step_ends;
-  std::vector<Vec3> x_end;
   bool contact_changed = false;  // a node met or left the ground, or a pair touched or parted
   bool rebounded = false;        // a node or a pair of the contact rebounded
 };
@@ -566,6 +577,7 @@ bool ImplicitIntegrator::try_step(State& state, double h, bool check_error) {
   w.set_base(model, state, h);
   w.take_loads(model, state);
   w.start_contact(model, state);
+  w.weigh_start(model, state);
   w.predict(model, state);
   w.set_potential(model, state);
   // A step that would carry a node of the contact between objects past the speed envelope even

@@ -6,6 +6,7 @@
 // measured for structures that move alike; central differences otherwise.
 #include "scene/scene_description.hpp"
 #include "stepping/run_estimate.hpp"
+#include "stepping/stepper_kind.hpp"
 
 namespace dinam {
 
@@ -21,11 +22,13 @@ struct IntegratorChoice {
   // How many times short the implicit estimate may be (solver/implicit_cost.hpp,
   // estimate_margin): 1 where the structure swings, 10 where it is free to land, fold or tumble.
   double implicit_margin = 1.0;
-  IntegratorKind recommended = IntegratorKind::kCentralDifference;
+  const StepperKind* recommended = &kCentralDifferences;
   // Where the implicit integrator is recommended: BDF2 for a structure that swings (backward
   // Euler would damp its swing away: 68 % of a mode's amplitude a period at 16 steps a period,
   // against BDF2's 6.7 %), backward Euler where it lands and folds (its damping settles it).
   ImplicitScheme recommended_scheme = ImplicitScheme::kBackwardEuler;
+
+  bool recommends_implicit() const { return recommended == &kImplicitSchemes; }
 };
 
 // `model` is the scene's, built for its own integrator. Central differences' step depends on the

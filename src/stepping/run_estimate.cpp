@@ -7,11 +7,11 @@
 #include <cmath>
 
 #include "core/error.hpp"
-#include "dynamics/contact/object_contact_implicit.hpp"
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
+#include "stepping/stepper_kind.hpp"
 #include "stepping/time_step.hpp"
 
 namespace dinam {
@@ -33,35 +33,15 @@ long long steps_in_all(const SceneDescription& scene, const Model& model,
 
 RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
                          const TimeStep& timestep, int threads) {
-  return estimate_run(scene, model, model.integrator, timestep, threads);
+  return estimate_run(scene, model, stepper_kind(model), timestep, threads);
 }
 
-RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
-                         IntegratorKind integrator, const TimeStep& timestep, int threads) {
+RunEstimate estimate_run(const SceneDescription& scene, const Model& model, const StepperKind& kind,
+                         const TimeStep& timestep, int threads) {
   RunEstimate estimate;
   estimate.steps = steps_in_all(scene, model, timestep);
   estimate.settle_steps = settle_steps(model, timestep);
-  estimate.step = estimate_step_cost(model, threads);
-  if (integrator == IntegratorKind::kImplicit) {
-    // A Newton solve a step (solver/implicit_cost.hpp), on one thread: the factorisation is.
-    estimate.implicit = estimate_implicit_step(model, estimate_step_cost(model, 1));
-    double seconds = estimate.implicit.seconds;
-    // Contact between objects splits the steps where a node would pass its speed envelope; the
-    // steps split off are short, and cost what a short step does.
-    const double frames_seconds = static_cast<double>(scene.frame_count()) / scene.fps;
-    const auto envelope_steps =
-        static_cast<long long>(std::ceil(contact_envelope_steps(model, frames_seconds)));
-    const long long split_off = envelope_steps + estimate.settle_steps - estimate.steps;
-    if (split_off > 0) {
-      const auto steps = static_cast<double>(estimate.steps);
-      seconds = (steps * seconds +
-                 static_cast<double>(split_off) * estimate.implicit.short_step_seconds) /
-                (steps + static_cast<double>(split_off));
-      estimate.steps += split_off;
-    }
-    estimate.step = {
-        {{"Newton iterations and factorisations", 1.0, 1e9 * seconds}}, 1e9 * seconds, 1, seconds};
-  }
+  kind.estimate_steps(scene, model, threads, estimate);
   estimate.seconds = estimate.step.seconds * static_cast<double>(estimate.steps);
   return estimate;
 }

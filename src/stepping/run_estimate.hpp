@@ -14,6 +14,7 @@ namespace dinam {
 
 struct Model;
 struct SceneDescription;
+struct StepperKind;
 
 // Runs longer than this are refused unless asked for (`--force`): an hour.
 inline constexpr double kLongRunSeconds = 3600.0;
@@ -34,13 +35,14 @@ long long steps_in_all(const SceneDescription& scene, const Model& model, const 
 // The estimate for `threads` threads.
 RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
                          const TimeStep& timestep, int threads);
-// The same for `integrator` in place of the model's own (`dinam info` weighs the other one).
-RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
-                         IntegratorKind integrator, const TimeStep& timestep, int threads);
+// The same for `kind` in place of the model's own integrator (`dinam info` weighs the other one).
+RunEstimate estimate_run(const SceneDescription& scene, const Model& model, const StepperKind& kind,
+                         const TimeStep& timestep, int threads);
 
-// A step's time on this machine as busy as it is now: the model stepped from its mesh positions
-// (no settling) for about `probe_seconds` or `max_probe_steps` steps, whichever comes first. For
-// `info` to print beside the estimate; nothing is decided on it.
+// Central differences' step's time on this machine as busy as it is now (where the model's kind
+// says its step can be timed: StepperKind::step_can_be_timed): the model stepped from its mesh
+// positions (no settling) for about `probe_seconds` or `max_probe_steps` steps, whichever comes
+// first. For `info` to print beside the estimate; nothing is decided on it.
 struct MeasuredStep {
   double seconds_per_step = 0.0;
   int steps = 0;

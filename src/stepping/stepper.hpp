@@ -2,12 +2,12 @@
 // The one seam between a run and its integrator. A run (run/frame_source.cpp) starts a stepper,
 // advances it a number of steps at a time and reads the state between; what a step is — central
 // differences' leapfrog, or a Newton solve of backward Euler or BDF2 — is the stepper's. The
-// integrator kinds are mapped to their steppers, step choices and cost estimates in this folder
-// alone (integrator_kinds.cpp), so nothing above it branches on the integrator.
+// integrators are described once each (stepper_kind.hpp: the stepper, its step, its start, its
+// cost), so nothing above this folder branches on the integrator.
 #include <cstdint>
-#include <memory>
+#include <vector>
 
-#include "dynamics/integrator.hpp"
+#include "core/types.hpp"
 #include "dynamics/stability.hpp"
 #include "dynamics/state.hpp"
 
@@ -32,6 +32,11 @@ class Stepper {
   // when a signal asks to stop, RuntimeError where the integration fails.
   virtual void advance(State& state, std::int64_t steps) = 0;
 
+  // The nodes' velocities at the state's time t_n, m/s, into `v` (n_nodes), for what reads the
+  // motion between steps (State::velocity is the stepper's own: leapfrog keeps v_{n−½}). The
+  // state's force array may be used as scratch; the motion that follows is unchanged.
+  virtual void velocity_now(State& state, std::vector<Vec3>& v) const = 0;
+
   const TimeStep& timestep() const { return timestep_; }
 
  protected:
@@ -40,12 +45,5 @@ class Stepper {
   const Model& model_;
   TimeStep timestep_;
 };
-
-// The stepper of the model's integrator (model.integrator) at `timestep` (choose_timestep).
-std::unique_ptr<Stepper> make_stepper(const Model& model, const TimeStep& timestep);
-
-// Whether the model's stepper holds a copy of the model (the implicit schemes' with the ground
-// softened), which a memory estimate counts.
-bool stepper_copies_model(const Model& model);
 
 }  // namespace dinam

@@ -1,13 +1,12 @@
 #pragma once
-// The step a run takes, and the state it starts from, for the model's integrator (or another,
-// for `dinam info` weighing both).
+// The step a run takes, and the state it starts from, for the model's integrator (its kind's,
+// stepper_kind.hpp).
 #include <optional>
 
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
 #include "dynamics/state.hpp"
-#include "scene/scene_description.hpp"
 #include "stepping/stepper.hpp"
 
 namespace dinam {
@@ -20,9 +19,6 @@ struct Model;
 // is shortened, if needed, so that a whole number of steps fills each frame.
 TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,
                          const FileLoc& where);
-// The same for `integrator` in place of the model's own.
-TimeStep choose_timestep(const Model& model, IntegratorKind integrator,
-                         std::optional<double> requested, double fps, const FileLoc& where);
 
 // The step the settling phase relaxes by (solver/settle.hpp): the run's `dt` under central
 // differences; under the implicit schemes, whose steps are far longer than relaxation can take,

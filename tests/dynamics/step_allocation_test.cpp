@@ -18,7 +18,7 @@
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "stepping/implicit_stepper.hpp"
-#include "stepping/stepper.hpp"
+#include "stepping/stepper_kind.hpp"
 #include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
@@ -152,7 +152,7 @@ ImplicitSteps implicit_steps(const std::string& yaml, ImplicitScheme scheme, boo
   scene.implicit_scheme = scheme;
   const Model model = build_model(scene);
   const TimeStep timestep = choose_timestep(model, std::nullopt, scene.fps, {});
-  const std::unique_ptr<Stepper> stepper = make_stepper(model, timestep);
+  const std::unique_ptr<Stepper> stepper = stepper_kind(model).make_stepper(model, timestep);
   const auto& implicit = dynamic_cast<const ImplicitStepper&>(*stepper);
   State state = stepper->start(track_energy);
   stepper->advance(state, 5);

@@ -346,6 +346,17 @@ double ImplicitObjectContact::energy(const Model& model, State& state) {
   return energy;
 }
 
+double ImplicitObjectContact::energy_at_start(const Model& model) const {
+  if (!model.contact.enabled) {
+    return 0.0;
+  }
+  double energy = friction_energy(x_start_);  // summed in energy()'s order
+  for (const ContactPoint& point : at_start_) {
+    energy += evaluate(model, point, x_start_).energy;
+  }
+  return energy;
+}
+
 double ImplicitObjectContact::friction_energy(const std::vector<Vec3>& x) const {
   double energy = 0.0;
   for (const Spring& spring : springs_) {

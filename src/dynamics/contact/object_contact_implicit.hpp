@@ -75,6 +75,9 @@ class ImplicitObjectContact {
   double energy(const Model& model, State& state);
   // The friction springs' share of it at x, J.
   double friction_energy(const std::vector<Vec3>& x) const;
+  // Their energy at x_n, the step's start (the pairs touching there, the friction springs as they
+  // are now), J: the energy ledger's, without moving the state back.
+  double energy_at_start(const Model& model) const;
   // A positive semi-definite approximation of their Hessian at state.x, for the preconditioner:
   // each touching pair's penalty slope along its normal, w_i w_j k n nᵀ, and each friction
   // spring's exact Hessian; 3 × 3 blocks over each pair's nodes.
