@@ -115,14 +115,21 @@ class Simulation:
                     f"{', '.join(g.name for g in obj.vertex_groups) or 'none'}): choose the "
                     f"pins' group in {where}, or clear it to let the object fall freely")
         # Obstacles: the scene's mesh objects marked as colliders (Object properties), not
-        # selected: they push and are not moved.
+        # selected: they push and are not moved by the cloth; one that the animation moves (its
+        # keys, parents, armature, shape keys) follows its track, frame by frame.
         self.colliders = [o for o in context.scene.objects
                           if o.type == "MESH" and o.dinam_collider and o not in self.objects]
         colliders = []
         for obj in self.colliders:
-            path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
-            scene_export.write_obj(obj, path)
-            colliders.append((obj.name, path))
+            stem = scene_export.object_file_stem(obj.name, stems)
+            path = os.path.join(inputs, stem + ".obj")
+            track = scene_export.collider_track(context, obj)
+            scene_export.write_obj(obj, path, track[0] if track else None)
+            track_path = None
+            if track:
+                track_path = os.path.join(inputs, stem + ".pc2")
+                scene_export.write_pc2(track_path, track)
+            colliders.append((obj.name, path, track_path))
         for obj in self.objects:
             path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
             scene_export.write_obj(obj, path)

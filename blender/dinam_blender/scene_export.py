@@ -8,6 +8,7 @@ point k of the cache dinam writes is the object's vertex k.
 import hashlib
 import json
 import os
+import struct
 
 import mathutils
 
@@ -77,14 +78,15 @@ def check_mesh(obj):
             "not match the object vertex for vertex: delete them (Mesh > Clean Up > Delete Loose)")
 
 
-def write_obj(obj, path):
-    """Writes the object's mesh (without its modifiers) in world coordinates."""
+def write_obj(obj, path, positions=None):
+    """Writes the object's mesh (without its modifiers) in world coordinates, or with its vertices
+    at `positions` (world coordinates, one per vertex in order) where given."""
     mesh = obj.data
     world = obj.matrix_world
     lines = [f"# {obj.name}: written by the dinam Blender add-on, one v per vertex in order",
              f"o {object_file_stem(obj.name)}"]
-    for vertex in mesh.vertices:
-        p = world @ vertex.co
+    for k, vertex in enumerate(mesh.vertices):
+        p = world @ vertex.co if positions is None else mathutils.Vector(positions[k])
         lines.append(f"v {p.x!r} {p.y!r} {p.z!r}")
     for polygon in mesh.polygons:
         lines.append("f " + " ".join(str(v + 1) for v in polygon.vertices))
@@ -93,6 +95,44 @@ def write_obj(obj, path):
             lines.append(f"l {edge.vertices[0] + 1} {edge.vertices[1] + 1}")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
+
+
+def collider_track(context, obj):
+    """The collider's vertices in world coordinates at every frame of the scene's range (its keys,
+    parents, armature and shape keys evaluated), a list of lists of (x, y, z); None where it does
+    not move. Where a modifier changes the vertex count (a Subdivision), its own vertices are
+    placed by its transform alone: the track must be of the vertices the OBJ holds."""
+    scene = context.scene
+    current = scene.frame_current
+    count = len(obj.data.vertices)
+    samples = []
+    try:
+        for frame in range(scene.frame_start, scene.frame_end + 1):
+            scene.frame_set(frame)
+            evaluated = obj.evaluated_get(context.evaluated_depsgraph_get())
+            world = evaluated.matrix_world
+            mesh = evaluated.to_mesh()
+            try:
+                vertices = mesh.vertices if len(mesh.vertices) == count else obj.data.vertices
+                samples.append([tuple(world @ v.co) for v in vertices])
+            finally:
+                evaluated.to_mesh_clear()
+    finally:
+        scene.frame_set(current)
+    first = samples[0]
+    moves = any(abs(a - b) > 1e-7
+                for sample in samples[1:] for p, q in zip(sample, first) for a, b in zip(p, q))
+    return samples if moves else None
+
+
+def write_pc2(path, samples):
+    """Writes `samples` (each a list of (x, y, z)) as a PC2 point cache, one sample a frame from
+    the scene's first: dinam's t = 0."""
+    with open(path, "wb") as f:
+        f.write(struct.pack("<12siiffi", b"POINTCACHE2\0", 1, len(samples[0]), 0.0, 1.0,
+                            len(samples)))
+        for sample in samples:
+            f.write(struct.pack(f"<{3 * len(sample)}f", *(c for p in sample for c in p)))
 
 
 def pinned_indices(obj, group_name):
@@ -123,8 +163,8 @@ def ground_height(settings):
 
 def scene_text(settings, objects, frame_count, fps, colliders=()):
     """The scene file for `objects` (each (name, obj file, pinned indices, its own preset or
-    None for the panel's)) and `colliders` (each (name, obj file): obstacles that push and are not
-    moved); JSON's quoted strings are YAML's too."""
+    None for the panel's)) and `colliders` (each (name, obj file, its track's PC2 file or None):
+    obstacles that push and that the cloth does not move); JSON's quoted strings are YAML's too."""
     lines = [
         "# Written by the dinam Blender add-on.",
         "version: 1",
@@ -160,7 +200,7 @@ def scene_text(settings, objects, frame_count, fps, colliders=()):
             lines.append(f"    damping: {{axial_ratio: {settings.damping_ratio!r}}}")
         if pins:
             lines.append(f"    pinned: {{indices: [{', '.join(str(i) for i in pins)}]}}")
-    for name, obj_file in colliders:
+    for name, obj_file, track_file in colliders:
         lines += [
             f"  - name: {json.dumps(name)}",
             f"    mesh: {{file: {json.dumps(os.path.basename(obj_file))}, up_axis: z}}",
@@ -168,4 +208,7 @@ def scene_text(settings, objects, frame_count, fps, colliders=()):
             "    pinned: {all: true}",
             f"    contact: {{radius: {settings.collider_radius!r}}}",
         ]
+        if track_file:
+            lines.append(
+                f"    pin_motion: {{point_cache: {json.dumps(os.path.basename(track_file))}}}")
     return "\n".join(lines) + "\n"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cache/manifest.hpp"
-#include "cache/point_cache.hpp"
+#include "io/point_cache.hpp"
 
 namespace dinam {
 

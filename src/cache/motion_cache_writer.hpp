@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "cache/manifest.hpp"
-#include "cache/point_cache.hpp"
 #include "cache/usd_stage.hpp"
+#include "io/point_cache.hpp"
 
 namespace dinam {
 

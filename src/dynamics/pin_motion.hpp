@@ -10,6 +10,11 @@
 namespace dinam {
 
 struct Model;
+struct PinMotion;
+
+// Where the `k`th node of `motion` is at time t: on its path, or on its track (linear between
+// samples, at the first before t = 0 and the last after the track ends).
+Vec3 driven_position(const Model& model, const PinMotion& motion, std::size_t k, double t);
 
 // Where the driven nodes are at time t.
 void place_driven_nodes(const Model& model, double t, State& state);

@@ -45,11 +45,15 @@ struct FieldForce {
   TimeProfile profile;
 };
 
-// Pinned nodes that follow a prescribed path: x(t) = x_0 + displacement × profile(t).
+// Pinned nodes that follow a prescribed path: x(t) = x_0 + displacement × profile(t), or, where
+// `track` holds samples, each node's own track, linear between samples `interval` apart from
+// t = 0 and held at the last (dynamics/pin_motion.hpp).
 struct PinMotion {
   std::vector<Index> nodes;  // (n_driven) pinned node ids
   Vec3 displacement = Vec3::Zero();
   TimeProfile profile;
+  std::vector<Vec3> track;  // (n_samples × n_driven) m, or empty
+  double interval = 0.0;    // s between samples
 };
 
 // The settling phase before t = 0 (SettleDesc): gravity alone, until the out-of-balance force on

@@ -66,6 +66,7 @@ void for_each_model_array(ModelType& model, Visit&& visit) {
   }
   for (auto& motion : model.pin_motions) {
     visit(std::string_view("pin_motions.nodes"), motion.nodes);
+    visit(std::string_view("pin_motions.track"), motion.track);
   }
 
   visit(std::string_view("wind.faces"), model.wind.faces);

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string_view>
 #include <type_traits>
+#include <unordered_map>
 
 #include "model/contact_builder.hpp"
 #include "model/derived_checks.hpp"
@@ -367,8 +368,35 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
   return nodes;
 }
 
+// The driven nodes' tracks from the object's point cache (PinMotionDesc::track), each node on
+// its first mesh vertex's.
+void add_pin_track(const ObjectNodes& object, double fps, PinMotion& motion) {
+  const PinMotionDesc& desc = object.desc->pin_motion;
+  if (desc.track.empty()) {
+    return;
+  }
+  const std::size_t vertices = object.node_of_vertex.size();
+  std::unordered_map<Index, std::size_t> first_vertex;
+  for (std::size_t v = vertices; v-- > 0;) {
+    first_vertex[object.node_of_vertex[v]] = v;
+  }
+  std::vector<std::size_t> vertex_of_driven;
+  vertex_of_driven.reserve(motion.nodes.size());
+  for (const Index node : motion.nodes) {
+    vertex_of_driven.push_back(first_vertex.at(node));
+  }
+  const std::size_t samples = desc.track.size() / vertices;
+  motion.track.reserve(samples * motion.nodes.size());
+  for (std::size_t s = 0; s < samples; ++s) {
+    for (const std::size_t v : vertex_of_driven) {
+      motion.track.push_back(desc.track[s * vertices + v]);
+    }
+  }
+  motion.interval = desc.frames_per_sample / fps;
+}
+
 // Pins and initial velocities.
-void add_object_conditions(const ObjectNodes& object, Model& model) {
+void add_object_conditions(const ObjectNodes& object, double fps, Model& model) {
   const ObjectDesc& desc = *object.desc;
   const ModelObject& info = model.objects[object.object_id];
   for (const VelocityGroupDesc& group : desc.velocity_groups) {
@@ -397,7 +425,9 @@ void add_object_conditions(const ObjectNodes& object, Model& model) {
     model.node_initial_v[node].setZero();
   }
   if (desc.pin_motion.moving()) {
-    model.pin_motions.push_back({pinned, desc.pin_motion.displacement, desc.pin_motion.profile});
+    model.pin_motions.push_back(
+        {pinned, desc.pin_motion.displacement, desc.pin_motion.profile, {}, 0.0});
+    add_pin_track(object, fps, model.pin_motions.back());
   }
 }
 
@@ -491,7 +521,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   }
   mark_bars_on_faces(model);  // before the bending springs, which pair bars by it
   for (const ObjectNodes& object : objects) {
-    add_object_conditions(object, model);
+    add_object_conditions(object, scene.fps, model);
     const ModelObject& info = model.objects[object.object_id];
     const NodeAdjacency adjacency = node_adjacency(model, info);
     const Index first_bend = model.bend_count();

@@ -142,7 +142,7 @@ std::string y_up_hint(const std::filesystem::path& file) {
 // +z towards the viewer of a front view (−y), the inverse of what a z-up program's y-up export
 // (Blender's: Forward −Z, Up Y) did, before any other placement.
 void read_up_axis(YamlMap& map, const std::filesystem::path& file, const std::string& object_name,
-                  RawMesh& mesh, std::vector<std::string>& warnings) {
+                  RawMesh& mesh, Placement& placement, std::vector<std::string>& warnings) {
   if (!map.has("up_axis")) {
     map.get("up_axis");  // known, absent
     if (const std::string why = file.empty() ? "" : y_up_hint(file); !why.empty()) {
@@ -158,6 +158,9 @@ void read_up_axis(YamlMap& map, const std::filesystem::path& file, const std::st
     for (Vec3& v : mesh.vertices) {
       v = Vec3(v.x(), -v.z(), v.y());
     }
+    Mat3 y_up;
+    y_up << 1, 0, 0, 0, 0, -1, 0, 1, 0;
+    placement.then(y_up, Vec3::Zero());
   } else if (axis != "z") {
     throw_user_error(map.loc("up_axis"),
                      "'{}' must be z (the file's +z is up, as in dinam and Blender) or y (its +y "
@@ -199,7 +202,8 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
                      "'{}' is for mesh files; a grid or a polyline is made in dinam's z-up world",
                      map.path("up_axis"));
   }
-  read_up_axis(map, file, object.name, mesh, warnings);
+  Placement& placement = object.placement;
+  read_up_axis(map, file, object.name, mesh, placement, warnings);
   Transform transform = read_transform(map);
   transform.scale *= read_units(map, mesh);
   if (map.has("fit")) {
@@ -210,10 +214,14 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
     const Vec3 translation = transform.translation;
     transform.translation.setZero();
     apply_transform(transform, mesh);
-    fit_to_size(size, mesh);
+    const Placement fitted = fit_to_size(size, mesh);
     apply_transform({Vec3::Ones(), Vec3::Zero(), translation}, mesh);
+    placement.then(transform.rotation() * transform.scale.asDiagonal(), Vec3::Zero());
+    placement.then(fitted.linear, fitted.offset);
+    placement.then(Mat3::Identity(), translation);
   } else {
     apply_transform(transform, mesh);
+    placement.then(transform.rotation() * transform.scale.asDiagonal(), transform.translation);
   }
   read_weld(map, object);
   map.finish();

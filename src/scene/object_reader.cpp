@@ -17,6 +17,7 @@
 #include "scene/element_readers.hpp"
 #include "scene/mesh_generators.hpp"
 #include "scene/mesh_loader.hpp"
+#include "scene/pin_track_reader.hpp"
 #include "scene/scene_description.hpp"
 #include "scene/yaml_map.hpp"
 
@@ -143,10 +144,14 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   if (map.has("pin_motion")) {
     YamlMap motion(map.get("pin_motion"), map.file(), map.path("pin_motion"));
     object.pin_motion.loc = motion.loc();
-    object.pin_motion.displacement = motion.required_vec3("displacement");
-    if (motion.has("profile")) {
-      object.pin_motion.profile =
-          read_profile(YamlMap(motion.get("profile"), map.file(), motion.path("profile")));
+    if (motion.has("point_cache")) {
+      read_pin_track(motion, scene_folder, object, warnings);
+    } else {
+      object.pin_motion.displacement = motion.required_vec3("displacement");
+      if (motion.has("profile")) {
+        object.pin_motion.profile =
+            read_profile(YamlMap(motion.get("profile"), map.file(), motion.path("profile")));
+      }
     }
     motion.finish();
     if (object.pins.empty()) {

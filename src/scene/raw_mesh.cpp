@@ -147,7 +147,7 @@ void apply_transform(const Transform& transform, RawMesh& mesh) {
   }
 }
 
-void fit_to_size(double size, RawMesh& mesh) {
+Placement fit_to_size(double size, RawMesh& mesh) {
   // The box of the vertices that some face or line uses: a file's stray points do not count.
   std::vector<bool> used(mesh.vertices.size(), false);
   for (const auto* loops : {&mesh.faces, &mesh.lines}) {
@@ -167,13 +167,14 @@ void fit_to_size(double size, RawMesh& mesh) {
   }
   const double extent = (hi - lo).maxCoeff();
   if (!(extent > 0.0) || !std::isfinite(extent)) {
-    return;  // no edge, or a single point: the mesh checks say so
+    return {};  // no edge, or a single point: the mesh checks say so
   }
   const double factor = size / extent;
   const Vec3 bottom_centre{0.5 * (lo.x() + hi.x()), 0.5 * (lo.y() + hi.y()), lo.z()};
   for (Vec3& p : mesh.vertices) {
     p = (p - bottom_centre) * factor;
   }
+  return {factor * Mat3::Identity(), -factor * bottom_centre};
 }
 
 }  // namespace dinam

@@ -69,10 +69,26 @@ struct Transform {
 
 void apply_transform(const Transform& transform, RawMesh& mesh);
 
+// An affine map p ↦ linear p + offset: how a mesh file's vertices were placed in the world (its
+// up axis, units, transform and fit), kept to place what else gives positions in the file's
+// coordinates the same way (a point cache its pins follow).
+struct Placement {
+  Mat3 linear = Mat3::Identity();
+  Vec3 offset = Vec3::Zero();
+
+  Vec3 operator()(const Vec3& p) const { return linear * p + offset; }
+  // This placement followed by p ↦ a p + b.
+  void then(const Mat3& a, const Vec3& b) {
+    linear = a * linear;
+    offset = a * offset + b;
+  }
+};
+
 // Scales the mesh so that the largest side of its bounding box is `size` (m) and moves it so that
 // the box's bottom centre (lowest along world z) is at the origin: a downloaded model, whatever
-// its units and origin, then stands on the ground at the origin, `size` across.
-void fit_to_size(double size, RawMesh& mesh);
+// its units and origin, then stands on the ground at the origin, `size` across. Returns the map it
+// applied (the identity for a mesh with no extent).
+Placement fit_to_size(double size, RawMesh& mesh);
 
 // Throws UserError at `where` unless every face and line refers to vertices the mesh has, every
 // vertex is finite and within 10⁶ m of the origin, and there are at most 50 million: a NaN in a

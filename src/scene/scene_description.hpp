@@ -102,14 +102,20 @@ struct TimeProfile {
   double operator()(double t) const;
 };
 
-// A prescribed motion of an object's pinned nodes, x(t) = x_0 + displacement × profile(t): a
-// support that is shaken, rather than held still.
+// A prescribed motion of an object's pinned nodes: x(t) = x_0 + displacement × profile(t), a
+// support that is shaken rather than held still; or each pinned node on its mesh vertex's track in
+// a point cache (an animated collider, a hand that carries a cloth), linear between samples.
 struct PinMotionDesc {
   Vec3 displacement = Vec3::Zero();  // m, the amplitude
   TimeProfile profile;
+  // The point cache's samples, each every vertex of the mesh (RawMesh::vertices, each from its
+  // point in the file's own order) placed as the mesh is (samples × vertices), `frames_per_sample`
+  // frames apart from t = 0; after the last, the last holds.
+  std::vector<Vec3> track;
+  double frames_per_sample = 0.0;  // at the scene's fps
   FileLoc loc;
 
-  bool moving() const { return !displacement.isZero(); }
+  bool moving() const { return !displacement.isZero() || !track.empty(); }
 };
 
 // A part of an object made of another material: every bar whose two ends are both in `nodes`,
@@ -153,7 +159,8 @@ inline constexpr double kDefaultWeldFraction = 0.1;
 struct ObjectDesc {
   std::string name;
   FileLoc loc;
-  RawMesh mesh;  // in world space
+  RawMesh mesh;         // in world space
+  Placement placement;  // how the mesh file's vertices were placed there
   FileLoc mesh_loc;
   std::string mesh_source = "the mesh";  // for messages: "mesh file '…'" or "the generated mesh"
   // Bars shorter than this fraction of the object's median bar length are collapsed before the
@@ -290,8 +297,8 @@ struct GroundDesc {
   FileLoc loc;
 };
 
-// Contact between objects and within one (dynamics/contact/object_contact.hpp): bars are capsules and
-// faces thin shells that push apart by a penalty, with Coulomb friction. Off unless asked for.
+// Contact between objects and within one (dynamics/contact/object_contact.hpp): bars are capsules
+// and faces thin shells that push apart by a penalty, with Coulomb friction. Off unless asked for.
 struct ContactDesc {
   bool objects = false;             // between different objects
   bool self = false;                // within one object

@@ -14,7 +14,8 @@
 #  5. refuses an object with a loose vertex, saying how to mend it, and leaves it as it was;
 #     names a dinam program that exists but cannot run, a Pins group the object lacks and an
 #     unsaved file's relative folder; says that a run with no pins falls freely; drops a square
-#     onto a raised ground, a chosen floor object and a collider, and finds it resting on each;
+#     onto a raised ground, a chosen floor object and a collider, and finds it resting on each,
+#     then on a collider the animation lifts (its track written as a PC2, followed by dinam);
 #  6. runs dinam as the panel does, its progress read from dinam's stderr up to 100 %, and cancels
 #     a long run: dinam stops (exit 143, SIGTERM) and the cache of step 3 is as it was;
 #  7. gives a second object a material and pins of its own, estimates (dinam info) without
@@ -179,6 +180,28 @@ for what, expected in (("ground", 0.4), ("floor", 0.3), ("collider", 0.6)):
     reach = settings.collider_radius if what == "collider" else 0.0
     assert expected + reach - 0.005 <= lowest <= expected + reach + 0.005, (what, lowest)
     assert shelf.modifiers.get("dinam") is None, "the collider was given a cache"
+    with open(scene_file) as f:
+        assert "point_cache" not in f.read(), "a collider that stays put was given a track"
+# A collider the animation moves: the shelf keyed from 0.6 m at the first frame to 0.9 m at the
+# last lifts the square with it, through the track dinam reads from the PC2 the add-on wrote.
+shelf.location.z = 0.6
+shelf.keyframe_insert("location", index=2, frame=scene.frame_start)
+shelf.location.z = 0.9
+shelf.keyframe_insert("location", index=2, frame=scene.frame_end)
+scene.frame_set(scene.frame_start)
+bpy.ops.object.select_all(action="DESELECT")
+square.select_set(True)
+assert bpy.ops.dinam.simulate() == {"FINISHED"}, settings.last_report
+with open(scene_file) as f:
+    written = f.read()
+assert f'pin_motion: {{point_cache: "{shelf.name}.pc2"}}' in written, written
+lowest = lowest_at_last_frame(square)
+print(f"addon: the square on the rising collider rests at z = {lowest:.4f} m (the collider at "
+      "0.9 m at the last frame)")
+assert 0.9 + settings.collider_radius - 0.005 <= lowest <= 0.9 + settings.collider_radius + 0.005, \
+    lowest
+shelf.animation_data_clear()
+shelf.location.z = 0.6
 shelf.dinam_collider = False
 # Turbulence, gusts, self-contact and a settle first reach the scene, and dinam takes them.
 settings.wind, settings.turbulence, settings.gust = (0.0, 3.0, 0.0), 0.5, 1.0

@@ -1,6 +1,6 @@
 // PC2 and MDD files: headers byte for byte against the published layouts, round trips through the
 // reader, and truncated or foreign files refused.
-#include "cache/point_cache.hpp"
+#include "io/point_cache.hpp"
 
 #include <gtest/gtest.h>
 

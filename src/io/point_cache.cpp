@@ -1,4 +1,4 @@
-#include "cache/point_cache.hpp"
+#include "io/point_cache.hpp"
 
 #include <fmt/format.h>
 
@@ -67,11 +67,9 @@ std::vector<char> encode_header(const PointCacheHeader& header) {
   return bytes;
 }
 
-[[noreturn]] void throw_bad_cache(const std::filesystem::path& path, const std::string& what) {
-  throw UserError(FileLoc{path.string()},
-                  fmt::format("{}; it is not a complete point cache written by dinam simulate "
-                              "(simulate again to make a new cache)",
-                              what));
+[[noreturn]] void throw_bad_cache(const std::filesystem::path& path, const std::string& what,
+                                  const char* remedy) {
+  throw UserError(FileLoc{path.string()}, fmt::format("{}; {}", what, remedy));
 }
 
 }  // namespace
@@ -122,25 +120,27 @@ void PointCacheWriter::check_stream(const char* doing) {
   }
 }
 
-PointCacheHeader read_point_cache_header(const std::filesystem::path& path,
-                                         PointCacheFormat format) {
+PointCacheHeader read_point_cache_header(const std::filesystem::path& path, PointCacheFormat format,
+                                         const char* remedy) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw_bad_cache(path, fmt::format("cannot open the point cache: {}", std::strerror(errno)));
+    throw_bad_cache(path, fmt::format("cannot open the point cache: {}", std::strerror(errno)),
+                    remedy);
   }
   PointCacheHeader header;
   header.format = format;
   std::array<char, kPc2HeaderBytes> bytes{};
   const std::size_t fixed = format == PointCacheFormat::kPc2 ? kPc2HeaderBytes : 8;
   if (!in.read(bytes.data(), static_cast<std::streamsize>(fixed))) {
-    throw_bad_cache(path, "the file is shorter than a point cache header");
+    throw_bad_cache(path, "the file is shorter than a point cache header", remedy);
   }
   if (format == PointCacheFormat::kPc2) {
     if (std::memcmp(bytes.data(), kPc2Signature, sizeof(kPc2Signature)) != 0) {
-      throw_bad_cache(path, "the file does not start with POINTCACHE2");
+      throw_bad_cache(path, "the file does not start with POINTCACHE2", remedy);
     }
     if (get_int(&bytes[12], false) != 1) {
-      throw_bad_cache(path, fmt::format("PC2 version {} is not 1", get_int(&bytes[12], false)));
+      throw_bad_cache(path, fmt::format("PC2 version {} is not 1", get_int(&bytes[12], false)),
+                      remedy);
     }
     header.point_count = get_int(&bytes[16], false);
     header.start_frame = get_float(&bytes[20], false);
@@ -151,12 +151,12 @@ PointCacheHeader read_point_cache_header(const std::filesystem::path& path,
     header.point_count = get_int(&bytes[4], true);
   }
   if (header.point_count < 0 || header.sample_count < 0) {
-    throw_bad_cache(path, "the header gives a negative count");
+    throw_bad_cache(path, "the header gives a negative count", remedy);
   }
   if (format == PointCacheFormat::kMdd) {
     std::vector<char> times(4 * static_cast<std::size_t>(header.sample_count));
     if (!in.read(times.data(), static_cast<std::streamsize>(times.size()))) {
-      throw_bad_cache(path, "the file ends inside its table of frame times");
+      throw_bad_cache(path, "the file ends inside its table of frame times", remedy);
     }
     header.times.resize(static_cast<std::size_t>(header.sample_count));
     for (std::size_t k = 0; k < header.times.size(); ++k) {
@@ -166,19 +166,22 @@ PointCacheHeader read_point_cache_header(const std::filesystem::path& path,
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size != header.file_bytes()) {
-    throw_bad_cache(path, fmt::format("the file has {} bytes where its header promises {}",
-                                      ec ? 0 : size, header.file_bytes()));
+    throw_bad_cache(path,
+                    fmt::format("the file has {} bytes where its header promises {}", ec ? 0 : size,
+                                header.file_bytes()),
+                    remedy);
   }
   return header;
 }
 
 void read_point_cache_sample(std::ifstream& in, const std::filesystem::path& path,
-                             const PointCacheHeader& header, std::int32_t sample, Vec3f* points) {
+                             const PointCacheHeader& header, std::int32_t sample, Vec3f* points,
+                             const char* remedy) {
   DINAM_CHECK(sample >= 0 && sample < header.sample_count);
   std::vector<char> bytes(header.sample_bytes());
   in.seekg(static_cast<std::streamoff>(header.header_bytes() + sample * header.sample_bytes()));
   if (!in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()))) {
-    throw_bad_cache(path, fmt::format("cannot read sample {}", sample));
+    throw_bad_cache(path, fmt::format("cannot read sample {}", sample), remedy);
   }
   const bool big = big_endian(header.format);
   for (std::int32_t i = 0; i < header.point_count; ++i) {
@@ -189,9 +192,11 @@ void read_point_cache_sample(std::ifstream& in, const std::filesystem::path& pat
     // framing and the drawing as garbage, so a cache that holds one is refused by name.
     if (!points[i].allFinite()) {
       throw_bad_cache(
-          path, fmt::format("point {} of sample {} (frame {}) is not a finite position "
-                            "({}, {}, {})",
-                            i, sample, sample + 1, points[i].x(), points[i].y(), points[i].z()));
+          path,
+          fmt::format("point {} of sample {} (frame {}) is not a finite position "
+                      "({}, {}, {})",
+                      i, sample, sample + 1, points[i].x(), points[i].y(), points[i].z()),
+          remedy);
     }
   }
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Point caches: every frame's vertex positions of one mesh, in the two formats that animation
 // packages read without a plug-in. The points are a mesh's vertices in its own order (for dinam,
-// an object's nodes), so the cache moves the rest mesh written beside it (obj_file.hpp).
+// an object's nodes), so the cache moves the rest mesh written beside it (cache/obj_file.hpp); a
+// scene's `pin_motion: {point_cache: …}` reads one as the path its pinned nodes follow.
 //
 //  - PC2 (3ds Max's Point Cache 2, Blender's Mesh Cache modifier): little-endian. A 32-byte
 //    header: char[12] "POINTCACHE2\0", int32 version (1), int32 point count, float32 start frame,
@@ -57,14 +58,24 @@ class PointCacheWriter {
   std::vector<char> buffer_;  // one sample, in the file's byte order
 };
 
+// What a message about a broken point cache tells the user to do: dinam's own caches are
+// simulated again; a scene's input is written again by the program that made it.
+inline constexpr const char* kSimulateAgain =
+    "it is not a complete point cache written by dinam simulate (simulate again to make a new "
+    "cache)";
+inline constexpr const char* kExportAgain =
+    "it is not a complete point cache (export it again from the program that wrote it)";
+
 // Reads and checks a point cache's header (and that the file is as long as it says). Throws
-// UserError naming the file when it is not a complete PC2 or MDD file of that format.
-PointCacheHeader read_point_cache_header(const std::filesystem::path& path,
-                                         PointCacheFormat format);
+// UserError naming the file, and then `remedy`, when it is not a complete PC2 or MDD file of that
+// format.
+PointCacheHeader read_point_cache_header(const std::filesystem::path& path, PointCacheFormat format,
+                                         const char* remedy = kSimulateAgain);
 
 // Reads sample `sample` (0-based) into `points` (header.point_count positions). Throws UserError
-// naming the file when it cannot be read.
+// naming the file, and then `remedy`, when it cannot be read.
 void read_point_cache_sample(std::ifstream& in, const std::filesystem::path& path,
-                             const PointCacheHeader& header, std::int32_t sample, Vec3f* points);
+                             const PointCacheHeader& header, std::int32_t sample, Vec3f* points,
+                             const char* remedy = kSimulateAgain);
 
 }  // namespace dinam
