@@ -1,6 +1,6 @@
 #version 330 core
-// A soft checkerboard that takes the light's shadows and fades into the horizon colour with
-// distance from the eye, so the plane's far edge never shows. Linear light
+// A soft checkerboard (or a plain floor) that takes the light's shadows and fades into the horizon
+// colour with distance from the eye, so the plane's far edge never shows. Linear light
 // (display.glsl stores it).
 in vec3 world_position;
 in vec2 plane_position;
@@ -8,17 +8,30 @@ in vec2 plane_position;
 uniform vec3 plane_normal;
 uniform float fade_distance;  // m; fully faded at this distance from the eye
 uniform float tile_size;  // m; 0 for a plain ground
+uniform vec3 ground_color;   // linear; a plain ground's, or the checker's lighter squares
+uniform vec3 checker_color;  // linear; the checker's other squares
 
 out vec4 out_color;
 
+// The share of the lighter squares in the pixel's footprint on the ground: the checkerboard
+// averaged over a box as wide as the footprint (the screen derivatives of `squares`), found in
+// closed form: the integral of a square wave is a triangle wave, so the box's average is a
+// difference of two triangle waves over its width. Where the squares shrink below a pixel it
+// tends to ½, the mean of the two colours, instead of aliasing into moiré towards the horizon.
+float lighter_share(vec2 squares) {
+  vec2 width = max(abs(dFdx(squares)), abs(dFdy(squares))) + 1e-4;
+  vec2 sign_average = 2.0 * (abs(fract((squares - 0.5 * width) * 0.5) - 0.5) -
+                             abs(fract((squares + 0.5 * width) * 0.5) - 0.5)) / width;
+  return 0.5 - 0.5 * sign_average.x * sign_average.y;
+}
+
 void main() {
   // tile_size 0 asks for a plain ground.
-  float checker = 0.5;
+  float lighter = 1.0;
   if (tile_size > 0.0) {
-    vec2 cell = floor(plane_position / tile_size);
-    checker = mod(cell.x + cell.y, 2.0);
+    lighter = lighter_share(plane_position / tile_size);
   }
-  vec3 albedo = mix(vec3(0.50, 0.48, 0.45), vec3(0.60, 0.58, 0.54), checker);
+  vec3 albedo = mix(checker_color, ground_color, lighter);
   vec3 color = shade_matte(albedo, plane_normal, world_position);
   float fade = smoothstep(0.15 * fade_distance, fade_distance, length(world_position - eye_position));
   out_color = stored_color(mix(color, horizon_color, fade));

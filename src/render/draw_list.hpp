@@ -46,6 +46,12 @@ struct DrawList {
   Vec3f ground_normal = Vec3f::UnitZ();  // unit
   float ground_half_size = 10.0f;  // m; the checker fades out towards this distance from the eye
   float ground_tile = 0.5f;        // m, checker size
+  // Linear RGB: the ground's colour (a plain ground's, the checker's lighter squares) and the
+  // checker's other squares; the sky's at the horizon and at the top of the picture.
+  Vec3f ground_color{0.60f, 0.58f, 0.54f};
+  Vec3f ground_checker_color{0.50f, 0.48f, 0.45f};
+  Vec3f sky_horizon{0.78f, 0.82f, 0.86f};
+  Vec3f sky_zenith{0.30f, 0.45f, 0.68f};
 
   Vec3f light_direction{0.35f, -0.45f, 0.82f};  // towards the light; normalised when drawn
   bool shadows = true;

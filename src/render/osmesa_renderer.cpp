@@ -32,8 +32,6 @@ constexpr float kPrepassDepthMargin = 8.0f / 16777216.0f;
 // of any of the pass.
 constexpr float kGroundYieldFactor = 2.0f;
 constexpr float kGroundYieldUnits = 16.0f;
-const Vec3f kHorizonColor{0.78f, 0.82f, 0.86f};
-const Vec3f kZenithColor{0.30f, 0.45f, 0.68f};
 
 void set_vec3(int location, const Vec3f& v) {
   glUniform3f(location, v.x(), v.y(), v.z());
@@ -152,8 +150,8 @@ void OsmesaRenderer::set_lighting(const ShaderProgram& program, const DrawList& 
   if (light_from_world != nullptr) {
     glUniformMatrix4fv(program.uniform("light_from_world"), 1, GL_FALSE, light_from_world->data());
   }
-  set_vec3(program.uniform("horizon_color"), kHorizonColor);
-  set_vec3(program.uniform("zenith_color"), kZenithColor);
+  set_vec3(program.uniform("horizon_color"), list.sky_horizon);
+  set_vec3(program.uniform("zenith_color"), list.sky_zenith);
 }
 
 void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
@@ -259,6 +257,8 @@ void OsmesaRenderer::draw_ground(const DrawList& list, const Mat4f& clip_from_wo
   glUniform1f(ground.uniform("half_size"), list.ground_half_size);
   glUniform1f(ground.uniform("fade_distance"), 0.9f * list.ground_half_size);
   glUniform1f(ground.uniform("tile_size"), list.ground_checker ? list.ground_tile : 0.0f);
+  set_vec3(ground.uniform("ground_color"), list.ground_color);
+  set_vec3(ground.uniform("checker_color"), list.ground_checker_color);
   if (!depth_only) {
     set_lighting(ground, list, camera, light_from_world);
     set_output(ground, direct);
@@ -376,7 +376,7 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
     }
     draw_shapes(list, false, clip_from_world.data(), camera, light, false, Vec3f::Zero(), 0.0f);
     glDisable(GL_DEPTH_TEST);
-    draw_sky(false);  // where the stencil is still 0
+    draw_sky(list, false);  // where the stencil is still 0
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
     glDepthFunc(GL_LESS);
@@ -393,7 +393,7 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
   multisampled_target_ = samples_ > 1;
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glDisable(GL_DEPTH_TEST);
-  draw_sky(direct);
+  draw_sky(list, direct);
   glEnable(GL_DEPTH_TEST);
   if (list.ground_visible) {
     draw_ground(list, clip_from_world, camera, light, direct, false);
@@ -407,11 +407,11 @@ void OsmesaRenderer::draw_instant(const DrawList& list, const FrameSample& sampl
   }
 }
 
-void OsmesaRenderer::draw_sky(bool direct) {
+void OsmesaRenderer::draw_sky(const DrawList& list, bool direct) {
   const ShaderProgram& sky = programs_in_use_->sky;
   sky.use();
-  set_vec3(sky.uniform("horizon_color"), kHorizonColor);
-  set_vec3(sky.uniform("zenith_color"), kZenithColor);
+  set_vec3(sky.uniform("horizon_color"), list.sky_horizon);
+  set_vec3(sky.uniform("zenith_color"), list.sky_zenith);
   set_output(sky, direct);
   glBindVertexArray(full_screen_vao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -54,7 +54,7 @@ class OsmesaRenderer final : public Renderer {
   void draw_instant(const DrawList& list, const FrameSample& sample, const Eigen::Vector2f& jitter,
                     const Eigen::Vector2f& sun_point, InstantTarget target, float weight,
                     Mat4f& clip_from_eye);
-  void draw_sky(bool direct);
+  void draw_sky(const DrawList& list, bool direct);
   void draw_ground(const DrawList& list, const Mat4f& clip_from_world, const RenderCamera& camera,
                    const Mat4f* light_from_world, bool direct, bool depth_only);
   // `orthographic_sight`: the line of sight of an orthographic view (the light's), zero for the

@@ -37,6 +37,10 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
 // A time profile: constant, step, ramp or sine.
 TimeProfile read_profile(YamlMap map);
 
+// A colour as artists pick it at `key`: [r, g, b] in sRGB, decoded to linear light, or
+// {linear: [r, g, b]} as it is; linear RGB.
+Vec3f read_color(YamlMap& map, const std::string& key);
+
 // A set of an object's vertices: `all`, `indices`, `box` (one or a list). Indices are `mesh`'s
 // vertex ids, but for an OBJ file the numbers of its `v` lines (from 0), turned into `mesh`'s ids
 // here. Where `clamped` is given, the map may also hold `clamped: true/false` (pinned sets), which

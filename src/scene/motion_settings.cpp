@@ -14,7 +14,7 @@ namespace {
 
 // Keys read only for drawing. Keep this list short and sure: each entry must be read by no stage
 // before render/ (scene_reader.cpp reads them into fields that model/ and dynamics/ never see).
-constexpr std::array<std::string_view, 14> kLookOnlyKeys = {
+constexpr std::array<std::string_view, 18> kLookOnlyKeys = {
     "name",            // the movie's file name
     "camera",          // the view
     "light",           // the sun's direction and size
@@ -23,6 +23,10 @@ constexpr std::array<std::string_view, 14> kLookOnlyKeys = {
     "movie",           // mp4, gif or none
     "ground.visible",  // drawn or not (contact is `ground.contact`)
     "ground.pattern",
+    "ground.color",
+    "ground.checker_color",
+    "ground.tile",
+    "sky",  // its colours
     "objects[].color",
     "objects[].render_radius",
     "objects[].style",

@@ -36,6 +36,8 @@ BoxDesc read_box(YamlMap map) {
   return box;
 }
 
+}  // namespace
+
 // A colour as artists pick it: [r, g, b] in sRGB (Blender's colour picker, Houdini, Photoshop,
 // CSS), each 0 to 1, decoded to linear light for shading; or {linear: [r, g, b]}, taken as it is
 // (values from a renderer's linear workflow). The model and the cache keep linear values.
@@ -66,8 +68,6 @@ Vec3f read_color(YamlMap& map, const std::string& key) {
   }
   return color.cast<float>();
 }
-
-}  // namespace
 
 NodeSelection read_nodes(YamlMap map, const RawMesh& mesh, bool* clamped) {
   // An OBJ file's vertices are numbered as its `v` lines (as the program that wrote it numbers

@@ -285,6 +285,11 @@ struct GroundDesc {
   Vec3 normal = kWorldUp;     // unit, pointing out of the ground
   bool visible = true;
   bool checker = true;  // a checkerboard, or plain
+  // Linear RGB: the ground's colour (a plain ground's, the checker's lighter squares), the
+  // checker's other squares, and the squares' size (empty: from the scene's extent).
+  Vec3f color{0.60f, 0.58f, 0.54f};
+  Vec3f checker_color{0.50f, 0.48f, 0.45f};
+  std::optional<double> tile;  // m
   bool contact = true;
   // Penalty stiffness per node: empty for auto (a contact frequency an eighth of the model's
   // highest).
@@ -295,6 +300,13 @@ struct GroundDesc {
   double kinetic_friction = 0.4;    // μk
   bool stick = false;               // no sliding at all (the paper's falling ball)
   FileLoc loc;
+};
+
+// The sky's colours, linear RGB: at the horizon and at the top of the picture; they light the
+// scene too (`sky_light`).
+struct SkyDesc {
+  Vec3f horizon{0.78f, 0.82f, 0.86f};
+  Vec3f zenith{0.30f, 0.45f, 0.68f};
 };
 
 // Contact between objects and within one (dynamics/contact/object_contact.hpp): bars are capsules
@@ -395,6 +407,7 @@ struct SceneDescription {
   WindDesc wind;
 
   GroundDesc ground;
+  SkyDesc sky;
   ContactDesc contact;
   CameraDesc camera;
   int image_width = 1280;

@@ -47,6 +47,17 @@ GroundDesc read_ground(YamlMap map) {
                      pattern);
   }
   ground.checker = pattern == "checker";
+  if (map.has("color")) {
+    ground.color = read_color(map, "color");
+  }
+  if (map.has("checker_color")) {
+    ground.checker_color = read_color(map, "checker_color");
+  }
+  if (const YAML::Node tile = map.get("tile");
+      tile && !(tile.IsScalar() && tile.Scalar() == "auto")) {
+    ground.tile = as_double(tile, map.file(), "ground.tile");
+    require_in_range(*ground.tile, 1e-3, 1e3, map.loc("tile"), "ground.tile", "m");
+  }
   ground.contact = map.boolean("contact", ground.contact);
   if (const YAML::Node stiffness = map.get("stiffness");
       stiffness && !(stiffness.IsScalar() && stiffness.Scalar() == "auto")) {
@@ -340,6 +351,16 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
   }
   if (map.has("contact")) {
     scene.contact = read_contact(YamlMap(map.get("contact"), file, "contact"));
+  }
+  if (map.has("sky")) {
+    YamlMap sky(map.get("sky"), file, "sky");
+    if (sky.has("horizon")) {
+      scene.sky.horizon = read_color(sky, "horizon");
+    }
+    if (sky.has("zenith")) {
+      scene.sky.zenith = read_color(sky, "zenith");
+    }
+    sky.finish();
   }
   if (map.has("camera")) {
     scene.camera = read_camera(map.get("camera"), file, scene.warnings);

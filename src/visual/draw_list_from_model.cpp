@@ -161,7 +161,11 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
   list.ground_center = (center - (center - scene.ground.point).dot(normal) * normal).cast<float>();
   list.ground_normal = normal.cast<float>();
   list.ground_half_size = static_cast<float>(std::max(30.0 * extent, 50.0));
-  list.ground_tile = static_cast<float>(round_down_nice(extent / 5.0));
+  list.ground_tile = static_cast<float>(scene.ground.tile.value_or(round_down_nice(extent / 5.0)));
+  list.ground_color = scene.ground.color;
+  list.ground_checker_color = scene.ground.checker_color;
+  list.sky_horizon = scene.sky.horizon;
+  list.sky_zenith = scene.sky.zenith;
 
   list.light_direction = scene.light_direction.cast<float>();
   list.light_size_degrees = static_cast<float>(scene.light_size_degrees);

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <map>
 
-#include "run/frame_source.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "run/frame_source.hpp"
 #include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
@@ -27,7 +27,8 @@ light: {direction: [0.3, -0.4, 0.8]}
 image: {width: 320, height: 180, samples: 2}
 output: out/drop
 movie: mp4
-ground: {height: 0, visible: true, pattern: checker}
+ground: {height: 0, visible: true, pattern: checker, color: [0.6, 0.6, 0.6], checker_color: [0.5, 0.5, 0.5], tile: 0.5}
+sky: {horizon: [0.8, 0.8, 0.9]}
 objects:
   - name: cloth
     mesh: {grid: {width: 1, height: 1, columns: 6, rows: 6}, rotation: [20, 0, 0], translation: [0, 0, 0.1]}
@@ -62,6 +63,11 @@ const std::map<std::string, std::pair<std::string, std::string>> kLookEdits = {
     {"movie", {"movie: mp4", "movie: gif"}},
     {"ground.visible", {"visible: true", "visible: false"}},
     {"ground.pattern", {"pattern: checker", "pattern: plain"}},
+    {"ground.color", {"color: [0.6, 0.6, 0.6]", "color: [0.9, 0.2, 0.2]"}},
+    {"ground.checker_color", {"checker_color: [0.5, 0.5, 0.5]", "checker_color: [0.1, 0.1, 0.1]"}},
+    {"ground.tile", {"tile: 0.5", "tile: 2"}},
+    {"sky",
+     {"sky: {horizon: [0.8, 0.8, 0.9]}", "sky: {horizon: [1, 0.5, 0.1], zenith: [0, 0, 0.5]}"}},
     {"objects[].color", {"color: [0.7, 0.2, 0.2]", "color: [0.2, 0.2, 0.7]"}},
     {"objects[].render_radius", {"render_radius: 0.01", "render_radius: 0.05"}},
     {"objects[].style", {"style: surface", "style: both"}},
