@@ -43,10 +43,12 @@ void refuse_contact_overlap_at_rest(const SceneDescription& scene, const Model& 
 }  // namespace
 
 Model build_model_telling_warnings(const SceneDescription& scene) {
-  Model model = build_model(scene);
+  // The scene's warnings first: one may explain the error that stops the model (a y-up mesh whose
+  // pins, given in the other axes, hold no node).
   for (const std::string& warning : scene.warnings) {
     fmt::print(stderr, "{}\n", warning);
   }
+  Model model = build_model(scene);
   for (const std::string& warning : model.warnings) {
     fmt::print(stderr, "{}\n", warning);
   }

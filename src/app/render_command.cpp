@@ -133,8 +133,21 @@ int run_render(const RenderOptions& options) {
     }
   }
   progress.finish();
-  write_frame_folder_info(folder, {scene.name, scene.fps, scene.frame_count(), scene.image_width,
-                                   scene.image_height, input.scene_movie});
+  const FrameFolderInfo info{scene.name,        scene.fps,          scene.frame_count(),
+                             scene.image_width, scene.image_height, input.scene_movie};
+  write_frame_folder_info(folder, info);
+  // Frame files that belong to no frame of this movie (past its last frame, or numbered with other
+  // digits) are an earlier, longer render's: `dinam movie` would refuse the folder for them.
+  if (const std::vector<std::string> stale = take_inventory(folder, info).extra; !stale.empty()) {
+    for (const std::string& name : stale) {
+      std::error_code ec;
+      std::filesystem::remove(folder / name, ec);
+    }
+    if (!options.quiet) {
+      fmt::print("dinam: removed {} frame{} left from an earlier, longer render ({} … {})\n",
+                 stale.size(), stale.size() == 1 ? "" : "s", stale.front(), stale.back());
+    }
+  }
   const double draw_seconds = seconds_since(draw_start);
 
   // 3. The movie: ffmpeg finishes what it has been encoding all along.

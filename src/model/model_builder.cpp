@@ -1,8 +1,10 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <type_traits>
@@ -368,6 +370,29 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
   return nodes;
 }
 
+// "its box [x, y, z] … [x, y, z] lies", or its boxes', for a message.
+std::string boxes_text(const std::vector<BoxDesc>& boxes) {
+  std::vector<std::string> each;
+  for (const BoxDesc& box : boxes) {
+    each.push_back(fmt::format("[{:.4g}, {:.4g}, {:.4g}] … [{:.4g}, {:.4g}, {:.4g}]", box.min.x(),
+                               box.min.y(), box.min.z(), box.max.x(), box.max.y(), box.max.z()));
+  }
+  return fmt::format("{} {} {}", boxes.size() == 1 ? "its box" : "its boxes", fmt::join(each, ", "),
+                     boxes.size() == 1 ? "lies" : "lie");
+}
+
+// The box the object's nodes span, "[x, y, z] … [x, y, z]".
+std::string node_span_text(const ModelObject& info, const Model& model) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (Index node = info.first_node; node < info.first_node + info.node_count; ++node) {
+    lo = lo.cwiseMin(model.node_initial_x[node]);
+    hi = hi.cwiseMax(model.node_initial_x[node]);
+  }
+  return fmt::format("[{:.4g}, {:.4g}, {:.4g}] … [{:.4g}, {:.4g}, {:.4g}]", lo.x(), lo.y(), lo.z(),
+                     hi.x(), hi.y(), hi.z());
+}
+
 // The driven nodes' tracks from the object's point cache (PinMotionDesc::track), each node on
 // its first mesh vertex's.
 void add_pin_track(const ObjectNodes& object, double fps, PinMotion& motion) {
@@ -411,10 +436,10 @@ void add_object_conditions(const ObjectNodes& object, double fps, Model& model) 
     // object would fall unheld, which is never what `pinned` meant.
     if (pinned.empty()) {
       throw_user_error(desc.pins.loc,
-                       "'pinned' of '{}' holds no node of its mesh: its boxes lie beside the "
-                       "mesh (check them against the node positions 'dinam info' prints, and the "
-                       "mesh's units and placement), or remove the key",
-                       desc.name);
+                       "'pinned' of '{}' holds no node of its mesh: {} beside the mesh, whose "
+                       "nodes span {} (m; check the mesh's units and placement, and its up axis), "
+                       "or remove the key",
+                       desc.name, boxes_text(desc.pins.boxes), node_span_text(info, model));
     }
   }
   for (Index node = info.first_node; node < info.first_node + info.node_count; ++node) {

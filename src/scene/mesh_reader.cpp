@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 
 #include "scene/element_readers.hpp"
@@ -31,6 +32,26 @@ Transform read_transform(YamlMap& map) {
   transform.rotation_degrees = map.vec3("rotation", transform.rotation_degrees);
   transform.translation = map.vec3("translation", transform.translation);
   return transform;
+}
+
+// Whether a rotation in degrees looks like one in radians: every angle given is a whole multiple
+// of π/12 (15°, 30°, 45°, 90° … in radians) to 0.002, none more than a turn. A turn of 1.5708°
+// is never what a scene means; 90° is.
+bool looks_like_radians(const Vec3& degrees) {
+  constexpr double kStep = std::numbers::pi / 12.0;
+  bool any = false;
+  for (int c = 0; c < 3; ++c) {
+    const double r = std::abs(degrees[c]);
+    if (r == 0.0) {
+      continue;
+    }
+    const double steps = std::round(r / kStep);
+    if (steps == 0.0 || r > 2.0 * std::numbers::pi + 0.002 || std::abs(r - steps * kStep) > 0.002) {
+      return false;
+    }
+    any = true;
+  }
+  return any;
 }
 
 GridSpec read_grid(YamlMap map) {
@@ -205,6 +226,16 @@ void read_mesh(YamlMap map, const std::filesystem::path& scene_folder, ObjectDes
   Placement& placement = object.placement;
   read_up_axis(map, file, object.name, mesh, placement, warnings);
   Transform transform = read_transform(map);
+  if (looks_like_radians(transform.rotation_degrees)) {
+    const Vec3 r = transform.rotation_degrees;
+    const Vec3 meant = r * (180.0 / std::numbers::pi);
+    warnings.push_back(fmt::format(
+        "{}: warning: object '{}': '{}' is in degrees, so [{:g}, {:g}, {:g}] turns it by at most "
+        "{:g}°; if these are radians, write [{:g}, {:g}, {:g}]",
+        map.loc("rotation").to_string(), object.name, map.path("rotation"), r.x(), r.y(), r.z(),
+        r.cwiseAbs().maxCoeff(), std::round(meant.x()), std::round(meant.y()),
+        std::round(meant.z())));
+  }
   transform.scale *= read_units(map, mesh);
   if (map.has("fit")) {
     YamlMap fit(map.get("fit"), map.file(), map.path("fit"));

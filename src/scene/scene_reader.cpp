@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -456,11 +457,45 @@ int SceneDescription::frame_count() const {
   return static_cast<int>(std::llround(duration * fps));
 }
 
+namespace {
+
+// The first tab in a line's indentation, as a file location (line and column, 1-based); none
+// where every line is indented with spaces.
+std::optional<std::pair<int, int>> first_indenting_tab(const std::string& text) {
+  int line = 1;
+  bool indenting = true;
+  int column = 1;
+  for (const char c : text) {
+    if (c == '\n') {
+      ++line;
+      column = 1;
+      indenting = true;
+      continue;
+    }
+    if (indenting && c == '\t') {
+      return std::pair{line, column};
+    }
+    indenting = indenting && c == ' ';
+    ++column;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 SceneDescription read_scene_text(const std::string& text, const std::filesystem::path& source) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
+    // YAML indents with spaces only; a tab there reads as a broken structure ("end of map not
+    // found"), so the tab itself is named.
+    if (const auto tab = first_indenting_tab(text)) {
+      throw UserError(FileLoc{source.string(), tab->first, tab->second},
+                      "a tab indents this line, and YAML indents with spaces only: replace it "
+                      "with spaces (the YAML parser says: " +
+                          e.msg + ")");
+    }
     throw UserError(FileLoc{source.string(), e.mark.line + 1, e.mark.column + 1},
                     "this is not valid YAML: " + e.msg);
   }

@@ -40,5 +40,40 @@ TEST(FrameFolder, InventoryNamesMissingAndForeignFrames) {
   EXPECT_EQ(frame_file_name(7, 12000), "frame_00007.png");
 }
 
+// A shorter render into the folder of a longer one: the frames past its end are the longer
+// render's, removed and said so, and `dinam movie` then takes the folder.
+TEST(FrameFolder, AShorterRenderRemovesTheFramesLeftPastItsEnd) {
+  const test::TemporaryFolder folder("shorter");
+  const std::filesystem::path scene = folder.path() / "short.yaml";
+  std::ofstream(scene) << R"(version: 1
+name: short
+duration: 0.2
+fps: 20
+image: {width: 64, height: 48, quality: draft}
+movie: none
+objects:
+  - name: rope
+    mesh: {polyline: {points: [[0, 0, 1], [1, 0, 1]], segments: 4}}
+    material: {density: 1000, youngs_modulus: 1.0e6, radius: 0.01}
+    pinned: {indices: [0]}
+)";
+  const std::filesystem::path out = folder.path() / "out";
+  std::filesystem::create_directories(out);
+  for (int frame = 1; frame <= 8; ++frame) {  // a longer render's, 8 frames
+    std::ofstream(out / frame_file_name(frame, 8)) << "png";
+  }
+  const test::CommandResult run = test::run_dinam({"render", scene.string(), "-o", out.string()});
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("removed 4 frames left from an earlier, longer render "
+                            "(frame_0005.png … frame_0008.png)"),
+            std::string::npos)
+      << run.output;
+  for (int frame = 1; frame <= 8; ++frame) {
+    EXPECT_EQ(std::filesystem::exists(out / frame_file_name(frame, 8)), frame <= 4) << frame;
+  }
+  const test::CommandResult movie = test::run_dinam({"movie", out.string()});
+  EXPECT_EQ(movie.exit_code, 0) << movie.output;
+}
+
 }  // namespace
 }  // namespace dinam

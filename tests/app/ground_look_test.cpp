@@ -84,7 +84,7 @@ TEST(GroundLook, TheCheckerFadesToItsMeanTowardsTheHorizonWithoutMoire) {
   // The horizon is at row 180 (the eye 0.6 m up looking 0.25 m down over 23 m); the far band is
   // the ground's first 30 rows below it, where squares of 6 cm (the scene's automatic size) are a
   // few pixels to a tenth of one.
-  for (const auto [top, bottom] : {std::pair{182, 200}, std::pair{200, 230}}) {
+  for (const auto& [top, bottom] : {std::pair{182, 200}, std::pair{200, 230}}) {
     const double with_checker = band_variance(checker, top, bottom);
     const double flat = band_variance(plain, top, bottom);
     fmt::print("rows {}–{}: variance {:.3f} with the checker, {:.3f} flat\n", top, bottom,
