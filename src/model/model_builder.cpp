@@ -370,12 +370,18 @@ ObjectNodes add_object(const ObjectDesc& object, Index object_id, double weld_fr
   return nodes;
 }
 
+// "[x, y, z] … [x, y, z]", a box from its corners, for a message.
+std::string span_text(const Vec3& lo, const Vec3& hi) {
+  return fmt::format("[{:.4g}, {:.4g}, {:.4g}] … [{:.4g}, {:.4g}, {:.4g}]", lo.x(), lo.y(), lo.z(),
+                     hi.x(), hi.y(), hi.z());
+}
+
 // "its box [x, y, z] … [x, y, z] lies", or its boxes', for a message.
 std::string boxes_text(const std::vector<BoxDesc>& boxes) {
   std::vector<std::string> each;
+  each.reserve(boxes.size());
   for (const BoxDesc& box : boxes) {
-    each.push_back(fmt::format("[{:.4g}, {:.4g}, {:.4g}] … [{:.4g}, {:.4g}, {:.4g}]", box.min.x(),
-                               box.min.y(), box.min.z(), box.max.x(), box.max.y(), box.max.z()));
+    each.push_back(span_text(box.min, box.max));
   }
   return fmt::format("{} {} {}", boxes.size() == 1 ? "its box" : "its boxes", fmt::join(each, ", "),
                      boxes.size() == 1 ? "lies" : "lie");
@@ -389,8 +395,7 @@ std::string node_span_text(const ModelObject& info, const Model& model) {
     lo = lo.cwiseMin(model.node_initial_x[node]);
     hi = hi.cwiseMax(model.node_initial_x[node]);
   }
-  return fmt::format("[{:.4g}, {:.4g}, {:.4g}] … [{:.4g}, {:.4g}, {:.4g}]", lo.x(), lo.y(), lo.z(),
-                     hi.x(), hi.y(), hi.z());
+  return span_text(lo, hi);
 }
 
 // The driven nodes' tracks from the object's point cache (PinMotionDesc::track), each node on
