@@ -106,6 +106,18 @@ std::string mesh_geometry_hash(const RawMesh& mesh) {
   return "sha256:" + hash.hex_digest();
 }
 
+// The track a point cache gives the pins (PinMotionDesc::track), placed, and its timing: a cache
+// exported again under the same name moves the pins otherwise.
+std::string pin_track_hash(const PinMotionDesc& motion) {
+  Sha256 hash;
+  hash_value(hash, motion.frames_per_sample);
+  hash_value(hash, static_cast<std::uint64_t>(motion.track.size()));
+  for (const Vec3& p : motion.track) {
+    hash.update(p.data(), 3 * sizeof(double));
+  }
+  return "sha256:" + hash.hex_digest();
+}
+
 }  // namespace
 
 std::vector<std::string> look_only_keys() {
@@ -123,6 +135,10 @@ std::vector<MotionSetting> motion_settings(const YAML::Node& root,
   for (std::size_t i = 0; i < objects.size(); ++i) {
     settings.push_back(
         {fmt::format("objects[{}].mesh geometry", i), mesh_geometry_hash(objects[i].mesh)});
+    if (!objects[i].pin_motion.track.empty()) {
+      settings.push_back(
+          {fmt::format("objects[{}].pin_motion track", i), pin_track_hash(objects[i].pin_motion)});
+    }
   }
   return settings;
 }

@@ -157,6 +157,17 @@ TEST(PinTrack, ACacheThatIsNotOfTheMeshIsRefusedAtItsKey) {
                           {"broken.pc2", "export it again"});
 }
 
+// A cache exported again under the same name, its pins moving otherwise, is another motion: the
+// scene's motion settings (what a motion cache is checked against) tell the two apart.
+TEST(PinTrack, ACacheExportedAgainChangesTheMotionSettings) {
+  TrackScene scene;
+  write_track(scene.folder.path() / "track.pc2", 4);
+  const SceneDescription first = scene.read("", "{point_cache: track.pc2}");
+  EXPECT_EQ(scene.read("", "{point_cache: track.pc2}").motion_settings, first.motion_settings);
+  write_track(scene.folder.path() / "track.pc2", 5);  // one more frame of the animation
+  EXPECT_NE(scene.read("", "{point_cache: track.pc2}").motion_settings, first.motion_settings);
+}
+
 TEST(PinTrack, AFirstSampleAwayFromTheMeshIsWarnedOf) {
   TrackScene scene;
   write_track(scene.folder.path() / "track.pc2", 3);
