@@ -35,6 +35,24 @@ constexpr std::array<std::string_view, 18> kLookOnlyKeys = {
     "objects[].finish",
 };
 
+// Keys that only say where a mesh's vertices come from and where they are placed: the hash of the
+// loaded geometry (mesh_geometry_hash) holds their whole effect, so their text is left out, and
+// writing a default out (`up_axis: z`, `scale: 1`) or naming another file of the same geometry
+// keeps a cache. (`mesh.weld` changes the model, not the geometry, and stays.)
+constexpr std::array<std::string_view, 9> kGeometryKeys = {
+    "objects[].mesh.file",  "objects[].mesh.up_axis",  "objects[].mesh.scale",
+    "objects[].mesh.units", "objects[].mesh.rotation", "objects[].mesh.translation",
+    "objects[].mesh.fit",   "objects[].mesh.grid",     "objects[].mesh.polyline",
+};
+
+bool is_geometry_key(const std::string& pattern) {
+  return std::any_of(kGeometryKeys.begin(), kGeometryKeys.end(), [&](std::string_view key) {
+    return pattern.size() >= key.size() && pattern.compare(0, key.size(), key) == 0 &&
+           (pattern.size() == key.size() || pattern[key.size()] == '.' ||
+            pattern[key.size()] == '[');
+  });
+}
+
 // "objects[3].color" → "objects[].color".
 std::string key_pattern(const std::string& key) {
   std::string pattern;
@@ -55,7 +73,7 @@ std::string key_pattern(const std::string& key) {
 }
 
 void flatten(const YAML::Node& node, const std::string& key, std::vector<MotionSetting>& out) {
-  if (!key.empty() && is_look_only_key(key_pattern(key))) {
+  if (!key.empty() && (is_look_only_key(key_pattern(key)) || is_geometry_key(key_pattern(key)))) {
     return;
   }
   switch (node.Type()) {

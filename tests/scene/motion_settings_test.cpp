@@ -107,6 +107,20 @@ TEST(MotionSettings, EditsThatMoveTheSceneDifferentlyChangeTheSettings) {
                "material:  # a soft fabric\n      density: 800\n      youngs_modulus: 2.0e6\n"
                "      radius:   0.003"));
   EXPECT_EQ(restyled.motion_settings, base.motion_settings);
+  // A placement's default written out places the mesh where it was: the same geometry, the same
+  // setting (a cache made before stays valid).
+  const SceneDescription defaults_written = test::scene_from_yaml(
+      replaced(kScene, "translation: [0, 0, 0.1]}", "translation: [0, 0, 0.1], scale: 1}"));
+  EXPECT_EQ(defaults_written.motion_settings, base.motion_settings);
+  const auto rope_file = [](const std::string& mesh) {
+    return test::scene_from_yaml("version: 1\nduration: 0.1\nobjects:\n  - mesh: " + mesh +
+                                 "\n    material: {density: 800, youngs_modulus: 2.0e6, radius: "
+                                 "0.003}\n");
+  };
+  EXPECT_EQ(rope_file("{file: rope.obj, up_axis: z}").motion_settings,
+            rope_file("{file: rope.obj}").motion_settings);
+  EXPECT_NE(rope_file("{file: rope.obj, rotation: [0, 0, 90]}").motion_settings,
+            rope_file("{file: rope.obj}").motion_settings);
 }
 
 TEST(MotionSettings, AnEditedMeshFileCountsThoughTheSceneTextIsTheSame) {
