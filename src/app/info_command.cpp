@@ -148,7 +148,8 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"settle_method", !model.settle.enabled                          ? "none"
                         : model.settle.method == SettleMethod::kNewton ? "newton"
                                                                        : "relax"},
-      {"steps", run.estimate.steps},
+      {"steps", steps_in_all(scene, model, timestep)},
+      {"estimated_steps", run.estimate.steps},
       {"threads", run.estimate.step.threads},
       {"threads_chosen", run.threads.threads},
       {"threads_reason", run.threads.reason},
@@ -271,7 +272,7 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
         model.settle.residual, model.settle.duration,
         std::llround(model.settle.duration / timestep.dt));
   }
-  fmt::print("steps in all     {}{}\n", run.estimate.steps,
+  fmt::print("steps in all     {}{}\n", steps_in_all(scene, model, timestep),
              model.settle.enabled ? " at most (settling stops once it has converged)" : "");
   const StepCost& cost = run.estimate.step;
   fmt::print("threads          {} ({}){}\n", run.threads.threads,

@@ -52,7 +52,10 @@ std::pair<double, Index> relative_residual(const Model& model, const State& stat
   return {largest, worst};
 }
 
-double automatic_settle_damping(const Model& model) {
+namespace {
+
+// The diagonal of the free nodes' box (0 when none is free).
+double free_size(const Model& model) {
   Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 high = -low;
   for (Index i = 0; i < model.node_count(); ++i) {
@@ -61,9 +64,28 @@ double automatic_settle_damping(const Model& model) {
       high = high.cwiseMax(model.node_initial_x[i]);
     }
   }
-  const double size = low.x() <= high.x() ? (high - low).norm() : 0.0;
-  const double g = model.gravity.norm() > 0.0 ? model.gravity.norm() : kStandardGravity;
-  return size > 0.0 ? 8.0 * std::sqrt(g / size) : 0.0;
+  return low.x() <= high.x() ? (high - low).norm() : 0.0;
+}
+
+double gravity_or_standard(const Model& model) {
+  return model.gravity.norm() > 0.0 ? model.gravity.norm() : kStandardGravity;
+}
+
+}  // namespace
+
+double automatic_settle_damping(const Model& model) {
+  const double size = free_size(model);
+  return size > 0.0 ? 8.0 * std::sqrt(gravity_or_standard(model) / size) : 0.0;
+}
+
+double expected_relaxation_seconds(const Model& model) {
+  const double size = free_size(model);
+  double damping = model.settle.damping.value_or(automatic_settle_damping(model));
+  if (damping <= 0.0) {  // no creep: kinetic damping alone, taken to be as long
+    damping = automatic_settle_damping(model);
+  }
+  const double time_constant = damping * size / gravity_or_standard(model);
+  return std::min(2.0 * 2.3 * time_constant, model.settle.duration);
 }
 
 std::int64_t relax_viscously(const Model& model, double dt, const ForceSwitches& switches,

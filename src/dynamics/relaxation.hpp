@@ -37,6 +37,13 @@ SettleOutcome relax_by_kinetic_damping(const Model& model, double dt, const Forc
 // the slowest swing of the whole structure (ω ≈ √(g / D)), so that it creeps down instead.
 double automatic_settle_damping(const Model& model);
 
+// How long relaxation may be expected to run, for a run's estimate (not a limit: that is
+// model.settle.duration, which caps this): the creep's time constant for the slowest swing,
+// τ = α D / g (α the creep's damping, 8 √(g / D) when automatic), 2.3 τ for the structure to take
+// 90 % of its weight, and kinetic damping about as long again. The paper's flag relaxes for
+// 12.5 s, where this gives 15 s.
+double expected_relaxation_seconds(const Model& model);
+
 // Viscous dynamic relaxation: at most `max_steps` steps of the model with `options` and global
 // damping `damping` (1/s) instead of its own, until the out-of-balance force is at most `handover`
 // of the weight (checked every 100 steps). Returns the steps taken; the residual is in `outcome`.

@@ -35,7 +35,7 @@ StepCost estimate_step_cost(const Model& model, int threads) {
 
   cost.threads = threads > 1 && worth_sharing(model) ? threads : 1;
   const double speedup = 1.0 + kThreadEfficiency * (cost.threads - 1);
-  cost.seconds = 1e-9 * cost.serial_ns / speedup;
+  cost.seconds = 1e-9 * ((cost.serial_ns - cost.unshared_ns) / speedup + cost.unshared_ns);
   return cost;
 }
 

@@ -21,9 +21,10 @@ struct StepCostPart {
 
 struct StepCost {
   std::vector<StepCostPart> parts;
-  double serial_ns = 0.0;  // Σ parts: one thread
-  int threads = 1;         // the threads it was scaled to (1 where the model is too small)
-  double seconds = 0.0;    // a step on `threads` threads, s
+  double serial_ns = 0.0;    // Σ parts: one thread
+  double unshared_ns = 0.0;  // of it, what more threads do not shorten
+  int threads = 1;           // the threads it was scaled to (1 where the model is too small)
+  double seconds = 0.0;      // a step on `threads` threads, s
 };
 
 // Where each force kind adds its share (force_kind.hpp): `items` it loops over, at `ns_each` on one
@@ -37,6 +38,11 @@ class StepCostSink {
       cost_.serial_ns += items * ns_each;
     }
   }
+  // The same for work that more threads do not shorten.
+  void add_unshared(const char* kind, double items, double ns_each) {
+    add(kind, items, ns_each);
+    cost_.unshared_ns += items * ns_each;
+  }
 
  private:
   StepCost& cost_;
@@ -45,7 +51,8 @@ class StepCostSink {
 // The cost of a step of `model` on `threads` threads. The spring, node and drag loops are split
 // between the threads where the model is large enough for that to pay (the step's own rule), at
 // the efficiency bench_threads measures on two idle cores; contact between objects is counted at
-// the cost of watching for it, which a scene whose objects press on many places exceeds.
+// the cost of watching for it, a surface with contact with itself (a cloth that folds) at what a
+// cloth lying on itself costs.
 StepCost estimate_step_cost(const Model& model, int threads);
 
 }  // namespace dinam

@@ -26,11 +26,15 @@ namespace {
 // - a solve 0.35, 0.47 and 0.61 ns a nonzero of the factor, forward and back each;
 // - a Newton iteration evaluates the forces once and the energy once or twice (the line
 //   search), each about a step of central differences' forces: 3 in all; each iteration of its
-//   linear solve, a solve with the factor and one force evaluation (the Hessian's product).
+//   linear solve, a solve with the factor and one force evaluation (the Hessian's product);
+// - a solve with a small factor costs more than its nonzeros: 6.2 and 8.7 µs for factors of 1 701
+//   and 2 373 nonzeros (the paper's rope and a steel cable, 2026-11-28), where 0.4 ns a nonzero
+//   each way predicts 1.4 and 1.9 µs: a call's own cost, about 5 µs, which a large factor hides.
 constexpr double kNsPerFlop = 0.3;
 constexpr double kAssemblyNsPerSpring = 3000.0;
 constexpr double kForceEvaluationsPerIteration = 3.0;
 constexpr double kNsPerFactorNonzero = 0.4;
+constexpr double kNsPerSolveCall = 5000.0;
 
 // How many times short a free structure's implicit estimate may be (estimate_margin).
 constexpr double kFreeStructureMargin = 10.0;
@@ -128,7 +132,7 @@ ImplicitStepCounts assumed_step_counts(ImplicitMotion motion) {
     case ImplicitMotion::kSwings:
       break;
   }
-  return {5.5, 55.0, 0.5};
+  return {6.0, 70.0, 0.8};
 }
 
 const char* motion_text(ImplicitMotion motion) {
@@ -253,8 +257,8 @@ ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forc
   cost.factorization_seconds =
       1e-9 * (kNsPerFlop * cost.factor.flops + kAssemblyNsPerSpring * springs);
   cost.iteration_seconds = 1e-9 * kForceEvaluationsPerIteration * forces.serial_ns;
-  cost.solve_iteration_seconds =
-      1e-9 * (forces.serial_ns + 2.0 * kNsPerFactorNonzero * cost.factor.nonzeros);
+  cost.solve_iteration_seconds = 1e-9 * (forces.serial_ns + kNsPerSolveCall +
+                                         2.0 * kNsPerFactorNonzero * cost.factor.nonzeros);
   cost.motion = expected_motion(model);
   cost.counts = assumed_step_counts(cost.motion);
   cost.seconds = cost.counts.iterations * cost.iteration_seconds +

@@ -45,8 +45,9 @@ enum class ImplicitMotion {
   // it tumbles, turning through large angles a step, where Newton's method takes more iterations
   // the faster it turns. Not measured; assumed as a fold, and not trusted either.
   kTumbles,
-  // Held by its pins: it swings. Measured: the paper's flag 5.0, 52 and 0.27; a steel cable 5.4,
-  // 56 and 0.85.
+  // Held by its pins: it swings. Measured (BDF2 where the scene asks for it): the paper's flag
+  // 5.0, 52 and 0.27; a steel cable 5.0, 51 and 0.84; the paper's rope swinging onto the ground
+  // 6.2, 71 and 0.79. Assumed: about the largest of each, as a swing onto the ground takes.
   kSwings,
 };
 

@@ -49,8 +49,10 @@ void implicit_estimate_steps(const SceneDescription& scene, const Model& model, 
         (steps + static_cast<double>(split_off));
     estimate.steps += split_off;
   }
-  estimate.step = {
-      {{"Newton iterations and factorisations", 1.0, 1e9 * seconds}}, 1e9 * seconds, 1, seconds};
+  estimate.step = {.parts = {{"Newton iterations and factorisations", 1.0, 1e9 * seconds}},
+                   .serial_ns = 1e9 * seconds,
+                   .threads = 1,
+                   .seconds = seconds};
 }
 
 // The implicit integrator's numerical damping at the scene's step, for modes resolved by these

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/relaxation.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
@@ -21,6 +22,12 @@ namespace {
 // The most steps settling may take: its duration's.
 long long settle_steps(const Model& model, const TimeStep& timestep) {
   return model.settle.enabled ? std::llround(model.settle.duration / timestep.dt) : 0;
+}
+
+// The steps settling may be expected to take: relaxation's (Newton's method settles a structure
+// that is stable on the way without a step, and one that buckles after relaxation).
+long long expected_settle_steps(const Model& model, const TimeStep& timestep) {
+  return model.settle.enabled ? std::llround(expected_relaxation_seconds(model) / timestep.dt) : 0;
 }
 
 }  // namespace
@@ -39,8 +46,9 @@ RunEstimate estimate_run(const SceneDescription& scene, const Model& model,
 RunEstimate estimate_run(const SceneDescription& scene, const Model& model, const StepperKind& kind,
                          const TimeStep& timestep, int threads) {
   RunEstimate estimate;
-  estimate.steps = steps_in_all(scene, model, timestep);
-  estimate.settle_steps = settle_steps(model, timestep);
+  estimate.settle_steps = expected_settle_steps(model, timestep);
+  estimate.steps =
+      steps_in_all(scene, model, timestep) - settle_steps(model, timestep) + estimate.settle_steps;
   kind.estimate_steps(scene, model, threads, estimate);
   estimate.seconds = estimate.step.seconds * static_cast<double>(estimate.steps);
   return estimate;
@@ -77,22 +85,31 @@ std::string duration_text(double seconds) {
 
 void refuse_if_too_long(const SceneDescription& scene, const Model& model, const TimeStep& timestep,
                         const RunEstimate& estimate, bool force) {
-  if (force || !estimate.long_run()) {
+  // The estimate counts the settling it expects; its duration is the most it may take, which is
+  // refused as well when that alone would pass the limit.
+  const long long settle_cap = settle_steps(model, timestep);
+  const double capped_seconds =
+      estimate.seconds +
+      static_cast<double>(settle_cap - estimate.settle_steps) * estimate.step.seconds;
+  if (force || (!estimate.long_run() && capped_seconds <= kLongRunSeconds)) {
     return;
   }
   const std::string cost = fmt::format(
-      "would take about {} ({:.3g} ms a step on {} thread{}, estimated from the model's springs "
+      "would take {} ({:.3g} ms a step on {} thread{}, estimated from the model's springs "
       "and nodes), more than {}",
-      duration_text(estimate.seconds), 1e3 * estimate.step.seconds, estimate.step.threads,
-      estimate.step.threads == 1 ? "" : "s", duration_text(kLongRunSeconds));
+      estimate.long_run() ? "about " + duration_text(estimate.seconds)
+                          : "up to " + duration_text(capped_seconds),
+      1e3 * estimate.step.seconds, estimate.step.threads, estimate.step.threads == 1 ? "" : "s",
+      duration_text(kLongRunSeconds));
   // Settling that may run longer than the motion itself: its duration is the key to change.
-  if (2 * estimate.settle_steps > estimate.steps) {
+  const long long steps_at_most = estimate.steps - estimate.settle_steps + settle_cap;
+  if (2 * settle_cap > steps_at_most) {
     throw_user_error(scene.settle.duration_loc,
                      "settling may take {} steps of {:.3g} s (its 'duration' of {:g} s is the "
                      "longest it runs before the structure rests) and the run {}; give "
                      "'settle.duration' a few times the structure's slowest period (a few "
                      "seconds for most scenes), or pass --force to run it anyway",
-                     estimate.settle_steps, timestep.dt, scene.settle.duration, cost);
+                     settle_cap, timestep.dt, scene.settle.duration, cost);
   }
   const StepLimits limits = find_step_limits(model);
   std::string cause;
@@ -115,13 +132,13 @@ void refuse_if_too_long(const SceneDescription& scene, const Model& model, const
   }
   // The step that would bring the run within the limit, as a `max_steps`.
   const auto max_steps = static_cast<long long>(
-      std::floor(static_cast<double>(estimate.steps) * kLongRunSeconds / estimate.seconds));
+      std::floor(static_cast<double>(steps_at_most) * kLongRunSeconds / capped_seconds));
   throw_user_error(key,
                    "this run of {:g} s needs {} steps of {:.3g} s{} and {}; aim the step with "
                    "'timestep: {{max_steps: {}}}' (mass scaling and collapsing the shortest bars), "
                    "collapse short bars with 'mesh: {{weld: 0.1}}', use a softer material, or "
                    "pass --force to run it anyway",
-                   scene.duration, estimate.steps, timestep.dt, cause, cost, max_steps);
+                   scene.duration, steps_at_most, timestep.dt, cause, cost, max_steps);
 }
 
 }  // namespace dinam

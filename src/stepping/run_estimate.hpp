@@ -20,8 +20,8 @@ struct StepperKind;
 inline constexpr double kLongRunSeconds = 3600.0;
 
 struct RunEstimate {
-  long long steps = 0;         // over the frames, and the most that settling may take
-  long long settle_steps = 0;  // of those, the settling's
+  long long steps = 0;         // over the frames, and those settling may be expected to take
+  long long settle_steps = 0;  // of those, the settling's (dynamics/relaxation.hpp)
   StepCost step;               // a step's estimated cost on the threads in use
   ImplicitStepCost implicit;   // what that step is made of, for the implicit integrator
   double seconds = 0.0;        // steps × step.seconds

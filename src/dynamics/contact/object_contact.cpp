@@ -5,6 +5,7 @@
 #include <limits>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "dynamics/contact/contact_candidates.hpp"
 #include "dynamics/contact/contact_geometry.hpp"
@@ -277,6 +278,41 @@ void add_object_contact_stiffness(const Model& model, const State& state, Stiffn
 // Nanoseconds per bar or node watched for contact, on one thread (bench_force_costs;
 // step_cost.hpp).
 constexpr double kNsPerWatched = 30.0;
+// And per bar or node of a surface in contact with itself: a cloth that folds lies on itself or on
+// what it lands on for most of a run, where its searches and candidates cost far more than
+// watching. bench_contact's two sheets lying on each other (130 000 bars and nodes, one thread):
+// 42.5 ms a step against 6.1 ms without contact (bench/notes/performance.md). The paper's
+// draped cloth, counted at watching's cost, ran eleven times its estimate. Its searches are not
+// shortened by a second thread at that size (8.7 s on one thread and on two).
+constexpr double kNsPerPressed = 280.0;
+
+namespace {
+
+// The bars and nodes of contact that belong to a surface in contact with itself (an object with
+// self-contact and triangles, not all of it pinned), and the others.
+std::pair<double, double> pressed_and_watched(const Model& model) {
+  const ObjectContact& contact = model.contact;
+  std::vector<std::uint8_t> folds(contact.object_self.size(), 0);
+  for (std::size_t t = 0; t < contact.triangle_face.size(); ++t) {
+    const Index* corners = &contact.triangles[3 * t];
+    const Index object = model.node_object[corners[0]];
+    if (contact.object_self[object] != 0 &&
+        !(model.pinned(corners[0]) && model.pinned(corners[1]) && model.pinned(corners[2]))) {
+      folds[object] = 1;
+    }
+  }
+  double pressed = 0.0;
+  for (const Index b : contact.bars) {
+    pressed += folds[model.node_object[model.bar_nodes[2 * b]]];
+  }
+  for (const Index p : contact.points) {
+    pressed += folds[model.node_object[p]];
+  }
+  const auto all = static_cast<double>(contact.bars.size() + contact.points.size());
+  return {pressed, all - pressed};
+}
+
+}  // namespace
 
 // Contact between objects and within one: found after the team's job (its pair search shares
 // its own loops), its penalty's energy booked where the pairs touch at the last force evaluation.
@@ -317,9 +353,9 @@ const ForceKind kObjectContact{
     .add_cost =
         [](const Model& model, StepCostSink& sink) {
           if (model.contact.enabled) {
-            sink.add("contact between objects",
-                     static_cast<double>(model.contact.bars.size() + model.contact.points.size()),
-                     kNsPerWatched);
+            const auto [pressed, watched] = pressed_and_watched(model);
+            sink.add("contact between objects", watched, kNsPerWatched);
+            sink.add_unshared("a surface's contact with itself", pressed, kNsPerPressed);
           }
         },
 };
