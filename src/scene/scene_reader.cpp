@@ -116,19 +116,20 @@ WindDesc read_wind(YamlMap map) {
   wind.enabled = true;
   wind.velocity = map.required_vec3("velocity");
   if (map.has("gust")) {
+    // The optional keys asked first, so that a number given for the map names them all.
     YamlMap gust(map.get("gust"), map.file(), "wind.gust");
-    wind.gust_amplitude = gust.required_number("amplitude");
     wind.gust_period = gust.number("period", wind.gust_period);
     require_positive(wind.gust_period, gust.loc("period"), "wind.gust.period", "s");
+    wind.gust_amplitude = gust.required_number("amplitude");
     gust.finish();
   }
   if (map.has("turbulence")) {
     YamlMap turbulence(map.get("turbulence"), map.file(), "wind.turbulence");
-    wind.turbulence = turbulence.required_number("amplitude");
     wind.turbulence_scale = turbulence.number("scale", wind.turbulence_scale);
     require_positive(wind.turbulence_scale, turbulence.loc("scale"), "wind.turbulence.scale", "m");
     const int seed = turbulence.integer("seed", 1);
     wind.seed = static_cast<std::uint32_t>(seed);
+    wind.turbulence = turbulence.required_number("amplitude");
     turbulence.finish();
   }
   wind.air_density = map.number("air_density", wind.air_density);
@@ -258,6 +259,12 @@ void read_timestep(YamlMap& map, SceneDescription& scene) {
 
 SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& source) {
   const std::string file = source.string();
+  if (!root.IsMap()) {
+    throw_user_error(loc_of(root, file),
+                     "a scene is a map of keys (version, duration, objects, …), not {}: see "
+                     "docs/scene-format.md",
+                     root.IsSequence() ? "a list" : "'" + root.Scalar() + "'");
+  }
   YamlMap map(root, file, "");
   SceneDescription scene;
   scene.source = source;
@@ -457,48 +464,8 @@ int SceneDescription::frame_count() const {
   return static_cast<int>(std::llround(duration * fps));
 }
 
-namespace {
-
-// The first tab in a line's indentation, as a file location (line and column, 1-based); none
-// where every line is indented with spaces.
-std::optional<std::pair<int, int>> first_indenting_tab(const std::string& text) {
-  int line = 1;
-  bool indenting = true;
-  int column = 1;
-  for (const char c : text) {
-    if (c == '\n') {
-      ++line;
-      column = 1;
-      indenting = true;
-      continue;
-    }
-    if (indenting && c == '\t') {
-      return std::pair{line, column};
-    }
-    indenting = indenting && c == ' ';
-    ++column;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
 SceneDescription read_scene_text(const std::string& text, const std::filesystem::path& source) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    // YAML indents with spaces only; a tab there reads as a broken structure ("end of map not
-    // found"), so the tab itself is named.
-    if (const auto tab = first_indenting_tab(text)) {
-      throw UserError(FileLoc{source.string(), tab->first, tab->second},
-                      "a tab indents this line, and YAML indents with spaces only: replace it "
-                      "with spaces (the YAML parser says: " +
-                          e.msg + ")");
-    }
-    throw UserError(FileLoc{source.string(), e.mark.line + 1, e.mark.column + 1},
-                    "this is not valid YAML: " + e.msg);
-  }
+  const YAML::Node root = parse_yaml(text, source);
   if (!root || root.IsNull()) {
     throw UserError(FileLoc{source.string()}, "the scene file is empty");
   }

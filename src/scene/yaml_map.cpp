@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <map>
 #include <optional>
 #include <regex>
@@ -10,6 +11,28 @@
 
 namespace dinam {
 namespace {
+
+// The first tab in a line's indentation, as a file location (line and column, 1-based); none
+// where every line is indented with spaces.
+std::optional<std::pair<int, int>> first_indenting_tab(const std::string& text) {
+  int line = 1;
+  bool indenting = true;
+  int column = 1;
+  for (const char c : text) {
+    if (c == '\n') {
+      ++line;
+      column = 1;
+      indenting = true;
+      continue;
+    }
+    if (indenting && c == '\t') {
+      return std::pair{line, column};
+    }
+    indenting = indenting && c == ' ';
+    ++column;
+  }
+  return std::nullopt;
+}
 
 std::string describe(const YAML::Node& node) {
   if (node.IsScalar()) {
@@ -201,11 +224,28 @@ void check_no_duplicate_keys(const YAML::Node& root, const std::string& file) {
 }
 
 YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
-    : node_(node), file_(std::move(file)), path_(std::move(path)) {
-  if (!node_.IsMap()) {
-    throw_user_error(loc_of(node_, file_), "'{}' must be a map of keys, got {}", name(),
-                     describe(node_));
+    : node_(node), file_(std::move(file)), path_(std::move(path)), not_a_map_(!node_.IsMap()) {}
+
+YamlMap::~YamlMap() noexcept(false) {
+  // A reader that stopped before finish() on a node that is no map: the error is still due,
+  // unless another error is already on its way.
+  if (not_a_map_ && !reported_ && std::uncaught_exceptions() == 0) {
+    throw_not_a_map();
   }
+}
+
+void YamlMap::throw_not_a_map(const std::string& wanted) const {
+  reported_ = true;
+  std::string keys;
+  for (const std::string& key : asked_in_order_) {
+    keys += (keys.empty() ? "" : ", ") + key;
+  }
+  std::string fix;
+  if (!wanted.empty() && node_.IsScalar()) {
+    fix = fmt::format(": write {{{}: {}}}", wanted, node_.Scalar());
+  }
+  throw_user_error(loc_of(node_, file_), "'{}' must be a map of keys{}, got {}{}", name(),
+                   keys.empty() ? "" : " (" + keys + ")", describe(node_), fix);
 }
 
 std::string YamlMap::path(const std::string& key) const {
@@ -213,12 +253,16 @@ std::string YamlMap::path(const std::string& key) const {
 }
 
 bool YamlMap::has(const std::string& key) {
-  asked_.insert(key);
-  return static_cast<bool>(node_[key]);
+  return static_cast<bool>(get(key));
 }
 
 YAML::Node YamlMap::get(const std::string& key) {
-  asked_.insert(key);
+  if (asked_.insert(key).second) {
+    asked_in_order_.push_back(key);
+  }
+  if (not_a_map_) {
+    return YAML::Node(YAML::NodeType::Undefined);  // indexing a scalar would make it a map
+  }
   return node_[key];
 }
 
@@ -226,6 +270,9 @@ YAML::Node YamlMap::required(const std::string& key) {
   const YAML::Node value = get(key);
   if (value) {
     return value;
+  }
+  if (not_a_map_) {
+    throw_not_a_map(key);
   }
   for (const auto& entry : node_) {
     const std::string present = entry.first.Scalar();
@@ -272,11 +319,17 @@ Vec3 YamlMap::required_vec3(const std::string& key) {
 }
 
 FileLoc YamlMap::loc(const std::string& key) const {
+  if (not_a_map_) {
+    return loc();
+  }
   const YAML::Node value = node_[key];
   return value ? loc_of(value, file_) : loc();
 }
 
 void YamlMap::finish() const {
+  if (not_a_map_) {
+    throw_not_a_map();
+  }
   for (const auto& entry : node_) {
     const std::string key = entry.first.Scalar();
     if (asked_.contains(key)) {
@@ -298,6 +351,25 @@ void YamlMap::finish() const {
     throw_user_error(loc_of(entry.first, file_), "unknown key '{}' in '{}'{}; known keys: {}", key,
                      name(), hint, known_list);
   }
+}
+
+YAML::Node parse_yaml(const std::string& text, const std::filesystem::path& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    // YAML indents with spaces only; a tab there reads as a broken structure ("end of map not
+    // found"), so the tab itself is named.
+    if (const auto tab = first_indenting_tab(text)) {
+      throw UserError(FileLoc{source.string(), tab->first, tab->second},
+                      "a tab indents this line, and YAML indents with spaces only: replace it "
+                      "with spaces (the YAML parser says: " +
+                          e.msg + ")");
+    }
+    throw UserError(FileLoc{source.string(), e.mark.line + 1, e.mark.column + 1},
+                    "this is not valid YAML: " + e.msg);
+  }
+  return root;
 }
 
 }  // namespace dinam

@@ -4,6 +4,7 @@
 // instead of silently falling back to a default (pbrt's ReportUnused).
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
@@ -14,6 +15,10 @@
 namespace dinam {
 
 FileLoc loc_of(const YAML::Node& node, const std::string& file);
+
+// The YAML document in `text`, read from `source`; throws UserError at the line and column of a
+// syntax error, naming a tab that indents a line where there is one.
+YAML::Node parse_yaml(const std::string& text, const std::filesystem::path& source);
 
 // Conversions that name the location and the key on failure. `what` is the key path, e.g.
 // "objects[0].material.density".
@@ -33,8 +38,13 @@ void check_no_duplicate_keys(const YAML::Node& root, const std::string& file);
 
 class YamlMap {
  public:
-  // Throws if `node` is not a map.
+  // A node that is not a map (`turbulence: 0.5`) reads as one without keys until the reader has
+  // asked for the keys it knows: then finish(), or required(), or at the latest the destructor,
+  // throws UserError naming them, so the message can say what the map holds.
   YamlMap(const YAML::Node& node, std::string file, std::string path);
+  YamlMap(const YamlMap&) = delete;
+  YamlMap& operator=(const YamlMap&) = delete;
+  ~YamlMap() noexcept(false);
 
   // Whether `key` is present; asking counts it among the keys the map accepts (finish()).
   bool has(const std::string& key);
@@ -65,10 +75,17 @@ class YamlMap {
   void finish() const;
 
  private:
+  // Throws the error of a node that is not a map, listing the keys asked for; `wanted`, a
+  // required key, is suggested as the one its value belongs to.
+  [[noreturn]] void throw_not_a_map(const std::string& wanted = "") const;
+
   YAML::Node node_;
   std::string file_;
   std::string path_;
   std::set<std::string> asked_;  // every key asked for, present or not
+  std::vector<std::string> asked_in_order_;
+  bool not_a_map_ = false;
+  mutable bool reported_ = false;  // its error was thrown
 };
 
 }  // namespace dinam
