@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/cpu_share.hpp"
-#include "io/image_compare.hpp"
 
 namespace dinam {
 
@@ -99,20 +99,28 @@ int run_info(const std::filesystem::path& scene, bool json = false,
              const ThreadChoice& threads = {}, bool energy = false);
 
 struct SnapshotOptions {
-  std::filesystem::path scene;
-  std::filesystem::path golden;       // folder of <name>_NNNN.png
+  std::vector<std::filesystem::path> scenes;
+  std::filesystem::path golden;       // folder of <name>_NNNN.png and tolerances.yaml
   std::optional<std::string> frames;  // "1,60,120" or ranges "1-3,9"; default first, middle, last
   std::string size = "320x180";
   std::optional<std::filesystem::path>
       output;           // actual/expected/diff images; default out/snapshot/<name>
-  bool update = false;  // write the goldens instead of failing on them
-  ImageTolerance tolerance;
+  bool update = false;  // write the goldens (and the tolerance file) instead of failing on them
+  // Limits given on the command line, over anything the tolerance file says.
+  std::optional<int> threshold;
+  std::optional<int> shift;
+  std::optional<double> max_differing;
+  std::optional<double> max_mean_error;
+  std::optional<double> min_ssim;
+  std::optional<std::filesystem::path> junit;   // a JUnit XML report of every frame
+  std::optional<std::filesystem::path> report;  // one HTML page of every frame
   bool quiet = false;
 };
 
-// Renders the chosen frames and compares each with its golden under the tolerance. Returns
-// kExitOk when all match (or were written with update), kExitFailure otherwise, having written
-// actual, expected and difference images and printed their paths.
+// Renders the chosen frames of each scene and compares each with its golden under its tolerance
+// (the golden folder's tolerances.yaml, snapshot/tolerance_file.hpp). Returns kExitOk when all
+// match (or were written with update), kExitFailure otherwise, having written actual, expected
+// and difference images of each that differs and printed their paths.
 int run_snapshot(const SnapshotOptions& options);
 
 }  // namespace dinam

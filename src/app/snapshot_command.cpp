@@ -1,10 +1,12 @@
-// dinam snapshot: chosen frames of a scene drawn and compared with golden images under a
-// tolerance (goldens depend on the exact Mesa/LLVM build, so never byte for byte).
+// dinam snapshot: chosen frames of scenes drawn and compared with golden images under the
+// tolerance kept beside them (snapshot/tolerance_file.hpp; goldens depend on the exact Mesa/LLVM
+// build, so never byte for byte), with a JUnit XML and an HTML report for CI.
 #include <fmt/format.h>
 
-#include <memory>
-
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <memory>
 #include <set>
 #include <string>
 #include <system_error>
@@ -23,6 +25,9 @@
 #include "run/frame_range.hpp"
 #include "run/frame_source.hpp"
 #include "scene/scene_description.hpp"
+#include "snapshot/region_weights.hpp"
+#include "snapshot/snapshot_report.hpp"
+#include "snapshot/tolerance_file.hpp"
 #include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_cameras.hpp"
@@ -51,10 +56,22 @@ std::vector<int> parse_frame_list(const std::string& text, int frame_count) {
   return {frames.begin(), frames.end()};
 }
 
-}  // namespace
+// The command line's limits over the frame's.
+ImageTolerance with_command_line(ImageTolerance limits, const SnapshotOptions& options) {
+  limits.threshold = options.threshold.value_or(limits.threshold);
+  limits.shift = options.shift.value_or(limits.shift);
+  limits.max_differing_fraction = options.max_differing.value_or(limits.max_differing_fraction);
+  limits.max_mean_error = options.max_mean_error.value_or(limits.max_mean_error);
+  limits.min_ssim = options.min_ssim.value_or(limits.min_ssim);
+  return limits;
+}
 
-int run_snapshot(const SnapshotOptions& options) {
-  SceneDescription scene = read_scene(options.scene);
+// Draws the chosen frames of one scene and compares (or, with --update, writes) each. Returns the
+// scene's name.
+std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tolerances,
+                        const std::filesystem::path& scene_path,
+                        std::vector<FrameResult>& results) {
+  SceneDescription scene = read_scene(scene_path);
   parse_image_size(options.size, scene.image_width, scene.image_height);
   const int count = scene.frame_count();
   const std::vector<int> chosen = options.frames ? parse_frame_list(*options.frames, count)
@@ -65,9 +82,6 @@ int run_snapshot(const SnapshotOptions& options) {
   const std::filesystem::path output =
       options.output.value_or(std::filesystem::path("out/snapshot") / scene.name);
   check_output_place(output, OutputPlace::kInside, options.output ? "-o" : "the output folder");
-  if (options.update) {
-    check_output_place(options.golden, OutputPlace::kInside, "--golden");
-  }
 
   // The whole motion frames the camera, so a frame looks as it does in the movie.
   const SimulatedFrames frames =
@@ -76,68 +90,136 @@ int run_snapshot(const SnapshotOptions& options) {
   const FrameCameras cameras = frame_cameras(scene, model, frames);
   OsmesaRenderer renderer(render_settings(scene));
 
-  int failures = 0;
-  Image image;
   for (const int frame : chosen) {
+    const auto start = std::chrono::steady_clock::now();
+    FrameResult result;
+    result.scene = scene.name;
+    result.frame = frame;
+    result.name = fmt::format("{}_{:04}", scene.name, frame);
     draw_frames(renderer, draw_list, frames, cameras, frame, frame,
-                [&](int, const Image& drawn) { image = drawn; });
-    const std::string name = fmt::format("{}_{:04}", scene.name, frame);
-    const std::filesystem::path golden = options.golden / (name + ".png");
+                [&](int, const Image& drawn) { result.actual = drawn; });
+    const std::filesystem::path golden = options.golden / (result.name + ".png");
     std::error_code ec;
     const bool have_golden = std::filesystem::is_regular_file(golden, ec);
     if (options.update) {
       create_folder(options.golden);
-      write_png(golden, image, PngOptions{9, true});  // goldens are kept: make them small
-      if (!options.quiet) {
-        fmt::print("snapshot {}: {} {}\n", name, have_golden ? "updated" : "created",
-                   golden.string());
+      write_png(golden, result.actual, PngOptions{9, true});  // goldens are kept: make them small
+      result.outcome = FrameOutcome::kUpdated;
+      result.detail = fmt::format("{} {}", have_golden ? "updated" : "created", golden.string());
+    } else if (!have_golden) {
+      result.outcome = FrameOutcome::kNoGolden;
+      result.detail =
+          fmt::format("no golden image {}; run with --update to create it", golden.string());
+    } else {
+      result.expected = read_png(golden);
+      const FrameTolerance tolerance = tolerances.for_frame(ImageTolerance{}, scene.name, frame);
+      result.limits = with_command_line(tolerance.limits, options);
+      result.has_regions = !tolerance.regions.empty();
+      const std::vector<float> weights =
+          region_weights(tolerance.regions, result.actual.width, result.actual.height,
+                         cameras.frames[static_cast<std::size_t>(frame - 1)]);
+      result.comparison = compare_images(result.actual, result.expected, result.limits, weights);
+      result.outcome = result.comparison.matches(result.limits) ? FrameOutcome::kMatched
+                                                                : FrameOutcome::kDiffers;
+      if (result.outcome == FrameOutcome::kDiffers) {
+        result.detail = result.comparison.failures(result.limits);
       }
-      continue;
     }
-    if (!have_golden) {
-      fmt::print(stderr, "snapshot {}: no golden image {}; run with --update to create it\n", name,
-                 golden.string());
-      ++failures;
-      continue;
-    }
-    const Image expected = read_png(golden);
-    const ImageComparison comparison = compare_images(image, expected, options.tolerance.threshold);
-    if (comparison.matches(options.tolerance)) {
-      if (!options.quiet) {
-        fmt::print("snapshot {}: ok ({:.3f} % of pixels differ, mean error {:.3f})\n", name,
-                   100.0 * comparison.differing_fraction, comparison.mean_error);
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    switch (result.outcome) {
+      case FrameOutcome::kUpdated:
+        if (!options.quiet) {
+          fmt::print("snapshot {}: {}\n", result.name, result.detail);
+        }
+        break;
+      case FrameOutcome::kNoGolden:
+        fmt::print(stderr, "snapshot {}: {}\n", result.name, result.detail);
+        break;
+      case FrameOutcome::kMatched:
+        if (!options.quiet) {
+          fmt::print(
+              "snapshot {}: ok ({:.3f} % of pixels differ, mean error {:.3f}, SSIM {:.4f})\n",
+              result.name, 100.0 * result.comparison.differing_fraction,
+              result.comparison.mean_error, result.comparison.ssim);
+        }
+        break;
+      case FrameOutcome::kDiffers: {
+        create_folder(output);
+        const std::filesystem::path actual_path = output / (result.name + "_actual.png");
+        const std::filesystem::path expected_path = output / (result.name + "_expected.png");
+        const std::filesystem::path diff_path = output / (result.name + "_diff.png");
+        write_png(actual_path, result.actual);
+        write_png(expected_path, result.expected);
+        write_png(diff_path, result.comparison.difference);
+        fmt::print(stderr,
+                   "snapshot {}: DIFFERS{}: {}\n  ({:.3f} % of pixels differ, mean error {:.3f}, "
+                   "SSIM {:.4f})\n  actual:     {}\n  expected:   {}\n  difference: {}\n",
+                   result.name, result.comparison.same_size ? "" : " (size)", result.detail,
+                   100.0 * result.comparison.differing_fraction, result.comparison.mean_error,
+                   result.comparison.ssim, actual_path.string(), expected_path.string(),
+                   diff_path.string());
+        break;
       }
-      continue;
     }
-    ++failures;
-    create_folder(output);
-    const std::filesystem::path actual_path = output / (name + "_actual.png");
-    const std::filesystem::path expected_path = output / (name + "_expected.png");
-    const std::filesystem::path diff_path = output / (name + "_diff.png");
-    write_png(actual_path, image);
-    write_png(expected_path, expected);
-    write_png(diff_path, comparison.difference);
-    fmt::print(stderr,
-               "snapshot {}: DIFFERS{}: {:.3f} % of pixels differ by more than {} (allowed {:.3f} "
-               "%), mean error {:.3f} (allowed {:.3f})\n  actual:     {}\n  expected:   {}\n  "
-               "difference: {}\n",
-               name, comparison.same_size ? "" : " (size)", 100.0 * comparison.differing_fraction,
-               options.tolerance.threshold, 100.0 * options.tolerance.max_differing_fraction,
-               comparison.mean_error, options.tolerance.max_mean_error, actual_path.string(),
-               expected_path.string(), diff_path.string());
+    results.push_back(std::move(result));
   }
-  return failures == 0 ? kExitOk : kExitFailure;
+  return scene.name;
+}
+
+}  // namespace
+
+int run_snapshot(const SnapshotOptions& options) {
+  for (const auto& report : {options.junit, options.report}) {
+    if (report) {
+      check_output_name(*report);
+      check_output_place(*report, OutputPlace::kBeside, "the report");
+    }
+  }
+  if (options.update) {
+    check_output_place(options.golden, OutputPlace::kInside, "--golden");
+  }
+  const ToleranceFile tolerances = read_tolerance_file(options.golden);
+  std::vector<FrameResult> results;
+  std::vector<std::string> names;
+  for (const std::filesystem::path& scene : options.scenes) {
+    names.push_back(check_scene(options, tolerances, scene, results));
+  }
+  if (options.update) {
+    const std::string recorded =
+        record_scenes(options.golden, names, with_command_line(ImageTolerance{}, options));
+    if (!recorded.empty() && !options.quiet) {
+      fmt::print("snapshot: {}\n", recorded);
+    }
+  }
+  if (options.junit) {
+    write_junit_report(*options.junit, results);
+  }
+  if (options.report) {
+    write_html_report(*options.report, results);
+    if (!options.quiet) {
+      fmt::print("snapshot: the report is {}\n", options.report->string());
+    }
+  }
+  const bool any_failed =
+      std::any_of(results.begin(), results.end(), [](const FrameResult& r) { return failed(r); });
+  return any_failed ? kExitFailure : kExitOk;
 }
 
 Command add_snapshot_command(CLI::App& app, std::optional<int>& threads) {
   auto options = std::make_shared<SnapshotOptions>();
   CLI::App* snapshot_command = app.add_subcommand(
       "snapshot",
-      "Render chosen frames small and compare each with a golden PNG under a tolerance; exit 1 "
-      "on any difference, writing actual, expected and difference images");
-  snapshot_command->add_option("scene", options->scene, "Scene file (YAML)")->required();
+      "Render chosen frames of scenes small and compare each with a golden PNG under the "
+      "tolerance in the golden folder's tolerances.yaml (pixels that differ allowing an edge to "
+      "move, mean error, SSIM; regions to ignore or weigh, per scene and frame); exit 1 on any "
+      "difference, writing actual, expected and difference images, and JUnit XML and HTML "
+      "reports when asked");
+  snapshot_command->add_option("scenes", options->scenes, "Scene files (YAML)")->required();
   snapshot_command
-      ->add_option("--golden", options->golden, "Folder of golden images <name>_NNNN.png")
+      ->add_option("--golden", options->golden,
+                   "Folder of golden images <name>_NNNN.png and their tolerances.yaml")
       ->required();
   snapshot_command->add_option("--frames", options->frames,
                                "Frames to check, e.g. 1,60,120 or 1-3,9 (default: first, middle "
@@ -147,22 +229,45 @@ Command add_snapshot_command(CLI::App& app, std::optional<int>& threads) {
                       "Where differing frames' actual/expected/diff images go (default "
                       "out/snapshot/<name>)");
   snapshot_command->add_flag("--update", options->update,
-                             "Write the rendered frames as the new goldens instead of comparing");
+                             "Write the rendered frames as the new goldens instead of comparing, "
+                             "and the folder's tolerances.yaml where it has none (or lacks the "
+                             "scene)");
+  add_optional_option(*snapshot_command, "--junit", options->junit,
+                      "Write a JUnit XML report of every frame to this file");
+  add_optional_option(*snapshot_command, "--report", options->report,
+                      "Write one self-contained HTML page of every frame (expected, actual, "
+                      "difference, the measures) to this file");
+  const ImageTolerance defaults;
   snapshot_command
-      ->add_option("--threshold", options->tolerance.threshold,
-                   "A pixel differs when a channel differs by more than this (0-255)")
-      ->default_val(options->tolerance.threshold)
+      ->add_option("--threshold", options->threshold,
+                   fmt::format("A pixel differs when a channel lies further than this (0-255) "
+                               "from the other picture's values around it (default {}, or the "
+                               "tolerance file's)",
+                               defaults.threshold))
       ->check(CLI::Range(0, 255));
   snapshot_command
-      ->add_option("--max-differing", options->tolerance.max_differing_fraction,
-                   "Largest fraction of differing pixels that still matches")
-      ->default_val(options->tolerance.max_differing_fraction)
+      ->add_option("--shift", options->shift,
+                   fmt::format("How far, in pixels, an edge may move and still match (default {})",
+                               defaults.shift))
+      ->check(CLI::Range(0, 8));
+  snapshot_command
+      ->add_option("--max-differing", options->max_differing,
+                   fmt::format("Largest fraction of differing pixels that still matches (default "
+                               "{:g})",
+                               defaults.max_differing_fraction))
       ->check(CLI::Range(0.0, 1.0));
   snapshot_command
-      ->add_option("--max-mean-error", options->tolerance.max_mean_error,
-                   "Largest mean channel error (0-255) that still matches")
-      ->default_val(options->tolerance.max_mean_error)
+      ->add_option("--max-mean-error", options->max_mean_error,
+                   fmt::format("Largest mean channel error (0-255) that still matches (default "
+                               "{:g})",
+                               defaults.max_mean_error))
       ->check(CLI::Range(0.0, 255.0));
+  snapshot_command
+      ->add_option("--min-ssim", options->min_ssim,
+                   fmt::format("Smallest structural similarity (SSIM, -1 to 1) that still "
+                               "matches (default {:g})",
+                               defaults.min_ssim))
+      ->check(CLI::Range(-1.0, 1.0));
   snapshot_command->add_flag("-q,--quiet", options->quiet, "Print only differences and errors");
   add_threads_option(*snapshot_command, threads);
 

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <system_error>
@@ -81,6 +82,26 @@ void write_png(const std::filesystem::path& path, const Image& image, const PngO
                                  error.empty() ? "disk full or not writable" : error));
   }
   file.commit();
+}
+
+std::string png_bytes(const Image& image, const PngOptions& options) {
+  DINAM_CHECK(image.width > 0 && image.height > 0 &&
+              image.rgba.size() == static_cast<std::size_t>(image.width) * image.height * 4);
+  char* buffer = nullptr;
+  std::size_t size = 0;
+  std::FILE* stream = open_memstream(&buffer, &size);
+  if (stream == nullptr) {
+    throw RuntimeError("cannot encode a PNG in memory: out of memory");
+  }
+  std::string error;
+  const bool written = write_rows(stream, image, options, error);
+  std::fclose(stream);  // sets buffer and size
+  std::string bytes = written ? std::string(buffer, size) : std::string();
+  std::free(buffer);
+  if (!written) {
+    throw RuntimeError(fmt::format("cannot encode a PNG in memory: {}", error));
+  }
+  return bytes;
 }
 
 namespace {

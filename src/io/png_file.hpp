@@ -2,6 +2,7 @@
 // PNG frames through libpng. Writing goes to "<name>.tmp" and is renamed when complete, so no
 // half-written file ever carries the final name.
 #include <filesystem>
+#include <string>
 
 #include "core/image.hpp"
 
@@ -17,6 +18,9 @@ struct PngOptions {
 // Throws RuntimeError naming the path on failure; the temporary file is removed.
 void write_png(const std::filesystem::path& path, const Image& image,
                const PngOptions& options = {});
+
+// The PNG file's bytes, in memory (a report embeds them). Throws RuntimeError on failure.
+std::string png_bytes(const Image& image, const PngOptions& options = {});
 
 // Reads any 8-bit PNG as RGBA. Throws RuntimeError naming the path on failure.
 Image read_png(const std::filesystem::path& path);

@@ -85,8 +85,7 @@ TEST(View, ThePagePlaysTheCacheInABrowserAsItsGolden) {
     std::filesystem::copy_file(shot, golden, std::filesystem::copy_options::overwrite_existing);
   }
   const ImageTolerance tolerance;
-  const ImageComparison comparison =
-      compare_images(read_png(shot), read_png(golden), tolerance.threshold);
+  const ImageComparison comparison = compare_images(read_png(shot), read_png(golden), tolerance);
   EXPECT_TRUE(comparison.matches(tolerance))
       << comparison.differing_fraction * 100 << " % of pixels differ, mean error "
       << comparison.mean_error << "; the screenshot: " << shot;
