@@ -347,8 +347,9 @@ Command add_info_command(CLI::App& app, std::optional<int>& threads) {
   auto parsed = std::make_shared<Parsed>();
   CLI::App* info_command =
       app.add_subcommand("info",
-                         "Print the model summary of a scene: nodes, bars, springs, "
-                         "mass, time step");
+                         "Print what a scene holds and what a run of it will take, without "
+                         "running it: nodes, bars, springs, mass, the time step and what sets "
+                         "it, the run's time and memory, and the integrator recommended");
   info_command->add_option("scene", parsed->scene, "Scene file (YAML)")->required();
   info_command->add_flag("--json", parsed->json, "Print one JSON object, for scripts");
   info_command->add_flag("--energy", parsed->energy,

@@ -38,8 +38,12 @@ void explain_dash_led_files(int argc, char** argv) {
 int run(int argc, char** argv) {
   using namespace dinam;
   CLI::App app{
-      "dinam: physically simulated animation of flexible structures (rigid bar spring "
-      "model; central differences, or implicit steps as long as a frame; off-screen OpenGL)"};
+      "dinam: movies of flexible structures that move as real ones do (cloth, ropes, cables, "
+      "wire) from a scene file: a rigid bar spring model of real materials, stepped by central "
+      "differences or implicit steps as long as a frame, with wind, contact, friction, plasticity "
+      "and tearing; frames drawn off-screen with OpenGL, the movie by ffmpeg, the motion as "
+      "caches for Blender, Houdini and USD. First: 'dinam render scenes/flag.yaml'; every key of "
+      "a scene is in docs/scene-format.md, the commands in docs/commands.md"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("dinam ") + kVersion);
   // The commands that simulate take the thread count; without it, DINAM_THREADS, else the CPUs
