@@ -5,13 +5,13 @@
 
 #include <algorithm>
 
-#include "run/frame_source.hpp"
 #include "bench_scenes.hpp"
 #include "dynamics/stability.hpp"
 #include "io/png_file.hpp"
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "rest_frame.hpp"
+#include "run/frame_source.hpp"
 #include "scene/scene_description.hpp"
 #include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
@@ -109,12 +109,19 @@ BENCHMARK(draw_wire_lattice)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// Every shipped scene at its default quality, one second in, at 720p and 1080p.
+// Every shipped scene at its default quality, one second in, at 720p and 1080p; with `coarse`,
+// its surfaces drawn as simulated (`subdivide: 0`), which is how they were drawn before
+// subdivision: the two in one run are the before and after of its cost.
 void draw_shipped_scene(benchmark::State& bench, const std::filesystem::path& path, int width,
-                        int height) {
+                        int height, bool coarse) {
   SceneDescription scene = read_scene(path);
   scene.image_width = width;
   scene.image_height = height;
+  if (coarse) {
+    for (ObjectDesc& object : scene.objects) {
+      object.subdivide = 0;
+    }
+  }
   const Model model = build_model(scene);
   const TimeStep timestep = choose_timestep(model, scene.timestep, scene.fps, scene.timestep_loc);
   const SimulatedFrames frames = simulate_frames(model, timestep, scene.frame_count(), false);
@@ -140,13 +147,16 @@ void register_shipped_scenes() {
   std::sort(scenes.begin(), scenes.end());
   for (const auto& path : scenes) {
     for (const auto& [width, height] : {std::pair{1280, 720}, std::pair{1920, 1080}}) {
-      benchmark::RegisterBenchmark(
-          fmt::format("scene/{}/{}x{}", path.stem().string(), width, height).c_str(),
-          [path, width, height](benchmark::State& bench) {
-            draw_shipped_scene(bench, path, width, height);
-          })
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
+      for (const bool coarse : {true, false}) {
+        benchmark::RegisterBenchmark(fmt::format("scene/{}/{}x{}/{}", path.stem().string(), width,
+                                                 height, coarse ? "as_simulated" : "smooth")
+                                         .c_str(),
+                                     [path, width, height, coarse](benchmark::State& bench) {
+                                       draw_shipped_scene(bench, path, width, height, coarse);
+                                     })
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+      }
     }
   }
 }

@@ -17,6 +17,17 @@ struct RenderCamera {
   float fov_degrees = 40.0f;  // vertical
 };
 
+// Points made from the frame's points, each frame: point k of these is Σ weights[j] × x[sources[j]]
+// over j in [offsets[k], offsets[k + 1]) (a coarse mesh's subdivided surface,
+// visual/surface_subdivision.hpp).
+struct DerivedPoints {
+  std::vector<Index> offsets{0};  // (n_points + 1)
+  std::vector<Index> sources;
+  std::vector<float> weights;
+
+  Index size() const { return static_cast<Index>(offsets.size()) - 1; }
+};
+
 // Triangles drawn as one lit, two-sided surface, with one texture or the points' colours.
 struct SurfaceBatch {
   std::vector<Index> triangles;  // (n_triangles × 3) point ids
@@ -24,6 +35,9 @@ struct SurfaceBatch {
 };
 
 struct DrawList {
+  // The points a frame gives (its positions, n_given) are followed by these, made from them; the
+  // per-point arrays below cover both (n_points = n_given + derived.size()).
+  DerivedPoints derived;
   std::vector<Index> segment_points;  // (n_segments × 2) ids into the per-frame positions
   // (n_segments) m; a segment is a capsule, its round ends joining it to the segments that meet
   // it; a negative radius gives it flat ends instead.

@@ -188,7 +188,22 @@ void OsmesaRenderer::upload_static(const DrawList& list) {
   }
 }
 
-void OsmesaRenderer::upload_frame(const DrawList& list, const std::vector<Vec3f>& positions) {
+void OsmesaRenderer::upload_frame(const DrawList& list, const std::vector<Vec3f>& given) {
+  // The frame's points, then those made from them (a subdivided surface's).
+  const std::vector<Vec3f>* all = &given;
+  if (list.derived.size() > 0) {
+    expanded_positions_.assign(given.begin(), given.end());
+    const DerivedPoints& derived = list.derived;
+    for (Index k = 0; k < derived.size(); ++k) {
+      Vec3f sum = Vec3f::Zero();
+      for (Index j = derived.offsets[k]; j < derived.offsets[k + 1]; ++j) {
+        sum += derived.weights[j] * given[derived.sources[j]];
+      }
+      expanded_positions_.push_back(sum);
+    }
+    all = &expanded_positions_;
+  }
+  const std::vector<Vec3f>& positions = *all;
   const std::size_t n_segments = list.segment_radius.size();
   bar_instances_.resize(n_segments * kBarFloats);
   for (std::size_t s = 0; s < n_segments; ++s) {

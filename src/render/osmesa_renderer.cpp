@@ -493,7 +493,8 @@ void OsmesaRenderer::render(const DrawList& list, std::span<const FrameSample> s
   DINAM_CHECK(!samples.empty());
   for (const FrameSample& sample : samples) {
     DINAM_CHECK(sample.positions != nullptr &&
-                sample.positions->size() == list.point_radius.size());
+                sample.positions->size() + static_cast<std::size_t>(list.derived.size()) ==
+                    list.point_radius.size());
   }
   upload_static(list);
   // Instants that show the same picture (a frame at rest) are drawn once: a still frame looks

@@ -98,10 +98,11 @@ class OsmesaRenderer final : public Renderer {
   std::vector<int> batch_index_counts_;  // (n_batches)
   std::vector<unsigned> texture_ids_;    // (n_textures)
 
-  std::vector<float> bar_instances_;     // (n_segments × 13) p0, p1, radius, colour, finish
-  std::vector<float> node_instances_;    // (n_joints × 10) centre, radius, colour, finish
-  std::vector<float> surface_vertices_;  // (n_points × 6) position, normal
-  std::vector<Vec3f> point_normals_;     // (n_points)
+  std::vector<float> bar_instances_;       // (n_segments × 13) p0, p1, radius, colour, finish
+  std::vector<float> node_instances_;      // (n_joints × 10) centre, radius, colour, finish
+  std::vector<float> surface_vertices_;    // (n_points × 6) position, normal
+  std::vector<Vec3f> point_normals_;       // (n_points)
+  std::vector<Vec3f> expanded_positions_;  // the frame's points and the derived ones
 };
 
 }  // namespace dinam

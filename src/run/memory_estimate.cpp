@@ -166,7 +166,7 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
     per_pixel += blur ? kSumBytesPerPixel : 0;
     per_pixel += occlusion ? samples * kLinearBytesPerPixelSample : 0;
     estimate.drawing = kRendererBytes + pixels * per_pixel +
-                       shadow * shadow * kBytesPerShadowTexel + draw_list_bytes(model);
+                       shadow * shadow * kBytesPerShadowTexel + draw_list_bytes(scene, model);
     if (blur) {  // the instants' shadow map, of half the resolution
       estimate.drawing += shadow * shadow / 4 * kBytesPerShadowTexel;
     }

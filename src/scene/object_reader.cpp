@@ -269,6 +269,21 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
                      map.path("style"), object.name);
   }
   object.joints = map.boolean("joints", object.joints);
+  if (map.has("subdivide")) {
+    const int levels = map.integer("subdivide", 0);
+    if (levels < 0 || levels > 3) {
+      throw_user_error(map.loc("subdivide"),
+                       "'{}' must be 0 (drawn as simulated) to 3 levels of smoothing; got {}",
+                       map.path("subdivide"), levels);
+    }
+    if (object.style == DrawStyle::kWire && levels > 0) {
+      throw_user_error(map.loc("subdivide"),
+                       "'{}': object '{}' is drawn as wires, which have no surface to smooth; "
+                       "give it 'style: surface' or 'both', or leave 'subdivide' out",
+                       map.path("subdivide"), object.name);
+    }
+    object.subdivide = levels;
+  }
   if (!map.has("texture") && !object.mesh.texture.empty()) {
     object.texture = object.mesh.texture;  // the mesh file's own material
     object.texture_loc = object.mesh_loc;

@@ -184,6 +184,7 @@ struct ObjectDesc {
   std::optional<double> render_radius;  // m; default: the wire radius, at least a visible minimum
   DrawStyle style = DrawStyle::kWire;   // default: surface when the mesh has faces
   bool joints = true;                   // spheres at the nodes of wires, so bars meet smoothly
+  std::optional<int> subdivide;         // levels its surface is smoothed by; default: by its size
   std::filesystem::path texture;        // a PNG laid on the surface by the mesh uv; optional
   FileLoc texture_loc;                  // the 'texture' key, or the mesh's for its own texture
   Finish finish;                        // how its surface takes the light (core/look.hpp)

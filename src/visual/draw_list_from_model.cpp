@@ -10,6 +10,7 @@
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/surface_subdivision.hpp"
 
 namespace dinam {
 namespace {
@@ -30,7 +31,44 @@ double drawn_extent(const Bounds& motion) {
   return std::max(static_cast<double>(2.0f * motion.radius()), 1e-3);
 }
 
+// Each drawn object's surface triangles (its faces fanned), by object; none for a wire object.
+std::vector<Index> surface_triangle_counts(const SceneDescription& scene, const Model& model) {
+  std::vector<Index> counts(model.objects.size(), 0);
+  for (Index f = 0; f < model.face_count(); ++f) {
+    const Index object = model.node_object[model.face_nodes[model.face_offsets[f]]];
+    if (scene.objects[static_cast<std::size_t>(object)].style != DrawStyle::kWire) {
+      counts[static_cast<std::size_t>(object)] +=
+          model.face_offsets[f + 1] - model.face_offsets[f] - 2;
+    }
+  }
+  return counts;
+}
+
+// The triangles a surface may be refined to by default. Software OpenGL draws a refined triangle
+// for about 5 µs at 720p (bench_render's shipped scenes, as simulated against smooth), so the
+// default stays within 1.3× of drawing the mesh as simulated: the paper's flag (450 triangles) at
+// level 1, 65.8 → 69.6 ms a frame (at level 2, 96 ms); a finer mesh, which shows no facets, as is.
+constexpr Index kMostAutomaticTriangles = 2000;
+
+// The points a subdivided surface's point holds weights of, about, at level 2 (for the memory
+// estimate): its 1-ring's ring.
+constexpr std::uint64_t kWeightsPerDerivedPoint = 30;
+
 }  // namespace
+
+int subdivision_level(const ObjectDesc& object, Index triangles, bool can_tear) {
+  if (object.style == DrawStyle::kWire || triangles == 0 || can_tear) {
+    return 0;
+  }
+  if (object.subdivide) {
+    return *object.subdivide;
+  }
+  int level = 0;
+  while (level < 2 && triangles * (Index{4} << (2 * level)) <= kMostAutomaticTriangles) {
+    ++level;
+  }
+  return level;
+}
 
 RenderSettings render_settings(const SceneDescription& scene) {
   return {scene.image_width, scene.image_height, scene.quality.samples,
@@ -152,6 +190,49 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
     }
   }
 
+  // Surfaces drawn smooth: each object's triangles subdivided to its level, over points made from
+  // its nodes; the nodes' own positions, the bars' capsules and the motion are left as they are.
+  const std::vector<Index> triangle_counts = surface_triangle_counts(scene, model);
+  for (std::size_t o = 0; o < model.objects.size(); ++o) {
+    const int level =
+        batch_of_object[o] < 0
+            ? 0
+            : subdivision_level(scene.objects[o], triangle_counts[o], model.can_tear());
+    if (level == 0) {
+      continue;
+    }
+    SurfaceBatch& batch = list.surfaces[static_cast<std::size_t>(batch_of_object[o])];
+    const SubdividedSurface smooth = subdivide_loop(batch.triangles, level, model.node_initial_x);
+    const Index first = model.node_count() + list.derived.size();
+    batch.triangles = smooth.triangles;
+    for (Index& id : batch.triangles) {
+      id += first;
+    }
+    DerivedPoints& derived = list.derived;
+    const bool uv = !list.point_uv.empty();
+    for (Index k = 0; k < smooth.points.size(); ++k) {
+      Vec3f color = Vec3f::Zero();
+      Eigen::Vector2f texture_point = Eigen::Vector2f::Zero();
+      for (Index j = smooth.points.offsets[k]; j < smooth.points.offsets[k + 1]; ++j) {
+        const Index source = smooth.points.sources[j];
+        const float weight = smooth.points.weights[j];
+        derived.sources.push_back(source);
+        derived.weights.push_back(weight);
+        color += weight * list.point_color[source];
+        if (uv) {
+          texture_point += weight * list.point_uv[source];
+        }
+      }
+      derived.offsets.push_back(static_cast<Index>(derived.sources.size()));
+      list.point_radius.push_back(0.0f);
+      list.point_color.push_back(color);
+      list.point_finish.push_back(scene.objects[o].finish);
+      if (uv) {
+        list.point_uv.push_back(texture_point);
+      }
+    }
+  }
+
   // The ground's centre is the foot of the motion's centre on the plane; it reaches far enough
   // that its faded edge lies near the horizon.
   const Vec3 center = motion.center().cast<double>();
@@ -201,7 +282,7 @@ void positions_for_render(const std::vector<Vec3>& x, std::vector<Vec3f>& out) {
   }
 }
 
-std::uint64_t draw_list_bytes(const Model& model) {
+std::uint64_t draw_list_bytes(const SceneDescription& scene, const Model& model) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
   const auto bars = static_cast<std::uint64_t>(model.bar_count());
   const auto face_nodes = static_cast<std::uint64_t>(model.face_nodes.size());
@@ -210,7 +291,20 @@ std::uint64_t draw_list_bytes(const Model& model) {
   const std::uint64_t per_node = sizeof(float) + sizeof(Vec3f) + sizeof(Eigen::Vector2f) +
                                  2 * (6 + 5) * sizeof(float);  // vertices and attributes, twice
   // A face of k nodes is k − 2 triangles of three ids, held by the list and by Mesa.
-  return bars * per_bar + nodes * per_node + face_nodes * 2 * 3 * sizeof(Index);
+  std::uint64_t bytes = bars * per_bar + nodes * per_node + face_nodes * 2 * 3 * sizeof(Index);
+  // A subdivided surface: 4^level triangles each, about half as many points, each with its
+  // weights and the per-point arrays.
+  const std::vector<Index> triangle_counts = surface_triangle_counts(scene, model);
+  for (std::size_t o = 0; o < model.objects.size(); ++o) {
+    const int level = subdivision_level(scene.objects[o], triangle_counts[o], model.can_tear());
+    if (level > 0) {
+      const auto triangles = static_cast<std::uint64_t>(triangle_counts[o]) << (2 * level);
+      const std::uint64_t points = triangles / 2;
+      bytes += triangles * 2 * 3 * sizeof(Index) +
+               points * (per_node + kWeightsPerDerivedPoint * (sizeof(Index) + sizeof(float)));
+    }
+  }
+  return bytes;
 }
 
 }  // namespace dinam

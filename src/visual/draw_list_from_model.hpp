@@ -12,6 +12,7 @@ namespace dinam {
 struct Model;
 struct RenderSettings;
 struct SceneDescription;
+struct ObjectDesc;
 
 // Bars become segments and nodes become joints, each object in its colour; the faces of objects
 // drawn as surfaces become triangle batches (textured when the scene names a texture). A bar is
@@ -39,8 +40,14 @@ RenderSettings render_settings(const SceneDescription& scene);
 Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames);
 
 // Bytes of the draw list's arrays for `model` and of the renderer's per-frame copies of them (in
-// dinam and in Mesa's buffer objects), for the memory estimate.
-std::uint64_t draw_list_bytes(const Model& model);
+// dinam and in Mesa's buffer objects), with the subdivided surfaces, for the memory estimate.
+std::uint64_t draw_list_bytes(const SceneDescription& scene, const Model& model);
+
+// How many levels of Loop subdivision an object's surface of `triangles` is drawn with: its
+// `subdivide`, else 2 where that makes at most 2 000 triangles (1 where one level does, else 0);
+// none for a wire, and none in a scene whose bars can tear (a tear hides the coarse triangles on
+// its bar, which a smooth surface no longer has).
+int subdivision_level(const ObjectDesc& object, Index triangles, bool can_tear);
 
 // Node positions in single precision, for the renderer.
 void positions_for_render(const std::vector<Vec3>& x, std::vector<Vec3f>& out);

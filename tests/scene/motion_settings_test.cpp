@@ -72,6 +72,7 @@ const std::map<std::string, std::pair<std::string, std::string>> kLookEdits = {
     {"objects[].render_radius", {"render_radius: 0.01", "render_radius: 0.05"}},
     {"objects[].style", {"style: surface", "style: both"}},
     {"objects[].joints", {"joints: true", "joints: false"}},
+    {"objects[].subdivide", {"joints: true", "joints: true\n    subdivide: 3"}},
     {"objects[].texture", {"    texture: quad.png\n", ""}},
     {"objects[].finish", {"finish: cloth", "finish: {like: metal, roughness: 0.2}"}},
 };
