@@ -17,45 +17,45 @@ struct ChannelRange {
   std::vector<std::uint8_t> high;  // (pixels × 3)
 };
 
+// `range` widened along one axis: each entry's least and greatest over the entries within
+// `shift` of it along x (or y), clamped at the border.
+ChannelRange widened(const ChannelRange& range, int w, int h, int shift, bool along_x) {
+  ChannelRange out{std::vector<std::uint8_t>(range.low.size()),
+                   std::vector<std::uint8_t>(range.high.size())};
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int at = along_x ? x : y;
+      const int last = along_x ? w - 1 : h - 1;
+      for (int c = 0; c < 3; ++c) {
+        std::uint8_t low = 255;
+        std::uint8_t high = 0;
+        for (int i = std::max(0, at - shift); i <= std::min(last, at + shift); ++i) {
+          const std::size_t q = 3 * (along_x ? static_cast<std::size_t>(y) * w + i
+                                             : static_cast<std::size_t>(i) * w + x) +
+                                c;
+          low = std::min(low, range.low[q]);
+          high = std::max(high, range.high[q]);
+        }
+        const std::size_t p = 3 * (static_cast<std::size_t>(y) * w + x) + c;
+        out.low[p] = low;
+        out.high[p] = high;
+      }
+    }
+  }
+  return out;
+}
+
 ChannelRange neighbourhood_range(const Image& image, int shift) {
-  const int w = image.width;
-  const int h = image.height;
-  const std::size_t pixels = static_cast<std::size_t>(w) * h;
-  ChannelRange rows{std::vector<std::uint8_t>(pixels * 3), std::vector<std::uint8_t>(pixels * 3)};
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t p = static_cast<std::size_t>(y) * w + x;
-      for (int c = 0; c < 3; ++c) {
-        std::uint8_t low = 255;
-        std::uint8_t high = 0;
-        for (int i = std::max(0, x - shift); i <= std::min(w - 1, x + shift); ++i) {
-          const std::uint8_t v = image.pixel(i, y)[c];
-          low = std::min(low, v);
-          high = std::max(high, v);
-        }
-        rows.low[3 * p + c] = low;
-        rows.high[3 * p + c] = high;
-      }
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  ChannelRange values{std::vector<std::uint8_t>(pixels * 3), {}};
+  for (std::size_t p = 0; p < pixels; ++p) {
+    for (int c = 0; c < 3; ++c) {
+      values.low[3 * p + c] = image.rgba[4 * p + c];
     }
   }
-  ChannelRange range{std::vector<std::uint8_t>(pixels * 3), std::vector<std::uint8_t>(pixels * 3)};
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const std::size_t p = static_cast<std::size_t>(y) * w + x;
-      for (int c = 0; c < 3; ++c) {
-        std::uint8_t low = 255;
-        std::uint8_t high = 0;
-        for (int j = std::max(0, y - shift); j <= std::min(h - 1, y + shift); ++j) {
-          const std::size_t q = 3 * (static_cast<std::size_t>(j) * w + x) + c;
-          low = std::min(low, rows.low[q]);
-          high = std::max(high, rows.high[q]);
-        }
-        range.low[3 * p + c] = low;
-        range.high[3 * p + c] = high;
-      }
-    }
-  }
-  return range;
+  values.high = values.low;
+  const ChannelRange rows = widened(values, image.width, image.height, shift, true);
+  return widened(rows, image.width, image.height, shift, false);
 }
 
 // Whether some channel of `value` lies further than `threshold` outside [low, high].
