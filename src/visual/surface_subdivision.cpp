@@ -91,14 +91,15 @@ void refine(std::vector<Combination>& points, std::vector<Index>& triangles,
   for (std::size_t v = 0; v < n; ++v) {
     const std::vector<Index>& ring = neighbours[v];
     const std::vector<Index>& crease = crease_neighbours[v];
-    if (ring.empty()) {
-      next[v] = points[v];  // on no triangle
-    } else if (crease.size() == 2 && corner[v] == 0) {
+    // A point on no triangle, and a corner of creases (where a border turns, or creases meet),
+    // stays where it is.
+    const bool stays = ring.empty() || (!crease.empty() && (crease.size() != 2 || corner[v] != 0));
+    if (stays) {
+      next[v] = points[v];
+    } else if (!crease.empty()) {
       next[v] = combine({{0.75, &points[v]},
                          {0.125, &points[static_cast<std::size_t>(crease[0])]},
                          {0.125, &points[static_cast<std::size_t>(crease[1])]}});
-    } else if (!crease.empty()) {
-      next[v] = points[v];  // a corner of creases stays
     } else {
       const auto valence = static_cast<double>(ring.size());
       const double c = 0.375 + 0.25 * std::cos(2.0 * std::numbers::pi / valence);
