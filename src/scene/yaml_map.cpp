@@ -226,6 +226,9 @@ void check_no_duplicate_keys(const YAML::Node& root, const std::string& file) {
 YamlMap::YamlMap(const YAML::Node& node, std::string file, std::string path)
     : node_(node), file_(std::move(file)), path_(std::move(path)), not_a_map_(!node_.IsMap()) {}
 
+// Throwing here is deliberate and safe: only when no other exception is in flight, and the error
+// is the scene's, which every caller reports.
+// NOLINTNEXTLINE(bugprone-exception-escape)
 YamlMap::~YamlMap() noexcept(false) {
   // A reader that stopped before finish() on a node that is no map: the error is still due,
   // unless another error is already on its way.

@@ -44,7 +44,7 @@ class YamlMap {
   YamlMap(const YAML::Node& node, std::string file, std::string path);
   YamlMap(const YamlMap&) = delete;
   YamlMap& operator=(const YamlMap&) = delete;
-  ~YamlMap() noexcept(false);
+  ~YamlMap() noexcept(false);  // NOLINT(bugprone-exception-escape): see yaml_map.cpp
 
   // Whether `key` is present; asking counts it among the keys the map accepts (finish()).
   bool has(const std::string& key);
