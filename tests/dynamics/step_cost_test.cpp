@@ -96,11 +96,12 @@ objects:
   };
   const Model watching = scene("{objects: true}");
   const Model folding = scene("{objects: true, self: true}");
-  const StepCostPart* watched = part(estimate_step_cost(watching, 1), "contact between objects");
+  const StepCost watching_cost = estimate_step_cost(watching, 1);
+  const StepCostPart* watched = part(watching_cost, "contact between objects");
   ASSERT_NE(watched, nullptr);
   EXPECT_EQ(watched->items,
             static_cast<double>(watching.contact.bars.size() + watching.contact.points.size()));
-  EXPECT_EQ(part(estimate_step_cost(watching, 1), "a surface's contact with itself"), nullptr);
+  EXPECT_EQ(part(watching_cost, "a surface's contact with itself"), nullptr);
   const StepCost one = estimate_step_cost(folding, 1);
   const StepCostPart* pressed = part(one, "a surface's contact with itself");
   ASSERT_NE(pressed, nullptr);
