@@ -114,6 +114,9 @@ struct SnapshotOptions {
   std::optional<double> min_ssim;
   std::optional<std::filesystem::path> junit;   // a JUnit XML report of every frame
   std::optional<std::filesystem::path> report;  // one HTML page of every frame
+  // The framing rule (visual/shot_framing.hpp): the least fraction of the picture's width or
+  // height the subject must span, the whole subject inside; unchecked when not given.
+  std::optional<double> framing;
   bool quiet = false;
 };
 

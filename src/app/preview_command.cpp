@@ -21,6 +21,7 @@
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_cameras.hpp"
 #include "visual/frame_drawing.hpp"
+#include "visual/shot.hpp"
 
 namespace dinam {
 namespace {
@@ -104,8 +105,9 @@ int run_preview(const RenderOptions& options) {
   const StopOnSignals stop_on_signals;
 
   const SimulatedFrames frames = render_motion(input, options.quiet, nullptr);
-  const DrawList draw_list = make_draw_list(scene, input.model, frames.motion, input.textures);
-  const FrameCameras cameras = frame_cameras(scene, input.model, frames);
+  const Shot shot = make_shot(scene, input.model, frames, input.textures);
+  const DrawList& draw_list = shot.draw_list;
+  const FrameCameras& cameras = shot.cameras;
   OsmesaRenderer renderer(render_settings(scene));
   std::vector<Image> pictures;
   std::vector<int> drawn;  // each picture's frame

@@ -32,6 +32,7 @@
 #include "stepping/run_estimate.hpp"
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_drawing.hpp"
+#include "visual/shot.hpp"
 
 namespace dinam {
 
@@ -77,8 +78,9 @@ int run_render(const RenderOptions& options) {
 
   // 2. Draw the frames; a thread of their own writes them (PNG) and feeds them to ffmpeg, which
   //    encodes the movie meanwhile.
-  const DrawList draw_list = make_draw_list(scene, model, frames.motion, input.textures);
-  const FrameCameras cameras = frame_cameras(scene, model, frames);
+  const Shot shot = make_shot(scene, model, frames, input.textures);
+  const DrawList& draw_list = shot.draw_list;
+  const FrameCameras& cameras = shot.cameras;
   OsmesaRenderer renderer(render_settings(scene));
   int exit_code = kExitOk;
   std::string movie_note;

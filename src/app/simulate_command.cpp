@@ -76,14 +76,18 @@ std::vector<ObjectLook> object_looks(const SceneDescription& scene) {
   return looks;
 }
 
-// The radius each object's wires are drawn with, for the whole run's motion.
+// The radius each object's wires are drawn with, for the whole run's motion (as render draws
+// them).
 std::vector<float> drawn_wire_radii(const Model& model, const std::vector<FrameBounds>& frames) {
   Bounds motion;
+  Bounds subject;
   for (const FrameBounds& frame : frames) {
     motion.add(frame.min);
     motion.add(frame.max);
+    subject.add(frame.subject_min);
+    subject.add(frame.subject_max);
   }
-  return drawn_wire_radii(model, motion);
+  return drawn_wire_radii(model, drawn_bounds(motion, subject));
 }
 
 }  // namespace

@@ -32,18 +32,27 @@
 #include "visual/draw_list_from_model.hpp"
 #include "visual/frame_cameras.hpp"
 #include "visual/frame_drawing.hpp"
+#include "visual/shot.hpp"
+#include "visual/shot_framing.hpp"
+#include "visual/torn_drawing.hpp"
 
 namespace dinam {
 namespace {
 
-// "1,5-7,12" → {1, 5, 6, 7, 12}, each within 1..frame_count.
+// "1,5-7,12" → {1, 5, 6, 7, 12}, each within 1..frame_count; "middle" and "last" stand for
+// those frames (as the default takes them), so a list need not know the scene's length.
 std::vector<int> parse_frame_list(const std::string& text, int frame_count) {
   std::set<int> frames;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = text.find(',', start);
-    const std::string item =
+    std::string item =
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (item == "middle") {
+      item = std::to_string((frame_count + 1) / 2);
+    } else if (item == "last") {
+      item = std::to_string(frame_count);
+    }
     const FrameRange range = parse_frame_range(item, frame_count);
     for (int f = range.first; f <= range.last; ++f) {
       frames.insert(f);
@@ -86,8 +95,9 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
   // The whole motion frames the camera, so a frame looks as it does in the movie.
   const SimulatedFrames frames =
       simulate_frames(model, timestep, count, false, {}, &scene.quality.motion_blur);
-  const DrawList draw_list = make_draw_list(scene, model, frames.motion, std::move(textures));
-  const FrameCameras cameras = frame_cameras(scene, model, frames);
+  const Shot shot = make_shot(scene, model, frames, std::move(textures));
+  const DrawList& draw_list = shot.draw_list;
+  const FrameCameras& cameras = shot.cameras;
   OsmesaRenderer renderer(render_settings(scene));
 
   for (const int frame : chosen) {
@@ -98,6 +108,22 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
     result.name = fmt::format("{}_{:04}", scene.name, frame);
     draw_frames(renderer, draw_list, frames, cameras, frame, frame,
                 [&](int, const Image& drawn) { result.actual = drawn; });
+    if (options.framing) {
+      DrawList shown = draw_list;
+      for (const TornBar& tear : frames.tears) {
+        if (tear.frame <= frame) {
+          hide_torn_bar(tear, shown);
+        }
+      }
+      const PictureExtent extent = picture_extent(
+          shown, frames.at(frame), cameras.frames[static_cast<std::size_t>(frame - 1)],
+          static_cast<float>(scene.image_width) / static_cast<float>(scene.image_height));
+      result.framing_checked = true;
+      result.subject_width = extent.width();
+      result.subject_height = extent.height();
+      result.min_fill = static_cast<float>(*options.framing);
+      result.framing_problem = framing_problem(extent, result.min_fill);
+    }
     const std::filesystem::path golden = options.golden / (result.name + ".png");
     std::error_code ec;
     const bool have_golden = std::filesystem::is_regular_file(golden, ec);
@@ -163,6 +189,13 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
         break;
       }
     }
+    if (!result.framing_problem.empty()) {
+      fmt::print(stderr, "snapshot {}: BADLY FRAMED: {}\n", result.name, result.framing_problem);
+      result.detail += (result.detail.empty() ? "" : "; ") + result.framing_problem;
+    } else if (result.framing_checked && !options.quiet) {
+      fmt::print("snapshot {}: framed (the subject spans {:.0f} % × {:.0f} % of the picture)\n",
+                 result.name, 100.0f * result.subject_width, 100.0f * result.subject_height);
+    }
     results.push_back(std::move(result));
   }
   return scene.name;
@@ -222,8 +255,8 @@ Command add_snapshot_command(CLI::App& app, std::optional<int>& threads) {
                    "Folder of golden images <name>_NNNN.png and their tolerances.yaml")
       ->required();
   snapshot_command->add_option("--frames", options->frames,
-                               "Frames to check, e.g. 1,60,120 or 1-3,9 (default: first, middle "
-                               "and last)");
+                               "Frames to check, e.g. 1,60,120, 1-3,9 or 1,50,last (default: "
+                               "1,middle,last)");
   snapshot_command->add_option("--size", options->size, "Image size WxH")->default_val("320x180");
   add_optional_option(*snapshot_command, "-o,--output", options->output,
                       "Where differing frames' actual/expected/diff images go (default "
@@ -268,6 +301,12 @@ Command add_snapshot_command(CLI::App& app, std::optional<int>& threads) {
                                "matches (default {:g})",
                                defaults.min_ssim))
       ->check(CLI::Range(-1.0, 1.0));
+  snapshot_command
+      ->add_option("--framing", options->framing,
+                   "Also fail a frame whose subject (everything drawn but the ground) the "
+                   "frame cuts, or that spans less than this fraction of both the picture's "
+                   "width and height, e.g. 0.5")
+      ->check(CLI::Range(0.0, 1.0));
   snapshot_command->add_flag("-q,--quiet", options->quiet, "Print only differences and errors");
   add_threads_option(*snapshot_command, threads);
 

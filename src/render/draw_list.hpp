@@ -60,6 +60,12 @@ struct DrawList {
   Vec3f ground_normal = Vec3f::UnitZ();  // unit
   float ground_half_size = 10.0f;  // m; the checker fades out towards this distance from the eye
   float ground_tile = 0.5f;        // m, checker size
+  // A cyclorama around ground_center: the floor curves up, along a quarter circle of
+  // `backdrop_curve` from `backdrop_radius` out, into a wall `backdrop_height` high, in the
+  // ground's colour (render/backdrop_mesh.hpp). None while the radius is 0.
+  float backdrop_radius = 0.0f;  // m
+  float backdrop_curve = 0.0f;   // m
+  float backdrop_height = 0.0f;  // m
   // Linear RGB: the ground's colour (a plain ground's, the checker's lighter squares) and the
   // checker's other squares; the sky's at the horizon and at the top of the picture.
   Vec3f ground_color{0.60f, 0.58f, 0.54f};

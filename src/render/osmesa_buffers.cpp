@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <string_view>
 
+#include "render/cyclorama_mesh.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "render/primitive_meshes.hpp"
 
@@ -127,7 +128,33 @@ void OsmesaRenderer::create_buffers() {
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), float_offset(0));
 
+  glGenVertexArrays(1, &backdrop_vao_);
+  glGenBuffers(1, &backdrop_vbo_);
+  glGenBuffers(1, &backdrop_ebo_);
+
   glGenVertexArrays(1, &full_screen_vao_);  // its triangle is made from gl_VertexID alone
+  glBindVertexArray(0);
+}
+
+void OsmesaRenderer::upload_backdrop(const DrawList& list) {
+  const Vec3f& c = list.ground_center;
+  const Vec3f& n = list.ground_normal;
+  const std::vector<float> shape = {c.x(),
+                                    c.y(),
+                                    c.z(),
+                                    n.x(),
+                                    n.y(),
+                                    n.z(),
+                                    list.backdrop_radius,
+                                    list.backdrop_curve,
+                                    list.backdrop_height};
+  if (shape == backdrop_shape_) {
+    return;
+  }
+  backdrop_shape_ = shape;
+  backdrop_index_count_ = upload_primitive(
+      make_cyclorama(c, n, list.backdrop_radius, list.backdrop_curve, list.backdrop_height),
+      backdrop_vao_, backdrop_vbo_, backdrop_ebo_);
   glBindVertexArray(0);
 }
 

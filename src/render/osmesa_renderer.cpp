@@ -92,6 +92,7 @@ struct OsmesaRenderer::Programs {
         node("node.vert", "lit.frag", kLitIncludes, look),
         surface("surface.vert", "lit.frag", kLitIncludes, look),
         ground("ground.vert", "ground.frag", kLitIncludes, look),
+        backdrop("backdrop.vert", "ground.frag", kLitIncludes, look),
         sky("full_screen.vert", "sky.frag", kDisplayIncludes, look),
         finish("full_screen.vert", "finish.frag", kDisplayIncludes, look) {}
 
@@ -100,6 +101,7 @@ struct OsmesaRenderer::Programs {
   ShaderProgram node;
   ShaderProgram surface;
   ShaderProgram ground;
+  ShaderProgram backdrop;  // the cyclorama, shaded as a plain ground
   ShaderProgram sky;
   ShaderProgram finish;
   ShaderProgram bar_depth{"capsule.vert", "capsule.frag", {}, "#define DEPTH_ONLY\n"};
@@ -108,6 +110,7 @@ struct OsmesaRenderer::Programs {
   ShaderProgram node_depth{"node.vert", "depth.frag"};
   ShaderProgram surface_depth{"surface.vert", "depth.frag"};
   ShaderProgram ground_depth{"ground.vert", "depth.frag"};
+  ShaderProgram backdrop_depth{"backdrop.vert", "depth.frag"};
   ShaderProgram occlusion{"full_screen.vert", "ambient_occlusion.frag", {"noise.glsl"}};
 };
 
@@ -125,14 +128,14 @@ OsmesaRenderer::OsmesaRenderer(const RenderSettings& settings)
 }
 
 OsmesaRenderer::~OsmesaRenderer() {
-  const unsigned buffers[] = {capsule_vbo_,        bar_instance_vbo_,  sphere_vbo_,
-                              sphere_ebo_,         node_instance_vbo_, surface_dynamic_vbo_,
-                              surface_static_vbo_, ground_vbo_};
+  const unsigned buffers[] = {
+      capsule_vbo_,         bar_instance_vbo_,   sphere_vbo_, sphere_ebo_,   node_instance_vbo_,
+      surface_dynamic_vbo_, surface_static_vbo_, ground_vbo_, backdrop_vbo_, backdrop_ebo_};
   glDeleteBuffers(static_cast<GLsizei>(std::size(buffers)), buffers);
   glDeleteBuffers(static_cast<GLsizei>(batch_ebos_.size()), batch_ebos_.data());
   glDeleteTextures(static_cast<GLsizei>(texture_ids_.size()), texture_ids_.data());
-  const unsigned arrays[] = {capsule_vao_, sphere_vao_, surface_vao_, ground_vao_,
-                             full_screen_vao_};
+  const unsigned arrays[] = {capsule_vao_, sphere_vao_,   surface_vao_,
+                             ground_vao_,  backdrop_vao_, full_screen_vao_};
   glDeleteVertexArrays(static_cast<GLsizei>(std::size(arrays)), arrays);
 }
 
@@ -242,26 +245,9 @@ void OsmesaRenderer::draw_shapes(const DrawList& list, bool depth_only,
 void OsmesaRenderer::draw_ground(const DrawList& list, const Mat4f& clip_from_world,
                                  const RenderCamera& camera, const Mat4f* light_from_world,
                                  bool direct, bool depth_only) {
-  const ShaderProgram& ground =
-      depth_only ? programs_in_use_->ground_depth : programs_in_use_->ground;
-  ground.use();
-  glUniformMatrix4fv(ground.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world.data());
-  // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
-  const Vec3f normal = list.ground_normal.normalized();
-  const Vec3f seed = std::abs(normal.x()) < 0.9f ? Vec3f::UnitX() : Vec3f::UnitY();
-  const Vec3f axis_u = (seed - seed.dot(normal) * normal).normalized();
-  set_vec3(ground.uniform("center"), list.ground_center);
-  set_vec3(ground.uniform("axis_u"), axis_u);
-  set_vec3(ground.uniform("axis_v"), normal.cross(axis_u));
-  set_vec3(ground.uniform("plane_normal"), normal);
-  glUniform1f(ground.uniform("half_size"), list.ground_half_size);
-  glUniform1f(ground.uniform("fade_distance"), 0.9f * list.ground_half_size);
-  glUniform1f(ground.uniform("tile_size"), list.ground_checker ? list.ground_tile : 0.0f);
-  set_vec3(ground.uniform("ground_color"), list.ground_color);
-  set_vec3(ground.uniform("checker_color"), list.ground_checker_color);
-  if (!depth_only) {
-    set_lighting(ground, list, camera, light_from_world);
-    set_output(ground, direct);
+  const bool backdrop = list.backdrop_radius > 0.0f;
+  if (backdrop) {
+    upload_backdrop(list);
   }
   // The ground yields its depths to what lies on it: contact holds a resting cloth a micrometre
   // into the plane (or on it), where its depths and the ground's are equal to the buffer's
@@ -275,11 +261,56 @@ void OsmesaRenderer::draw_ground(const DrawList& list, const Mat4f& clip_from_wo
     glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor_before);
     glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units_before);
   }
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(factor_before + kGroundYieldFactor, units_before + kGroundYieldUnits);
-  glBindVertexArray(ground_vao_);
-  glDrawArrays(GL_TRIANGLES, 0, 6);
-  glBindVertexArray(0);
+  // Any orthonormal pair in the plane; the world axis least aligned with the normal seeds it.
+  const Vec3f normal = list.ground_normal.normalized();
+  const Vec3f seed = std::abs(normal.x()) < 0.9f ? Vec3f::UnitX() : Vec3f::UnitY();
+  const Vec3f axis_u = (seed - seed.dot(normal) * normal).normalized();
+  for (const bool wall : {false, true}) {
+    if (wall && !backdrop) {
+      break;
+    }
+    const Programs& programs = *programs_in_use_;
+    const ShaderProgram& program = wall ? (depth_only ? programs.backdrop_depth : programs.backdrop)
+                                        : (depth_only ? programs.ground_depth : programs.ground);
+    program.use();
+    // The cyclorama keeps the pass's own offset: so it is nearer than the plane where the two
+    // overlap (the ring's chords reach a little inside the circle the plane ends on).
+    if (wall && !offset_before) {
+      glDisable(GL_POLYGON_OFFSET_FILL);
+    } else {
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(factor_before + (wall ? 0.0f : kGroundYieldFactor),
+                      units_before + (wall ? 0.0f : kGroundYieldUnits));
+    }
+    glUniformMatrix4fv(program.uniform("clip_from_world"), 1, GL_FALSE, clip_from_world.data());
+    if (!wall) {
+      set_vec3(program.uniform("center"), list.ground_center);
+      set_vec3(program.uniform("axis_u"), axis_u);
+      set_vec3(program.uniform("axis_v"), normal.cross(axis_u));
+      set_vec3(program.uniform("plane_normal"), normal);
+      glUniform1f(program.uniform("half_size"), list.ground_half_size);
+    }
+    if (!depth_only) {
+      glUniform1f(program.uniform("fade_distance"), 0.9f * list.ground_half_size);
+      glUniform1f(program.uniform("tile_size"),
+                  list.ground_checker && !wall ? list.ground_tile : 0.0f);
+      set_vec3(program.uniform("ground_color"), list.ground_color);
+      set_vec3(program.uniform("checker_color"), list.ground_checker_color);
+      glUniform1f(program.uniform("floor_radius"), wall ? 0.0f : list.backdrop_radius);
+      set_vec3(program.uniform("floor_center"), list.ground_center);
+      set_vec3(program.uniform("floor_normal"), normal);
+      set_lighting(program, list, camera, light_from_world);
+      set_output(program, direct);
+    }
+    if (wall) {
+      glBindVertexArray(backdrop_vao_);
+      glDrawElements(GL_TRIANGLES, backdrop_index_count_, GL_UNSIGNED_INT, nullptr);
+    } else {
+      glBindVertexArray(ground_vao_);
+      glDrawArrays(GL_TRIANGLES, 0, 6);
+    }
+    glBindVertexArray(0);
+  }
   if (offset_before) {
     glPolygonOffset(factor_before, units_before);
   } else {

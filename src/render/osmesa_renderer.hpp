@@ -45,6 +45,8 @@ class OsmesaRenderer final : public Renderer {
   void create_buffers();
   void upload_static(const DrawList& list);
   void upload_frame(const DrawList& list, const std::vector<Vec3f>& positions);
+  // The cyclorama's surface, made again when its shape changes.
+  void upload_backdrop(const DrawList& list);
   // Where an instant is drawn: for the display (tone mapped, encoded, resolved into OSMesa's
   // buffer); in linear colour into the frame targets' textures; or weighted straight into the
   // frame's sum (an instant of a blurred frame).
@@ -89,6 +91,9 @@ class OsmesaRenderer final : public Renderer {
   unsigned sphere_vao_ = 0, sphere_vbo_ = 0, sphere_ebo_ = 0, node_instance_vbo_ = 0;
   unsigned surface_vao_ = 0, surface_dynamic_vbo_ = 0, surface_static_vbo_ = 0;
   unsigned ground_vao_ = 0, ground_vbo_ = 0, full_screen_vao_ = 0;
+  unsigned backdrop_vao_ = 0, backdrop_vbo_ = 0, backdrop_ebo_ = 0;
+  int backdrop_index_count_ = 0;
+  std::vector<float> backdrop_shape_;  // centre, normal, radius, curve, height it was made for
   int sphere_index_count_ = 0;
 
   // What upload_static last saw, so a list is uploaded once and a new one replaces it.

@@ -14,7 +14,7 @@ namespace {
 
 // Keys read only for drawing. Keep this list short and sure: each entry must be read by no stage
 // before render/ (scene_reader.cpp reads them into fields that model/ and dynamics/ never see).
-constexpr std::array<std::string_view, 19> kLookOnlyKeys = {
+constexpr std::array<std::string_view, 20> kLookOnlyKeys = {
     "name",            // the movie's file name
     "camera",          // the view
     "light",           // the sun's direction and size
@@ -26,6 +26,7 @@ constexpr std::array<std::string_view, 19> kLookOnlyKeys = {
     "ground.color",
     "ground.checker_color",
     "ground.tile",
+    "ground.backdrop",
     "sky",  // its colours
     "objects[].color",
     "objects[].render_radius",

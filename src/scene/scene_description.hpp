@@ -291,6 +291,9 @@ struct GroundDesc {
   Vec3f color{0.60f, 0.58f, 0.54f};
   Vec3f checker_color{0.50f, 0.48f, 0.45f};
   std::optional<double> tile;  // m
+  // A seamless studio backdrop (drawing only): the floor curves up into a wall around the scene,
+  // far enough that every camera stands inside it (visual/backdrop.hpp).
+  bool cyclorama = false;
   bool contact = true;
   // Penalty stiffness per node: empty for auto (a contact frequency an eighth of the model's
   // highest).

@@ -42,7 +42,14 @@ GroundDesc read_ground(YamlMap map) {
   }
   ground.normal.normalize();
   ground.visible = map.boolean("visible", ground.visible);
-  const std::string pattern = map.string("pattern", "checker");
+  const std::string backdrop = map.string("backdrop", "none");
+  if (backdrop != "none" && backdrop != "cyclorama") {
+    throw_user_error(map.loc("backdrop"), "'ground.backdrop' must be none or cyclorama; got '{}'",
+                     backdrop);
+  }
+  ground.cyclorama = backdrop == "cyclorama";
+  // A studio's backdrop is one colour, floor and wall: plain unless a checker is asked for.
+  const std::string pattern = map.string("pattern", ground.cyclorama ? "plain" : "checker");
   if (pattern != "checker" && pattern != "plain") {
     throw_user_error(map.loc("pattern"), "'ground.pattern' must be checker or plain; got '{}'",
                      pattern);

@@ -96,7 +96,8 @@ std::string measure_row(const char* name, const std::string& value, const std::s
 }  // namespace
 
 bool failed(const FrameResult& result) {
-  return result.outcome == FrameOutcome::kDiffers || result.outcome == FrameOutcome::kNoGolden;
+  return result.outcome == FrameOutcome::kDiffers || result.outcome == FrameOutcome::kNoGolden ||
+         !result.framing_problem.empty();
 }
 
 void write_junit_report(const std::filesystem::path& path,
@@ -203,6 +204,15 @@ dark blue one left out by an <code>ignore</code> region.</p>
       html += measure_row("SSIM", fmt::format("{:.4f}", c.ssim),
                           fmt::format("at least {:.4f}", r->limits.min_ssim),
                           c.ssim >= r->limits.min_ssim);
+      if (r->framing_checked) {
+        html +=
+            measure_row("subject's span",
+                        fmt::format("{:.0f} % × {:.0f} %", 100.0f * r->subject_width,
+                                    100.0f * r->subject_height),
+                        fmt::format("inside the frame, at least {:.0f} % of its width or height",
+                                    100.0f * r->min_fill),
+                        r->framing_problem.empty());
+      }
       html += "</table>\n";
     }
     html += picture(r->expected, "expected");

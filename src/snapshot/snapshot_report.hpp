@@ -31,6 +31,13 @@ struct FrameResult {
   Image actual;
   Image expected;      // empty without a golden
   std::string detail;  // the failure in words, or where the golden went
+  // With --framing: the subject's span in the picture (fractions of its width and height) and
+  // what is wrong with the shot ("" when it holds); a badly framed frame fails.
+  bool framing_checked = false;
+  float subject_width = 0.0f;
+  float subject_height = 0.0f;
+  float min_fill = 0.0f;
+  std::string framing_problem;
 };
 
 bool failed(const FrameResult& result);

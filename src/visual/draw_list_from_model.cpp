@@ -85,6 +85,17 @@ Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames) {
   return bounds;
 }
 
+Bounds drawn_bounds(const Bounds& motion, const Bounds& subject) {
+  if (subject.empty()) {
+    return motion;
+  }
+  const Vec3f room = Vec3f::Constant(subject.radius());
+  Bounds bounds;
+  bounds.min = motion.min.cwiseMax(subject.min - room);
+  bounds.max = motion.max.cwiseMin(subject.max + room);
+  return bounds;
+}
+
 std::vector<Image> read_textures(const SceneDescription& scene) {
   std::vector<Image> textures(scene.objects.size());
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {

@@ -39,6 +39,12 @@ RenderSettings render_settings(const SceneDescription& scene);
 // The bounds of every position of every frame.
 Bounds motion_bounds(const std::vector<std::vector<Vec3f>>& frames);
 
+// The bounds the draw list is sized on (wire radii, the ground's tiles, the shadow map): the
+// motion's, but no farther than half the subject's diameter beyond the subject's box (its
+// percentile box, core/subject_box.hpp). A node torn loose and flung a hundred metres, drawn by
+// nothing, then does not thicken every wire, coarsen the floor and blur the shadows.
+Bounds drawn_bounds(const Bounds& motion, const Bounds& subject);
+
 // Bytes of the draw list's arrays for `model` and of the renderer's per-frame copies of them (in
 // dinam and in Mesa's buffer objects), with the subdivided surfaces, for the memory estimate.
 std::uint64_t draw_list_bytes(const SceneDescription& scene, const Model& model);

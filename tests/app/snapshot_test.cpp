@@ -21,6 +21,7 @@ using test::run_command;
 // across at the banner.
 struct Banner {
   double camera_x = 0.5;  // m: the camera and the point it looks at move together
+  double distance = 3.2;  // m, of the camera in front of the banner
   double pole_x = 0.0;    // m
   const char* cloth_color = "[0.80, 0.25, 0.15]";
   const char* pole_color = "[0.55, 0.55, 0.58]";
@@ -30,7 +31,7 @@ struct Banner {
 name: banner
 duration: 0.5
 fps: 10
-camera: {{position: [{0}, -3.2, 1.3], look_at: [{0}, 0, 1.2], fov: 40}}
+camera: {{position: [{0}, {4}, 1.3], look_at: [{0}, 0, 1.2], fov: 40}}
 objects:
   - name: pole
     mesh: {{polyline: {{points: [[{1}, 0, 0], [{1}, 0, 1.7]], segments: 4}}}}
@@ -46,7 +47,7 @@ objects:
     pinned: {{box: {{min: [0, -0.1, 0.9], max: [0.05, 0.1, 1.7]}}}}
     color: {2}
 )",
-                       camera_x, pole_x, cloth_color, pole_color);
+                       camera_x, pole_x, cloth_color, pole_color, -distance);
   }
 };
 
@@ -114,6 +115,43 @@ TEST_F(Snapshot, AChangedColourAndAMovedPoleFail) {
   const CommandResult pole = snapshot(moved);
   EXPECT_EQ(pole.exit_code, 1) << pole.output;
   EXPECT_NE(pole.output.find("DIFFERS"), std::string::npos) << pole.output;
+}
+
+// --framing: the banner seen from 4 m passes (its 1.7 m pole spans 58 % of the height; from
+// the goldens' 3.2 m the frame cuts the pole's foot); seen from 12 m it spans under a fifth of
+// it and fails, even against goldens it matches, and so does a camera moved 2.5 m to the side,
+// which cuts the cloth's far end.
+TEST_F(Snapshot, FramingFailsAShotThatLosesOrCutsItsSubject) {
+  Banner framed;
+  framed.distance = 4.0;
+  const CommandResult whole = snapshot(framed, "--update --framing 0.5");
+  EXPECT_EQ(whole.exit_code, 0) << whole.output;
+  EXPECT_NE(whole.output.find("framed (the subject spans"), std::string::npos) << whole.output;
+  const CommandResult foot_cut = snapshot(Banner{}, "--framing 0.5");
+  EXPECT_EQ(foot_cut.exit_code, 1) << foot_cut.output;
+  EXPECT_NE(foot_cut.output.find("cuts the subject at the bottom"), std::string::npos)
+      << foot_cut.output;
+
+  Banner far;
+  far.distance = 12.0;
+  const CommandResult written = snapshot(far, "--update --framing 0.5");
+  EXPECT_EQ(written.exit_code, 1) << written.output;
+  EXPECT_NE(written.output.find("BADLY FRAMED"), std::string::npos) << written.output;
+  const CommandResult matched = snapshot(far);
+  EXPECT_EQ(matched.exit_code, 0) << matched.output;  // the pictures are the goldens
+  const std::filesystem::path junit = folder_.path() / "framing.xml";
+  const CommandResult small = snapshot(far, "--framing 0.5 --junit " + test::shell_quoted(junit));
+  EXPECT_EQ(small.exit_code, 1) << small.output;
+  EXPECT_NE(small.output.find("of the height, under the 50 % asked"), std::string::npos)
+      << small.output;
+  EXPECT_NE(read(junit).find("<failure"), std::string::npos) << read(junit);
+
+  Banner aside;
+  aside.distance = 4.0;
+  aside.camera_x = -2.0;
+  const CommandResult cut = snapshot(aside, "--update --framing 0.5");
+  EXPECT_EQ(cut.exit_code, 1) << cut.output;
+  EXPECT_NE(cut.output.find("cuts the subject at the right"), std::string::npos) << cut.output;
 }
 
 // Regions in the scene's metres: the pole's box left out lets the moved pole pass; weighed more,
