@@ -5,13 +5,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 dinam=${1:-build/dinam}
 mkdir -p docs/gallery
-# The frame that shows each scene best.
-declare -A frame=([flag]=50 [windy_flag]=70 [ball]=6 [trampoline]=54 [rope]=16 [wire_chair]=80
-                  [shaken_tower]=233 [storm_flag]=120 [draped_chair]=50
-                  [ball_in_net]=8 [rope_heap]=60 [finishes]=30)
+# The frame that shows each scene best: docs/gallery/frames.txt (the snapshot tests check the
+# framing there).
 for scene in scenes/*.yaml; do
   name=$(basename "$scene" .yaml)
-  n=${frame[$name]:-60}
+  n=$(awk -v s="$name" '$1 == s { print $2 }' docs/gallery/frames.txt)
+  n=${n:-60}
   work=$(mktemp -d)
   "$dinam" render "$scene" -o "$work" --frames "$n-$n" --size 480x270 --movie none -q
   cp "$work/frame_$(printf '%04d' "$n").png" "docs/gallery/$name.png"
