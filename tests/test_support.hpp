@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "model/model.hpp"
 #include "scene/scene_description.hpp"
 
 namespace dinam::test {
@@ -214,6 +215,18 @@ inline CommandResult run_dinam(const std::vector<std::string>& arguments,
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
   return result;
+}
+
+// The model's object of that name (a shipped scene's objects may be reordered or added to); a
+// test failure, and the first object, when there is none.
+inline const ModelObject& object_named(const Model& model, const std::string& name) {
+  for (const ModelObject& object : model.objects) {
+    if (object.name == name) {
+      return object;
+    }
+  }
+  ADD_FAILURE() << "no object '" << name << "'";
+  return model.objects.front();
 }
 
 // `text` with the first `from` replaced by `to`; a test failure when there is none.

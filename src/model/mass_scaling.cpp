@@ -7,6 +7,14 @@
 
 namespace dinam {
 
+double moving_mass(const Model& model) {
+  double mass = 0.0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    mass += model.pinned(i) ? 0.0 : model.node_mass[i];
+  }
+  return mass;
+}
+
 std::vector<double> masses_for_frequency(const Model& model, const NodeFrequencyRows& rows,
                                          double omega_squared) {
   std::vector<double> mass = model.node_mass;
@@ -37,7 +45,7 @@ double mass_needed_for(const Model& model, const NodeFrequencyRows& rows, double
 
 MassScaling scale_masses_to(Model& model, const NodeFrequencyRows& rows, double omega_squared) {
   MassScaling scaling;
-  scaling.mass_before = model.total_mass();
+  scaling.mass_before = moving_mass(model);
   double omega_squared_before = 0.0;  // the bound itself, from the rows already at hand
   for (std::size_t i = 0; i < rows.own.size(); ++i) {
     omega_squared_before = std::max(omega_squared_before, rows.own[i] + rows.coupling[i]);
@@ -73,7 +81,7 @@ std::optional<DefaultScaling> default_scaling_frequency(const Model& model,
   const auto middle = row.begin() + static_cast<std::ptrdiff_t>(row.size() / 2);
   std::nth_element(row.begin(), middle, row.end());
   double omega_squared = kMassScalingTypicalRatio * kMassScalingTypicalRatio * *middle;
-  const double allowed = max_fraction * model.total_mass();
+  const double allowed = max_fraction * moving_mass(model);
   const bool capped = mass_needed_for(model, rows, omega_squared) > allowed;
   if (capped) {
     // The mass needed falls as ω² rises: bisect (in log ω²) for the lowest ω² within the limit.

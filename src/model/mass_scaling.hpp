@@ -18,7 +18,7 @@ struct Model;
 struct MassScaling {
   double target_step = 0.0;  // s: the step asked for (0 when nothing was scaled)
   double added_mass = 0.0;   // kg
-  double mass_before = 0.0;  // kg, the model's physical mass
+  double mass_before = 0.0;  // kg, the physical mass of the model's free nodes
   Index nodes = 0;           // nodes that took mass
   double step_gain = 1.0;    // how much longer the springs' stable step became
   bool capped = false;       // the default stopped at its added-mass limit, short of its aim
@@ -33,6 +33,10 @@ inline constexpr double kMassScalingMinGain = 1.25;
 // step a mesh of like bars would take)...
 inline constexpr double kMassScalingTypicalRatio = 1.5;
 // ...and adds at most kDefaultMaxAddedMass (scene/) of the mass.
+
+// The mass of the free nodes, kg: what moves, and what mass scaling's limit is a fraction of (a
+// pinned steel frame of 190 kg must not let a 2 kg ball beside it take 4 kg).
+double moving_mass(const Model& model);
 
 // The mass each free node needs so that its row of the frequency bound is at most
 // `omega_squared` (its own mass where it already is). Solving row_i(m) = own_i m_i/m +

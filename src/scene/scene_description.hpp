@@ -370,15 +370,15 @@ struct MotionSetting {
 
 // What `timestep` as a map asks of the automatic step. By default (and with `timestep: auto`) the
 // few nodes that would set a much shorter step than the rest get a little mass (mass scaling, at
-// most kDefaultMaxAddedMass of the total). A `target` step, or `max_steps` over the duration,
-// is reached by mass scaling within `max_added_mass`, collapsing ever longer short bars where
-// that is not enough; a target no such means can reach is an error.
+// most kDefaultMaxAddedMass of the free nodes' mass). A `target` step, or `max_steps` over the
+// duration, is reached by mass scaling within `max_added_mass`, collapsing ever longer short bars
+// where that is not enough; a target no such means can reach is an error.
 inline constexpr double kDefaultMaxAddedMass = 0.02;
 
 struct StepTargetDesc {
   std::optional<double> target;                  // s
   std::optional<double> max_steps;               // over the duration
-  double max_added_mass = kDefaultMaxAddedMass;  // a fraction of the total mass
+  double max_added_mass = kDefaultMaxAddedMass;  // a fraction of the free nodes' mass
   bool mass_scaling = true;                      // false: the default adds no mass
   FileLoc loc;
 

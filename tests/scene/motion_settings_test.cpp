@@ -66,6 +66,7 @@ const std::map<std::string, std::pair<std::string, std::string>> kLookEdits = {
     {"ground.color", {"color: [0.6, 0.6, 0.6]", "color: [0.9, 0.2, 0.2]"}},
     {"ground.checker_color", {"checker_color: [0.5, 0.5, 0.5]", "checker_color: [0.1, 0.1, 0.1]"}},
     {"ground.tile", {"tile: 0.5", "tile: 2"}},
+    {"ground.backdrop", {"visible: true", "visible: true, backdrop: cyclorama"}},
     {"sky",
      {"sky: {horizon: [0.8, 0.8, 0.9]}", "sky: {horizon: [1, 0.5, 0.1], zenith: [0, 0, 0.5]}"}},
     {"objects[].color", {"color: [0.7, 0.2, 0.2]", "color: [0.2, 0.2, 0.7]"}},
