@@ -99,6 +99,13 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
   const DrawList& draw_list = shot.draw_list;
   const FrameCameras& cameras = shot.cameras;
   OsmesaRenderer renderer(render_settings(scene));
+  // For --framing: the list with the bars torn by the frame at hand hidden, brought up to date
+  // frame by frame (`chosen` ascends), as draw_frames does.
+  DrawList torn;
+  std::size_t tears_hidden = 0;
+  if (options.framing && !frames.tears.empty()) {
+    torn = draw_list;
+  }
 
   for (const int frame : chosen) {
     const auto start = std::chrono::steady_clock::now();
@@ -109,14 +116,12 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
     draw_frames(renderer, draw_list, frames, cameras, frame, frame,
                 [&](int, const Image& drawn) { result.actual = drawn; });
     if (options.framing) {
-      DrawList shown = draw_list;
-      for (const TornBar& tear : frames.tears) {
-        if (tear.frame <= frame) {
-          hide_torn_bar(tear, shown);
-        }
+      while (tears_hidden < frames.tears.size() && frames.tears[tears_hidden].frame <= frame) {
+        hide_torn_bar(frames.tears[tears_hidden++], torn);
       }
       const PictureExtent extent = picture_extent(
-          shown, frames.at(frame), cameras.frames[static_cast<std::size_t>(frame - 1)],
+          frames.tears.empty() ? draw_list : torn, frames.at(frame),
+          cameras.frames[static_cast<std::size_t>(frame - 1)],
           static_cast<float>(scene.image_width) / static_cast<float>(scene.image_height));
       result.framing_checked = true;
       result.subject_width = extent.width();
