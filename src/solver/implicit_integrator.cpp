@@ -22,6 +22,7 @@
 #include "model/model.hpp"
 #include "solver/implicit_energy.hpp"
 #include "solver/implicit_newton.hpp"
+#include "solver/incremental_potential.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
 #include "solver/stiffness_matrix.hpp"
@@ -37,13 +38,6 @@ constexpr int kMostSplits = 10;
 constexpr int kErrorSplits = 5;
 // Sub-steps taken at a level of splitting before a sub-step twice as long is tried again.
 constexpr int kTakenBeforeLonger = 2;
-
-// The forces that derive from V: springs, gravity and the ground's normal penalty
-// (force_kinds.hpp), found by compute_potential_forces, which reads no velocity and no friction
-// anchor. Contact between objects is ImplicitObjectContact's, outside the switches.
-ForceSwitches potential_switches() {
-  return switches_treated_as(ImplicitTreatment::kInPotential);
-}
 
 // The springs alone, whose plastic sets a step's end moves on.
 ForceSwitches spring_switches() {
@@ -64,58 +58,6 @@ double median_bar(const Model& model) {
 }
 
 }  // namespace
-
-// The incremental potential a step minimises (implicit_integrator.hpp), over the free nodes:
-//   E(x) = Σ m/(2h²)|x − x̂|² + α m/(2h)|x − x_b|² + ½ (x − x_b)ᵀ D (x − x_b) − f_pᵀ(x − x_b)
-//          + V(x) + the friction springs' and the contact's potentials,
-// with h the step solved for, D the dampers' Hessian at x_n and f_p the dampers' pull from
-// supports that move. Its gradient and energy evaluate the model's forces at state.x.
-struct IncrementalPotential {
-  const FreeDofs& dofs;
-  const Vector& mass;                // (dofs)
-  const std::vector<Vec3>& x_start;  // x_n, for the springs' flow from their plastic sets
-  ImplicitFriction& friction;
-  ImplicitObjectContact& objects;
-  const Model* model = nullptr;  // the step's (set with the step)
-  State* state = nullptr;
-  double hs = 0.0;                        // s, the step solved for (2h/3 for BDF2's two-step steps)
-  double alpha = 0.0;                     // 1/s, the global damping
-  Vector predicted = Vector();            // x̂
-  Vector start = Vector();                // x_b
-  const SparseMatrix* damping = nullptr;  // D
-  Vector pinned_damping = Vector();       // f_p
-  Vector inertia = Vector();  // M/h² + α M/h, the Hessian's diagonal beside the stiffness
-  ForceSwitches switches = potential_switches();
-  // The free part of x, x − x_b, x − x̂, D (x − x_b) and the forces, kept from call to call so
-  // that neither allocates.
-  mutable Vector x = Vector(), moved = Vector(), off = Vector(), damped = Vector(),
-                 forces = Vector();
-
-  // g = M(x − x̂)/h² − F(x) + ∇hD; leaves the potential's forces at x in state.force.
-  void gradient(Vector& g) const {
-    compute_potential_forces(*model, switches, *state);
-    friction.add_forces(state->x, state->force);
-    objects.add_forces(*model, *state);
-    free_part(dofs, state->x, x);
-    moved = x - start;
-    damped.noalias() = *damping * moved;
-    free_part(dofs, state->force, forces);
-    g = (mass / (hs * hs)).cwiseProduct(x - predicted) + (alpha / hs) * mass.cwiseProduct(moved) -
-        forces + damped - pinned_damping;
-  }
-
-  double energy() const {
-    free_part(dofs, state->x, x);
-    off = x - predicted;
-    moved = x - start;
-    damped.noalias() = *damping * moved;
-    return potential_energy(*model, *state, switches, x_start, SpringEnergy::kWithFlow).energy +
-           friction.energy(state->x) + objects.energy(*model, *state) +
-           (0.5 / (hs * hs)) * mass.dot(off.cwiseProduct(off)) +
-           (0.5 * alpha / hs) * mass.dot(moved.cwiseProduct(moved)) + 0.5 * moved.dot(damped) -
-           pinned_damping.dot(moved);
-  }
-};
 
 struct ImplicitIntegrator::Workspace {
   FreeDofs dofs;
@@ -310,14 +252,40 @@ struct ImplicitIntegrator::Workspace {
     state.time = t_next - h;
   }
 
-  // 7. Newton's method from x̂ (the free nodes; the driven ones are placed); false where it did
-  // not converge.
-  bool minimise(const Model& model, State& state, ImplicitStats& stats) {
+  // 7a. Where Newton's method starts: x̂, or after a step that ended with a rebound, x̂ less the
+  // rebound's velocities (x̂ + h (v_unbounced − v_n)) where its energy is lower. A node kicked
+  // alone out of a stiff piece (ground_restitution.hpp) has an x̂ a rebound's h v away from its
+  // neighbours, across bars a fraction of that long: its bars' energy there dwarfs the inertia's,
+  // and Newton's method, in a trust region over a landscape far from quadratic, crawled back
+  // (25 iterations a step, split after split, for a letter of assimp's collada.ogex landing flat;
+  // 7 times the run). x̂ is still the step's inertia target: the minimum is the same, and a loose
+  // node, whose x̂ is lower, still starts there and bounces.
+  void place_start(State& state) {
     for (std::size_t i = 0; i < state.x.size(); ++i) {
       if (dofs.first_dof[i] >= 0) {
         state.x[i] = predicted[i];
       }
     }
+    if (!rebounded) {
+      return;
+    }
+    const double at_prediction = potential.energy();
+    unbounced_start.assign(state.x.begin(), state.x.end());
+    for (std::size_t i = 0; i < state.x.size(); ++i) {
+      if (dofs.first_dof[i] >= 0) {
+        unbounced_start[i] += hs * (v_unbounced[i] - v_base[i]);
+      }
+    }
+    std::swap(state.x, unbounced_start);
+    if (potential.energy() >= at_prediction) {
+      std::swap(state.x, unbounced_start);
+    }
+  }
+
+  // 7b. Newton's method from there (the free nodes; the driven ones are placed); false where it
+  // did not converge.
+  bool minimise(const Model& model, State& state, ImplicitStats& stats) {
+    place_start(state);
     if (factored_h != hs) {  // the kept Hessian, and the trust region in its norm, are of another h
       factored = false;
       trust_radius = 0.0;
@@ -445,6 +413,7 @@ struct ImplicitIntegrator::Workspace {
       state.energy.numerical_dissipation += step.numerical_dissipation;
     }
     const double kinetic_before = ends ? kinetic_energy(model, state.velocity) : 0.0;
+    v_unbounced = state.velocity;
     const bool landed = rebound_landing_nodes(model, x_start, v_start, state);
     rebounded = objects.rebound_pairs(model, v_start, h, state) || landed;
     if (ends) {
@@ -478,6 +447,8 @@ struct ImplicitIntegrator::Workspace {
   ImplicitStepEnds step_ends;
   bool contact_changed = false;  // a node met or left the ground, or a pair touched or parted
   bool rebounded = false;        // a node or a pair of the contact rebounded
+  // The last step's velocities before its rebounds, and the start they would give (place_start).
+  std::vector<Vec3> v_unbounced, unbounced_start;
 };
 
 namespace {
