@@ -4,6 +4,7 @@
 #include "dynamics/contact/object_contact_implicit.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/free_dofs.hpp"
+#include "dynamics/integrator.hpp"
 #include "model/model.hpp"
 #include "solver/potential.hpp"
 
