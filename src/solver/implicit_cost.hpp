@@ -54,8 +54,9 @@ enum class ImplicitMotion {
 // How many times short the implicit estimate of a structure that moves so may be: 1 where it
 // swings (held by its pins, its estimates measured within a factor of two); 10 for a free
 // structure, which lands or tumbles, where runs of the real-mesh sweep took up to ten times and
-// more their estimate (E-AT-AT.q3o folding, over 10; collada.ogex, holding its shape, 11;
-// MotionCaptureROM.ase's 26 tumbling shells, 10: bench/notes/implicit-integrator.md). The
+// more their estimate (E-AT-AT.q3o folding, over 10; MotionCaptureROM.ase's 26 tumbling shells,
+// 10; collada.ogex, holding its shape, 11 until a step after a rebound started nearer its
+// minimum, 2.7 since: bench/notes/implicit-integrator.md). The
 // recommendation (stepping/integrator_choice.hpp) weighs the estimate by it.
 double estimate_margin(ImplicitMotion motion);
 

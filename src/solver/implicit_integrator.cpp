@@ -258,8 +258,8 @@ struct ImplicitIntegrator::Workspace {
   // neighbours, across bars a fraction of that long: its bars' energy there dwarfs the inertia's,
   // and Newton's method, in a trust region over a landscape far from quadratic, crawled back
   // (25 iterations a step, split after split, for a letter of assimp's collada.ogex landing flat;
-  // 7 times the run). x̂ is still the step's inertia target: the minimum is the same, and a loose
-  // node, whose x̂ is lower, still starts there and bounces.
+  // 4 times the run). x̂ is still the step's inertia target, so the step solves the same
+  // equations, and a loose node, whose x̂ is lower, still starts there and bounces.
   void place_start(State& state) {
     for (std::size_t i = 0; i < state.x.size(); ++i) {
       if (dofs.first_dof[i] >= 0) {
