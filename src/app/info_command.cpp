@@ -90,7 +90,7 @@ void print_integrator_choice(const IntegratorChoice& choice) {
             "a step, and this counts a fall through the scene's height for the whole run"
           : "more where a step is split",
       duration_text(choice.implicit.seconds), step.counts.iterations, step.counts.solve_iterations,
-      step.counts.factorizations, motion_text(step.motion), 1e3 * step.factorization_seconds,
+      step.counts.factorizations, motion_text(step), 1e3 * step.factorization_seconds,
       step.factor.nonzeros, step.factor.unknowns);
   fmt::print("recommended      integrator: {} ({})\n", recommended_key(choice),
              recommendation_reason(choice));

@@ -1,14 +1,16 @@
 #include "solver/implicit_cost.hpp"
 
 #include <cholmod.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "core/error.hpp"
-#include "model/disjoint_sets.hpp"
+#include "model/mesh_pieces.hpp"
 #include "model/model.hpp"
+#include "solver/landing_balance.hpp"
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
@@ -41,33 +43,6 @@ constexpr double kFreeStructureMargin = 10.0;
 
 // Below this share of its motions left free by its bars, a structure holds its shape.
 constexpr double kHeldShapeShare = 0.02;
-
-// The pieces of the mesh that its bars join: each node's piece (named by a node of it), and by
-// piece, how many nodes and whether a pin holds it.
-struct MeshPieces {
-  std::vector<Index> piece;        // (n_nodes)
-  std::vector<int> size;           // (n_nodes) by piece
-  std::vector<std::uint8_t> held;  // (n_nodes) by piece
-};
-
-MeshPieces mesh_pieces(const Model& model) {
-  const auto n = static_cast<std::size_t>(model.node_count());
-  DisjointSets sets(n);
-  for (Index b = 0; b < model.bar_count(); ++b) {
-    const Index root_i = sets.find(model.bar_nodes[2 * b]);
-    const Index root_j = sets.find(model.bar_nodes[2 * b + 1]);
-    if (root_i != root_j) {
-      sets.join(root_i, root_j);
-    }
-  }
-  MeshPieces pieces{sets.roots(), std::vector<int>(n, 0), std::vector<std::uint8_t>(n, 0)};
-  for (Index i = 0; i < model.node_count(); ++i) {
-    const Index piece = pieces.piece[i];
-    pieces.size[piece] += 1;
-    pieces.held[piece] = pieces.held[piece] != 0 || model.pinned(i) ? 1 : 0;
-  }
-  return pieces;
-}
 
 double bars_free_share(const Model& model, const MeshPieces& pieces) {
   const auto n = static_cast<std::size_t>(model.node_count());
@@ -107,7 +82,7 @@ double bars_free_share(const Model& model) {
 ImplicitMotion expected_motion(const Model& model) {
   const MeshPieces pieces = mesh_pieces(model);
   if (bars_free_share(model, pieces) < kHeldShapeShare) {
-    return ImplicitMotion::kHoldsItsShape;
+    return rocking_landing(model, pieces) ? ImplicitMotion::kRocks : ImplicitMotion::kHoldsItsShape;
   }
   const bool free_piece = std::any_of(pieces.piece.begin(), pieces.piece.end(),
                                       [&](Index piece) { return pieces.held[piece] == 0; });
@@ -126,6 +101,8 @@ ImplicitStepCounts assumed_step_counts(ImplicitMotion motion) {
   switch (motion) {
     case ImplicitMotion::kHoldsItsShape:
       return {4.0, 35.0, 0.1};
+    case ImplicitMotion::kRocks:
+      return {5.0, 60.0, 0.3};
     case ImplicitMotion::kFolds:
     case ImplicitMotion::kTumbles:
       return {14.0, 140.0, 1.0};
@@ -135,10 +112,15 @@ ImplicitStepCounts assumed_step_counts(ImplicitMotion motion) {
   return {6.0, 70.0, 0.8};
 }
 
-const char* motion_text(ImplicitMotion motion) {
-  switch (motion) {
+std::string motion_text(const ImplicitStepCost& cost) {
+  switch (cost.motion) {
     case ImplicitMotion::kHoldsItsShape:
       return "its bars hold its shape";
+    case ImplicitMotion::kRocks:
+      return fmt::format(
+          "its bars hold its shape, but a piece of it lands off balance (the piece of node {}): "
+          "it rocks, rolls or topples",
+          cost.off_balance_node);
     case ImplicitMotion::kFolds:
       return "its bars leave some of its motions to the bending and torsion springs, and it "
              "lands: it folds";
@@ -260,6 +242,9 @@ ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forc
   cost.solve_iteration_seconds = 1e-9 * (forces.serial_ns + kNsPerSolveCall +
                                          2.0 * kNsPerFactorNonzero * cost.factor.nonzeros);
   cost.motion = expected_motion(model);
+  if (cost.motion == ImplicitMotion::kRocks) {
+    cost.off_balance_node = rocking_landing(model, mesh_pieces(model))->node;
+  }
   cost.counts = assumed_step_counts(cost.motion);
   cost.seconds = cost.counts.iterations * cost.iteration_seconds +
                  cost.counts.solve_iterations * cost.solve_iteration_seconds +

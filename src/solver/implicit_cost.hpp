@@ -7,6 +7,9 @@
 // factorisations a step takes depends on the motion (a swing takes a few, a structure that folds
 // where it lands tens), and the estimate assumes what bench_implicit measured for models that move
 // alike.
+#include <string>
+
+#include "core/types.hpp"
 #include "dynamics/step_cost.hpp"
 
 namespace dinam {
@@ -27,11 +30,18 @@ struct ImplicitStepCounts {
 // bars alone hold the structure's shape:
 enum class ImplicitMotion {
   // Its bars leave under 2 % of its motions free (a triangulated closed surface leaves none):
-  // it keeps its shape where it lands, and the Hessian changes little from step to step.
-  // Measured: NFF's spheres.nff 3.5 Newton iterations, 30 solve iterations and 0.11
-  // factorisations a step, WithCamera.nff 4.2, 40 and 0.13, fromtruespace_bin32.x 4.5 Newton
-  // iterations and 0.05 factorisations, COLLADA.dae 2.9 Newton iterations.
+  // it keeps its shape where it lands, and comes to rest there; the Hessian changes little from
+  // step to step. Measured: NFF's spheres.nff 3.5 Newton iterations, 30 solve iterations and
+  // 0.11 factorisations a step, WithCamera.nff 4.2, 40 and 0.13, COLLADA.dae 2.9 Newton
+  // iterations.
   kHoldsItsShape,
+  // Its bars hold its shape, but a free piece of it lands off balance on a round base
+  // (landing_balance.hpp): it rocks, rolls or topples, and goes on moving on the ground, where
+  // the nodes that touch it change from step to step and with them the Hessian. Measured:
+  // fromtruespace_bin32.x 3.1, 30 and 0.025; assimp's collada.ogex, whose letters land standing
+  // and whose C, o and d rock and roll on their round backs for seconds, 5.2, 58 and 0.27;
+  // MotionCaptureROM.ase's 26 shells 8.6, 85 and 0.75. Assumed: the middle one.
+  kRocks,
   // More of its motions are held only by the bending and torsion springs, and a piece of it is
   // free with the ground or contact between objects to land on: it folds under its own weight
   // where it lands, nearly a static problem of a buckling shell at each step. Measured: the
@@ -55,9 +65,9 @@ enum class ImplicitMotion {
 // swings (held by its pins, its estimates measured within a factor of two); 10 for a free
 // structure, which lands or tumbles, where runs of the real-mesh sweep took up to ten times and
 // more their estimate (E-AT-AT.q3o folding, over 10; MotionCaptureROM.ase's 26 tumbling shells,
-// 10; collada.ogex, holding its shape, 11 until a step after a rebound started nearer its
-// minimum, 2.7 since: bench/notes/implicit-integrator.md). The
-// recommendation (stepping/integrator_choice.hpp) weighs the estimate by it.
+// 10 at the counts of a structure that lies still, 3.2 at a rocking one's;
+// bench/notes/implicit-integrator.md). The recommendation (stepping/integrator_choice.hpp)
+// weighs the estimate by it.
 double estimate_margin(ImplicitMotion motion);
 
 // The share of the model's free motions that its bars leave free: Maxwell's count of a bar
@@ -69,7 +79,11 @@ double bars_free_share(const Model& model);
 
 ImplicitMotion expected_motion(const Model& model);
 ImplicitStepCounts assumed_step_counts(ImplicitMotion motion);
-const char* motion_text(ImplicitMotion motion);
+
+struct ImplicitStepCost;
+// Why the step takes its counts, in words, for `info` (a piece that lands off balance named by
+// its lowest node).
+std::string motion_text(const ImplicitStepCost& cost);
 
 // And those of a step that contact between objects' speed envelope split off (a few
 // milliseconds): the paper's ball in the trampoline's net, 5 844 such steps over 4 s, took 2.3,
@@ -92,6 +106,7 @@ HessianFactorSize hessian_factor_size(const Model& model);
 struct ImplicitStepCost {
   HessianFactorSize factor;
   ImplicitMotion motion = ImplicitMotion::kSwings;
+  Index off_balance_node = -1;           // kRocks: the lowest node of the piece that tips first
   ImplicitStepCounts counts;             // a step's, as `motion` assumes
   double factorization_seconds = 0.0;    // assembling the Hessian and factorising it, once
   double iteration_seconds = 0.0;        // a Newton iteration: forces and energies

@@ -109,9 +109,15 @@ TEST_F(ImplicitCostFrameworks, ExpectsAShellToHoldItsShapeABoxOfQuadsToFoldAndAP
   EXPECT_LT(holds.factorizations, swings.factorizations);
   EXPECT_LT(swings.factorizations, folds.factorizations);
   EXPECT_LT(holds.iterations, folds.iterations);
+  // A structure that holds its shape but rocks where it lands lies between one that lies still
+  // and one that folds.
+  const ImplicitStepCounts rocks = assumed_step_counts(ImplicitMotion::kRocks);
+  EXPECT_LT(holds.solve_iterations, rocks.solve_iterations);
+  EXPECT_LT(holds.factorizations, rocks.factorizations);
+  EXPECT_LT(rocks.factorizations, folds.factorizations);
   EXPECT_EQ(estimate_margin(ImplicitMotion::kSwings), 1.0);
-  for (const ImplicitMotion free :
-       {ImplicitMotion::kHoldsItsShape, ImplicitMotion::kFolds, ImplicitMotion::kTumbles}) {
+  for (const ImplicitMotion free : {ImplicitMotion::kHoldsItsShape, ImplicitMotion::kRocks,
+                                    ImplicitMotion::kFolds, ImplicitMotion::kTumbles}) {
     EXPECT_EQ(estimate_margin(free), 10.0);
   }
 }
