@@ -1,5 +1,8 @@
 #include "model/mesh_pieces.hpp"
 
+#include <algorithm>
+#include <numeric>
+
 #include "model/disjoint_sets.hpp"
 #include "model/model.hpp"
 
@@ -22,6 +25,14 @@ MeshPieces mesh_pieces(const Model& model) {
     pieces.held[piece] = pieces.held[piece] != 0 || model.pinned(i) ? 1 : 0;
   }
   return pieces;
+}
+
+std::vector<Index> nodes_by_piece(const MeshPieces& pieces) {
+  std::vector<Index> order(pieces.piece.size());
+  std::iota(order.begin(), order.end(), Index{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](Index a, Index b) { return pieces.piece[a] < pieces.piece[b]; });
+  return order;
 }
 
 }  // namespace dinam

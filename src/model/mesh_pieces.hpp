@@ -19,4 +19,8 @@ struct MeshPieces {
 
 MeshPieces mesh_pieces(const Model& model);
 
+// Every node, piece by piece (the pieces in the order of their names, each piece's nodes in
+// theirs): piece p's nodes are a run of pieces.size[p] from the first of them.
+std::vector<Index> nodes_by_piece(const MeshPieces& pieces);
+
 }  // namespace dinam

@@ -3,8 +3,11 @@
 #include <cholmod.h>
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/error.hpp"
@@ -44,31 +47,70 @@ constexpr double kFreeStructureMargin = 10.0;
 // Below this share of its motions left free by its bars, a structure holds its shape.
 constexpr double kHeldShapeShare = 0.02;
 
+// A piece lies flat where its nodes' spread across their plane is below this share of their
+// spread along it: a grid is flat to rounding, a mesh read in single precision to 1e-7.
+constexpr double kFlatShare = 1e-6;
+
+// Whether the nodes of a piece lie in one plane, to the rounding of a mesh read in single
+// precision: the smallest principal spread of their positions against the largest.
+bool lies_flat(const Model& model, std::span<const Index> nodes) {
+  if (nodes.size() < 3) {
+    return false;
+  }
+  Vec3 mean = Vec3::Zero();
+  for (const Index i : nodes) {
+    mean += model.node_initial_x[i];
+  }
+  mean /= static_cast<double>(nodes.size());
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (const Index i : nodes) {
+    const Vec3 d = model.node_initial_x[i] - mean;
+    spread += d * d.transpose();
+  }
+  const Eigen::Vector3d variances =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(spread, Eigen::EigenvaluesOnly)
+          .eigenvalues();  // increasing
+  return std::sqrt(std::max(variances[0], 0.0)) <= kFlatShare * std::sqrt(variances[2]);
+}
+
 double bars_free_share(const Model& model, const MeshPieces& pieces) {
+  // By piece: its free nodes and its bars with a free node.
   const auto n = static_cast<std::size_t>(model.node_count());
-  // By piece: its free motions less its rigid ones (6, 3 for a lone node, none where a pin holds
-  // it), less its bars with a free node; each piece's count at least 0, so that bars one piece
-  // repeats do not hide another's free motions.
-  std::vector<double> left(n, 0.0);
-  double free_motions = 0.0;
+  std::vector<double> free_nodes(n, 0.0);
+  std::vector<double> bars(n, 0.0);
   for (Index i = 0; i < model.node_count(); ++i) {
-    const double motions = model.pinned(i) ? 0.0 : 3.0;
-    left[pieces.piece[i]] += motions;
-    free_motions += motions;
-    if (pieces.piece[i] == i && pieces.held[i] == 0) {
-      left[i] -= pieces.size[i] == 1 ? 3.0 : 6.0;
-    }
+    free_nodes[pieces.piece[i]] += model.pinned(i) ? 0.0 : 1.0;
   }
   for (Index b = 0; b < model.bar_count(); ++b) {
     const Index i = model.bar_nodes[2 * b];
     const Index j = model.bar_nodes[2 * b + 1];
     if (!model.pinned(i) || !model.pinned(j)) {
-      left[pieces.piece[i]] -= 1.0;
+      bars[pieces.piece[i]] += 1.0;
     }
   }
+  // By piece, the motions its bars leave free: its free motions less its rigid ones (6, 3 for a
+  // lone node, none where a pin holds it), less its bars; each piece's count at least 0, so that
+  // bars one piece repeats do not hide another's free motions. A piece that lies flat (a grid's
+  // cloth) is the exception to Maxwell's count, whose bars all lie in its plane and hold none of
+  // its motions across it to first order: its free nodes' motions across the plane (less 3 rigid
+  // ones where no pin holds it) and the count in its plane, 2 a free node (less 3) less its bars.
+  const std::vector<Index> order = nodes_by_piece(pieces);
   double free_share = 0.0;
-  for (const double motions : left) {
-    free_share += std::max(motions, 0.0);
+  double free_motions = 0.0;
+  for (std::size_t first = 0; first < order.size();) {
+    const Index piece = pieces.piece[order[first]];
+    const auto count = static_cast<std::size_t>(pieces.size[piece]);
+    const double f = free_nodes[piece];
+    const bool unheld = pieces.held[piece] == 0;
+    free_motions += 3.0 * f;
+    if (lies_flat(model, std::span<const Index>(order).subspan(first, count))) {
+      const double rigid = unheld ? 3.0 : 0.0;
+      free_share += std::max(f - rigid, 0.0) + std::max(2.0 * f - rigid - bars[piece], 0.0);
+    } else {
+      const double rigid = unheld ? (count == 1 ? 3.0 : 6.0) : 0.0;
+      free_share += std::max(3.0 * f - rigid - bars[piece], 0.0);
+    }
+    first += count;
   }
   return free_motions > 0.0 ? free_share / free_motions : 0.0;
 }

@@ -71,10 +71,12 @@ enum class ImplicitMotion {
 double estimate_margin(ImplicitMotion motion);
 
 // The share of the model's free motions that its bars leave free: Maxwell's count of a bar
-// framework, 3 n − 6 − b for each piece of the mesh with n free nodes and b bars with a free node
-// (less 6 where no pin holds the piece: its rigid motions), at least 0, summed over the pieces
-// and over 3 n of the whole. A lower bound (a bar may repeat what others hold), and 0 where the
-// bars alone hold the shape.
+// framework, 3 n − b − 6 for each piece of the mesh with n free nodes and b bars with a free node
+// (the 6 its rigid motions, only where no pin holds the piece), at least 0, summed over the
+// pieces and over 3 n of the whole. A lower bound (a bar may repeat what others hold), and 0
+// where the bars alone hold the shape. A piece that lies flat, whose bars hold nothing across
+// its plane to first order (a grid's cloth, pinned or not), counts n − 3 across it and
+// 2 n − b − 3 in it (without the 3s where a pin holds it).
 double bars_free_share(const Model& model);
 
 ImplicitMotion expected_motion(const Model& model);

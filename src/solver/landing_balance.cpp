@@ -189,21 +189,14 @@ std::vector<PieceLanding> piece_landings(const Model& model, const MeshPieces& p
   if (!ground.enabled || model.gravity.dot(ground.normal) >= 0.0) {
     return landings;
   }
-  // The free pieces' nodes, piece by piece.
-  std::vector<Index> order;
-  order.reserve(static_cast<std::size_t>(model.node_count()));
-  for (Index i = 0; i < model.node_count(); ++i) {
-    const Index piece = pieces.piece[i];
-    if (pieces.held[piece] == 0 && pieces.size[piece] > 1) {
-      order.push_back(i);
-    }
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](Index a, Index b) { return pieces.piece[a] < pieces.piece[b]; });
+  const std::vector<Index> order = nodes_by_piece(pieces);
   Landing landing(model);
   for (std::size_t first = 0; first < order.size();) {
-    const auto count = static_cast<std::size_t>(pieces.size[pieces.piece[order[first]]]);
-    landings.push_back(landing.of(std::span<const Index>(order).subspan(first, count)));
+    const Index piece = pieces.piece[order[first]];
+    const auto count = static_cast<std::size_t>(pieces.size[piece]);
+    if (pieces.held[piece] == 0 && count > 1) {
+      landings.push_back(landing.of(std::span<const Index>(order).subspan(first, count)));
+    }
     first += count;
   }
   return landings;

@@ -90,6 +90,26 @@ TEST_F(ImplicitCostFrameworks, BarsFreeShareIsMaxwellsCount) {
       6.0 / 36.0);
 }
 
+// A flat sheet is the exception to Maxwell's count: its bars all lie in its plane, and hold none
+// of its motions across it to first order. A grid of 100 × 100 triangulated cells, 10 201 nodes
+// and 30 200 bars, pinned at two corners, counts 3 · 10 199 − 30 200 = 397 free motions by
+// Maxwell (1.3 %: it would hold its shape); flat, its 10 199 free nodes' motions across the plane
+// are free, and its bars more than hold the plane's own: a third of its motions. It swings.
+TEST_F(ImplicitCostFrameworks, AFlatSheetsMotionsAcrossItsPlaneAreFree) {
+  const std::string sheet =
+      "  - mesh: {grid: {width: 2, height: 2, columns: 100, rows: 100, diagonals: one}}\n"
+      "    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.001}\n";
+  const Model pinned = model("", sheet + "    pinned: {indices: [0, 100]}\n");
+  ASSERT_EQ(pinned.node_count(), 10201);
+  ASSERT_EQ(pinned.bar_count(), 30200);
+  EXPECT_DOUBLE_EQ(bars_free_share(pinned), 1.0 / 3.0);
+  EXPECT_EQ(expected_motion(pinned), ImplicitMotion::kSwings);
+  // Free, its rigid motions aside (3 across the plane, 3 in it): it folds where it lands.
+  const Model dropped = model("", sheet);
+  EXPECT_DOUBLE_EQ(bars_free_share(dropped), (10201.0 - 3.0) / (3.0 * 10201.0));
+  EXPECT_EQ(expected_motion(dropped), ImplicitMotion::kFolds);
+}
+
 // The counts a step is assumed to take follow: a tetrahedron dropped holds its shape, a cube of
 // quads dropped on the ground folds, the same cube with nothing to land on tumbles, and a wire
 // held by a pin swings; they take the fewest, the most (folding and tumbling alike) and between
