@@ -15,6 +15,8 @@
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"
+#include "solver/implicit_cost.hpp"
+#include "solver/solver_memory.hpp"
 #include "stepping/stepper_kind.hpp"
 #include "visual/draw_list_from_model.hpp"
 
@@ -122,13 +124,17 @@ std::uint64_t state_bytes(const Model& model, bool energy) {
 }  // namespace
 
 std::uint64_t MemoryEstimate::peak() const {
-  return program + scene + model + frames + std::max(dynamics, drawing);
+  return program + scene + model + frames + std::max(dynamics + solver, drawing);
 }
 
 std::string MemoryEstimate::summary() const {
-  std::string text = fmt::format("{}: program {}, meshes {}, model {}, dynamics {}, frames {}",
-                                 byte_size(peak()), byte_size(program), byte_size(scene),
-                                 byte_size(model), byte_size(dynamics), byte_size(frames));
+  std::string text =
+      fmt::format("{}: program {}, meshes {}, model {}, dynamics {}", byte_size(peak()),
+                  byte_size(program), byte_size(scene), byte_size(model), byte_size(dynamics));
+  if (solver > 0) {
+    text += fmt::format(", solver {}", byte_size(solver));
+  }
+  text += fmt::format(", frames {}", byte_size(frames));
   if (drawing > 0) {
     text += fmt::format(", drawing {}", byte_size(drawing));
   }
@@ -143,9 +149,12 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
   // Twice where the stepper steps a copy of its own (the implicit schemes' softened ground).
   estimate.model = model_bytes(model) * (stepper_kind(model).copies_model(model) ? 2 : 1);
   estimate.dynamics = state_bytes(model, use.energy);
+  estimate.solver = stepper_kind(model).workspace_bytes(model);
   if (model.settle.enabled) {
-    // settle.cpp relaxes the model (no driving forces) in a state of its own.
+    // settle.cpp relaxes the model (no driving forces) in a state of its own, by Newton's method
+    // where it converges (its matrices freed before the run's are made).
     estimate.dynamics += state_bytes(model, false);
+    estimate.solver = std::max(estimate.solver, newton_bytes(model, hessian_factor_size(model)));
   }
   estimate.frames =
       static_cast<std::uint64_t>(std::max(use.frames_held, 0)) *
@@ -180,8 +189,12 @@ void refuse_if_over_budget(const std::filesystem::path& scene_path, const FileLo
     return;
   }
   // The advice that shrinks the largest part.
-  const std::uint64_t mesh_parts = estimate.scene + estimate.model + estimate.dynamics;
-  std::string advice = "use a coarser mesh";
+  const std::uint64_t mesh_parts =
+      estimate.scene + estimate.model + estimate.dynamics + estimate.solver;
+  std::string advice = estimate.solver >= estimate.dynamics + estimate.model
+                           ? "use a coarser mesh, or 'integrator: central_difference', whose steps "
+                             "hold no matrix"
+                           : "use a coarser mesh";
   const bool frames_largest = estimate.frames >= mesh_parts && estimate.frames >= estimate.drawing;
   if (frames_largest && frames_key.known()) {
     throw_user_error(frames_key,

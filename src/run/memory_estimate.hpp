@@ -24,12 +24,14 @@ struct MemoryUse {
 };
 
 // Bytes, by part. The peak is when the frames are all held and either the dynamics is running
-// (with the settling phase's own state before it) or the frames are being drawn.
+// (with the settling phase's own state before it, and Newton's method's matrices) or the frames
+// are being drawn.
 struct MemoryEstimate {
   std::uint64_t program = 0;   // the program and its libraries, loaded
   std::uint64_t scene = 0;     // the scene's meshes as read
   std::uint64_t model = 0;     // the model's arrays (model.hpp), and the stepper's copy if any
   std::uint64_t dynamics = 0;  // the state, the contact's pairs and grids, and the settling's state
+  std::uint64_t solver = 0;    // Newton's Hessian and factor: the implicit schemes', the settle's
   std::uint64_t frames = 0;    // the positions of every frame held
   std::uint64_t drawing = 0;   // OSMesa's buffers at the image size, the draw list, one PNG
 

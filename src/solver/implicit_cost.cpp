@@ -238,6 +238,8 @@ HessianFactorSize hessian_factor_size(const Model& model) {
   }
   start[free_nodes] = kept;
   rows.resize(static_cast<std::size_t>(kept));
+  // Each free node's diagonal block and each pair's two, of 9 entries.
+  size.hessian_nonzeros = 9.0 * (2.0 * kept - static_cast<double>(free_nodes));
 
   cholmod_common common;
   cholmod_start(&common);

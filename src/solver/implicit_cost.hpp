@@ -95,9 +95,10 @@ inline constexpr double kShortStepSolveIterations = 16.0;
 inline constexpr double kShortStepFactorizations = 0.01;
 
 struct HessianFactorSize {
-  double unknowns = 0.0;  // free degrees of freedom
-  double nonzeros = 0.0;  // in L
-  double flops = 0.0;     // of one factorisation
+  double unknowns = 0.0;          // free degrees of freedom
+  double nonzeros = 0.0;          // in L
+  double flops = 0.0;             // of one factorisation
+  double hessian_nonzeros = 0.0;  // in the Hessian itself, both triangles
 };
 
 // The Cholesky factor of the model's stiffness pattern (every spring's blocks, the free nodes'

@@ -91,6 +91,7 @@ const StepperKind kCentralDifferences = {
       return std::make_unique<CentralDifferenceStepper>(model, timestep);
     },
     .copies_model = [](const Model&) { return false; },
+    .workspace_bytes = [](const Model&) { return std::uint64_t{0}; },  // the state is all
     .estimate_steps =
         [](const SceneDescription&, const Model& model, int threads, RunEstimate& estimate) {
           estimate.step = estimate_step_cost(model, threads);

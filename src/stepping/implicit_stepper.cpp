@@ -13,6 +13,7 @@
 #include "scene/scene_description.hpp"
 #include "solver/implicit_cost.hpp"
 #include "solver/implicit_damping.hpp"
+#include "solver/solver_memory.hpp"
 #include "stepping/run_estimate.hpp"
 #include "stepping/stepper_kind.hpp"
 #include "stepping/time_step.hpp"
@@ -132,6 +133,7 @@ const StepperKind kImplicitSchemes = {
       return std::make_unique<ImplicitStepper>(model, timestep);
     },
     .copies_model = ImplicitIntegrator::copies_model,
+    .workspace_bytes = implicit_integrator_bytes,
     .estimate_steps = implicit_estimate_steps,
     .step_can_be_timed = false,
     .timestep_note = implicit_timestep_note,

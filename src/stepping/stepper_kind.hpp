@@ -7,6 +7,7 @@
 //
 // A new integrator is its stepper, its entry and one case in stepper_kinds.cpp (beside its reader
 // and its tests).
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -48,6 +49,9 @@ struct StepperKind {
   std::unique_ptr<Stepper> (*make_stepper)(const Model&, const TimeStep&);
   // Whether its stepper holds a copy of the model, which a memory estimate counts.
   bool (*copies_model)(const Model&);
+  // Bytes its stepper holds beside the state at its peak (the implicit schemes' Hessian and
+  // factor: solver/solver_memory.hpp), which a memory estimate counts.
+  std::uint64_t (*workspace_bytes)(const Model&);
 
   // A run's cost (run_estimate.hpp): a step's, into `estimate.step`, and any steps it expects to
   // add to `estimate.steps` (the implicit schemes' split steps), for `threads` threads.
