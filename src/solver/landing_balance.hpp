@@ -1,8 +1,8 @@
 #pragma once
 // Whether each free piece of a structure comes to rest where it lands, judged before the run from
 // the mesh as it starts: what `info` needs to tell a structure that lands and lies still from one
-// that lands and goes on moving, which costs the implicit integrator twice the solve iterations
-// and three times the factorisations a step (bench/notes/implicit-integrator.md, "Pieces that
+// that lands and goes on moving, which costs the implicit integrator 1.7 times the solve
+// iterations and three times the factorisations a step (bench/notes/implicit-integrator.md, "Pieces that
 // land off balance"). A piece that no pin holds falls along gravity as it starts (its initial
 // velocities aside) and lands on its lowest nodes: its base, the convex hull of those nodes seen
 // along gravity. Where the line of its weight through its centre of mass passes inside the base,
@@ -42,12 +42,12 @@ inline constexpr double kRoundBaseDegrees = 20.0;
 struct PieceLanding {
   Index node = 0;                // its lowest node
   double tipping_degrees = 0.0;  // the tilt that topples it where it lands; < 0: it tips at once
-  double next_face_degrees =
-      0.0;  // how far it turns over its base's edge before another node touches
+  // How far it turns over its base's edge before another of its nodes touches.
+  double next_face_degrees = 0.0;
 };
 
 // How each free piece (held by no pin, of more than one node) lands on the ground, in the order of
-// its nodes; none where there is no ground or gravity does not pull towards it.
+// the nodes that name the pieces; none where there is no ground or gravity does not pull towards it.
 std::vector<PieceLanding> piece_landings(const Model& model, const MeshPieces& pieces);
 
 // Of the free pieces (held by no pin, of more than one node) that land off balance on a round
