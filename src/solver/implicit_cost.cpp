@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
@@ -175,13 +178,14 @@ std::string motion_text(const ImplicitStepCost& cost) {
   return "held by its pins: it swings";
 }
 
-HessianFactorSize hessian_factor_size(const Model& model) {
-  // The factor is found from the free nodes' graph, not from the 3n × 3n Hessian: every spring
-  // joins its nodes in 3 × 3 blocks, so the Hessian's pattern is the graph's with each entry a
-  // dense block, and a node's column of the graph's factor with c entries (its diagonal among
-  // them) stands for three columns of the Hessian's with 3(c − 1) + 3, + 2 and + 1. No values
-  // are assembled: the analysis takes memory and time of the order of the springs' count.
-  const FreeDofs dofs = free_dofs(model);
+namespace {
+
+// The factor is found from the free nodes' graph, not from the 3n × 3n Hessian: every spring
+// joins its nodes in 3 × 3 blocks, so the Hessian's pattern is the graph's with each entry a
+// dense block, and a node's column of the graph's factor with c entries (its diagonal among
+// them) stands for three columns of the Hessian's with 3(c − 1) + 3, + 2 and + 1. No values
+// are assembled: the analysis takes memory and time of the order of the springs' count.
+HessianFactorSize analyse_factor(const Model& model, const FreeDofs& dofs) {
   HessianFactorSize size;
   size.unknowns = static_cast<double>(dofs.count);
   if (dofs.count == 0) {
@@ -272,6 +276,44 @@ HessianFactorSize hessian_factor_size(const Model& model) {
   }
   cholmod_free_factor(&factor, &common);
   cholmod_finish(&common);
+  return size;
+}
+
+// What the analysis depends on: the springs' nodes and which nodes are free (FNV-1a over them).
+std::uint64_t graph_key(const Model& model, const FreeDofs& dofs) {
+  std::uint64_t key = 14695981039346656037ULL;
+  const auto mix = [&](const std::vector<Index>& values) {
+    for (const Index value : values) {
+      key = (key ^ static_cast<std::uint32_t>(value)) * 1099511628211ULL;
+    }
+    key = (key ^ values.size()) * 1099511628211ULL;
+  };
+  mix(model.bar_nodes);
+  mix(model.bend_nodes);
+  mix(model.torsion_nodes);
+  mix(dofs.first_dof);
+  return key;
+}
+
+}  // namespace
+
+HessianFactorSize hessian_factor_size(const Model& model) {
+  // The analysis takes seconds on a model of a million bars, and one `info` asks for it up to
+  // five times (the memory of a render and of a simulation, the run's time, the integrators
+  // side by side): the last one is kept, for the same springs on the same free nodes.
+  static std::mutex guard;
+  static std::optional<std::pair<std::uint64_t, HessianFactorSize>> last;
+  const FreeDofs dofs = free_dofs(model);
+  const std::uint64_t key = graph_key(model, dofs);
+  {
+    const std::lock_guard lock(guard);
+    if (last && last->first == key) {
+      return last->second;
+    }
+  }
+  const HessianFactorSize size = analyse_factor(model, dofs);
+  const std::lock_guard lock(guard);
+  last = {key, size};
   return size;
 }
 
