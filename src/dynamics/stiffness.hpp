@@ -85,47 +85,59 @@ LocalStiffness<kNodes> local_stiffness(const std::array<Vec3, kNodes>& x, const 
 // (an element's matrix costs microseconds: dual numbers, and the sink's projection).
 inline constexpr Index kMinParallelStiffness = 64;
 
+// Springs whose matrices are computed at once before they are handed over: each thread's share of
+// a chunk takes milliseconds, far more than starting the team, and the matrices held stay a few
+// megabytes whatever the model (all of a million-bar cloth's torsion springs' were 1.2 GB).
+inline constexpr Index kStiffnessChunk = 8192;
+
 // The stiffness of every spring of a kind that is not broken: spring s has nodes
-// nodes[kNodes s …], and stiffness(s, x) gives its matrix at their positions x. The matrices are
-// computed and prepared (StiffnessSink::prepare) on the process's team, each thread a range of
-// springs, then handed to the sink one thread in spring order: the same sums in the same order,
-// whatever the number of threads.
+// nodes[kNodes s …], and stiffness(s, x) gives its matrix at their positions x. Chunk by chunk,
+// the matrices are computed and prepared (StiffnessSink::prepare) on the process's team, each
+// thread a range of the chunk's springs, then handed to the sink one thread in spring order: the
+// same sums in the same order, whatever the number of threads.
 template <int kNodes, class Stiffness>
 void add_spring_stiffness(Index count, const std::vector<Index>& nodes,
                           const std::vector<std::uint8_t>& broken, const std::vector<Vec3>& x,
                           StiffnessSink& sink, const Stiffness& stiffness) {
   constexpr std::size_t kSize = 9 * kNodes * kNodes;
-  // Kept from call to call: the matrices of the Wuson's torsion springs are 6.6 MB.
+  // A chunk's matrices, kept from call to call (the kind's own, on the calling thread).
   thread_local std::vector<double> kept;
-  std::vector<double>& matrices = kept;  // the calling thread's, whichever thread computes
-  matrices.resize(kSize * static_cast<std::size_t>(count));
-  auto compute = [&](Index begin, Index end) {
-    for (Index s = begin; s < end; ++s) {
-      if (is_broken(broken, s)) {
-        continue;
-      }
-      const Index* spring = &nodes[static_cast<std::size_t>(kNodes) * s];
-      std::array<Vec3, kNodes> at;
-      for (int j = 0; j < kNodes; ++j) {
-        at[j] = x[spring[j]];
-      }
-      double* matrix = &matrices[kSize * static_cast<std::size_t>(s)];
-      Eigen::Map<LocalStiffness<kNodes>> element(matrix);
-      element = stiffness(s, at);
-      sink.prepare(kNodes, matrix);
-    }
+  std::vector<double>& matrices = kept;
+  const Index chunk = std::min(count, kStiffnessChunk);
+  matrices.resize(kSize * static_cast<std::size_t>(chunk));
+  auto matrix_of = [&](Index s, Index first) {
+    return &matrices[kSize * static_cast<std::size_t>(s - first)];
   };
-  const bool shared = count >= kMinParallelStiffness && thread_count() > 1;
-  thread_team().run(
-      [&](const TeamMember& member) {
-        const auto [begin, end] = member.share(count);
-        compute(begin, end);
-      },
-      !shared);
-  for (Index s = 0; s < count; ++s) {
-    if (!is_broken(broken, s)) {
-      sink.add_prepared(&nodes[static_cast<std::size_t>(kNodes) * s], kNodes,
-                        &matrices[kSize * static_cast<std::size_t>(s)]);
+  for (Index first = 0; first < count; first += chunk) {
+    const Index last = std::min(first + chunk, count);
+    auto compute = [&](Index begin, Index end) {
+      for (Index s = begin; s < end; ++s) {
+        if (is_broken(broken, s)) {
+          continue;
+        }
+        const Index* spring = &nodes[static_cast<std::size_t>(kNodes) * s];
+        std::array<Vec3, kNodes> at;
+        for (int j = 0; j < kNodes; ++j) {
+          at[j] = x[spring[j]];
+        }
+        double* matrix = matrix_of(s, first);
+        Eigen::Map<LocalStiffness<kNodes>> element(matrix);
+        element = stiffness(s, at);
+        sink.prepare(kNodes, matrix);
+      }
+    };
+    const bool shared = last - first >= kMinParallelStiffness && thread_count() > 1;
+    thread_team().run(
+        [&](const TeamMember& member) {
+          const auto [begin, end] = member.share(last - first);
+          compute(first + begin, first + end);
+        },
+        !shared);
+    for (Index s = first; s < last; ++s) {
+      if (!is_broken(broken, s)) {
+        sink.add_prepared(&nodes[static_cast<std::size_t>(kNodes) * s], kNodes,
+                          matrix_of(s, first));
+      }
     }
   }
 }

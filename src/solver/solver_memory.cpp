@@ -1,7 +1,9 @@
 #include "solver/solver_memory.hpp"
 
 #include <Eigen/SparseCore>
+#include <algorithm>
 
+#include "dynamics/stiffness.hpp"
 #include "model/model.hpp"
 #include "solver/implicit_cost.hpp"
 
@@ -23,11 +25,14 @@ constexpr double kTripletBytes = sizeof(Eigen::Triplet<double>) + 3 * sizeof(Ind
 }  // namespace
 
 std::uint64_t newton_bytes(const Model& model, const HessianFactorSize& factor) {
-  // Each spring's matrix, (3 k)² doubles for a spring of k nodes, kept kind by kind.
+  // A chunk of each kind's springs' matrices, (3 k)² doubles for a spring of k nodes, kept kind
+  // by kind (dynamics/stiffness.hpp).
+  const auto chunk = [](Index count) {
+    return static_cast<double>(std::min(count, kStiffnessChunk));
+  };
   const double element_matrices =
-      sizeof(double) * (36.0 * (static_cast<double>(model.bar_count()) + model.clamp_count()) +
-                        81.0 * static_cast<double>(model.bend_count()) +
-                        144.0 * static_cast<double>(model.torsion_count()));
+      sizeof(double) * (36.0 * (chunk(model.bar_count()) + chunk(model.clamp_count())) +
+                        81.0 * chunk(model.bend_count()) + 144.0 * chunk(model.torsion_count()));
   const double columns = factor.unknowns + 1.0;
   const double hessian = kMatrixBytesPerNonzero * factor.hessian_nonzeros + sizeof(int) * columns;
   const double pattern = sizeof(int) * (factor.hessian_nonzeros + columns);

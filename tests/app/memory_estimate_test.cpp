@@ -214,9 +214,9 @@ TEST_F(MemoryEstimateTest, PeakResidentMemoryOfARunIsWithinFifteenPercentOfTheEs
   }
 }
 
-// An implicit run holds its Hessian, twice, each spring's matrix and the Hessian's Cholesky
-// factor, which grows faster than the model: on a cloth of 100 × 100 cells two thirds of the
-// run's memory, which an estimate of the state alone left out (77 MB for a run that held 300).
+// An implicit run holds its Hessian, twice, a chunk of its springs' matrices and the Hessian's
+// Cholesky factor, which grows faster than the model: on a cloth of 100 × 100 cells two thirds of
+// the run's memory, which an estimate of the state alone left out (77 MB for a run that held 250).
 // The estimate counts them from the factor's analysis and a measured 12 bytes a nonzero of it.
 TEST_F(MemoryEstimateTest, AnImplicitRunsMatricesAreCounted) {
   if (sanitized_build()) {
