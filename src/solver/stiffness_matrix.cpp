@@ -183,6 +183,12 @@ const SparseMatrix& StiffnessAssembly::assemble(const Model& model, const State&
       return matrix_;
     }
   }
+  // Every node held: nothing to assemble (nor to compress: Eigen's compression of a matrix without
+  // columns reads past them).
+  if (dofs.count == 0) {
+    matrix_.resize(0, 0);
+    return matrix_;
+  }
   // A new pattern: every free node's diagonal block (so that the pattern does not change with the
   // ground) and every block the elements hand over, each once; then the values into it.
   blocks_.clear();
