@@ -10,6 +10,7 @@
 #include <mutex>
 #include <optional>
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -124,18 +125,29 @@ double bars_free_share(const Model& model) {
   return bars_free_share(model, mesh_pieces(model));
 }
 
-ImplicitMotion expected_motion(const Model& model) {
+namespace {
+
+// The motion expected, and for a structure that rocks the lowest node of its piece that tips first.
+std::pair<ImplicitMotion, Index> expected_motion_and_node(const Model& model) {
   const MeshPieces pieces = mesh_pieces(model);
   if (bars_free_share(model, pieces) < kHeldShapeShare) {
-    return rocking_landing(model, pieces) ? ImplicitMotion::kRocks : ImplicitMotion::kHoldsItsShape;
+    const std::optional<PieceLanding> rocking = rocking_landing(model, pieces);
+    return rocking ? std::pair{ImplicitMotion::kRocks, rocking->node}
+                   : std::pair{ImplicitMotion::kHoldsItsShape, Index{-1}};
   }
   const bool free_piece = std::any_of(pieces.piece.begin(), pieces.piece.end(),
                                       [&](Index piece) { return pieces.held[piece] == 0; });
   if (!free_piece) {
-    return ImplicitMotion::kSwings;
+    return {ImplicitMotion::kSwings, -1};
   }
   const bool something_to_land_on = model.ground.enabled || model.contact.enabled;
-  return something_to_land_on ? ImplicitMotion::kFolds : ImplicitMotion::kTumbles;
+  return {something_to_land_on ? ImplicitMotion::kFolds : ImplicitMotion::kTumbles, -1};
+}
+
+}  // namespace
+
+ImplicitMotion expected_motion(const Model& model) {
+  return expected_motion_and_node(model).first;
 }
 
 double estimate_margin(ImplicitMotion motion) {
@@ -327,10 +339,7 @@ ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forc
   cost.iteration_seconds = 1e-9 * kForceEvaluationsPerIteration * forces.serial_ns;
   cost.solve_iteration_seconds = 1e-9 * (forces.serial_ns + kNsPerSolveCall +
                                          2.0 * kNsPerFactorNonzero * cost.factor.nonzeros);
-  cost.motion = expected_motion(model);
-  if (cost.motion == ImplicitMotion::kRocks) {
-    cost.off_balance_node = rocking_landing(model, mesh_pieces(model))->node;
-  }
+  std::tie(cost.motion, cost.off_balance_node) = expected_motion_and_node(model);
   cost.counts = assumed_step_counts(cost.motion);
   cost.seconds = cost.counts.iterations * cost.iteration_seconds +
                  cost.counts.solve_iterations * cost.solve_iteration_seconds +
