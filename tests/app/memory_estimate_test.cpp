@@ -236,6 +236,19 @@ TEST_F(MemoryEstimateTest, AnImplicitRunsMatricesAreCounted) {
   const std::filesystem::path explicit_scene = write_scene(
       "explicit.yaml", test::replaced(cloth, "integrator: implicit\n", "timestep: auto\n"));
   EXPECT_LT(estimated_bytes(explicit_scene, "memory_simulate_bytes"), estimate / 3.0);
+  // Where the matrices are what does not fit, the refusal says central differences hold none, and
+  // writes nothing.
+  const std::filesystem::path refused = folder_.path() / "refused";
+  const test::CommandResult result =
+      test::run_command("DINAM_MEMORY_LIMIT=150M " + std::string(DINAM_PROGRAM) + " simulate '" +
+                        scene.string() + "' -q -o '" + refused.string() + "'");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  for (const char* fragment : {"implicit.yaml: this run needs about", "solver",
+                               "'integrator: central_difference', whose steps hold no matrix"}) {
+    EXPECT_NE(result.output.find(fragment), std::string::npos)
+        << "lacks '" << fragment << "': " << result.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(refused));
 }
 
 TEST_F(MemoryEstimateTest, RenderThatWouldNotFitIsRefusedUnlessForced) {
