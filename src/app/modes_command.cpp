@@ -17,7 +17,6 @@
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 #include "dynamics/stability.hpp"
-#include "model/frequency_bound.hpp"
 #include "model/model.hpp"
 #include "run/frame_source.hpp"
 #include "scene/scene_description.hpp"
@@ -94,21 +93,15 @@ std::vector<double> amplitudes(const std::vector<NaturalMode>& modes, double siz
   return result;
 }
 
-// |ω²| below this share of the model's highest ω² (its bound) is round-off about zero: a motion
-// that nothing resists (a body free to slide or turn), not an unstable equilibrium. The
-// eigensolver's ω² of such a mode come out near 1e-8 of ω_max² at worst.
-constexpr double kRoundOffShare = 1e-7;
-
-void print_table(const std::vector<NaturalMode>& modes, double round_off) {
+void print_table(const std::vector<NaturalMode>& modes) {
   fmt::print("mode  frequency (Hz)  period (s)   mass share x      y      z\n");
   for (std::size_t m = 0; m < modes.size(); ++m) {
     const NaturalMode& mode = modes[m];
-    const bool free_motion = std::abs(mode.omega_squared) <= round_off;
-    const std::string period = mode.frequency > 0.0 && !free_motion
+    const std::string period = mode.frequency > 0.0
                                    ? fmt::format("{:10.4g}", 1.0 / mode.frequency)
                                    : "         -";
     const std::string frequency =
-        free_motion                 ? fmt::format("{:>14}", "0 (free)")  // a rigid-body motion
+        mode.free                   ? fmt::format("{:>14}", "0 (free)")  // a rigid-body motion
         : mode.omega_squared >= 0.0 ? fmt::format("{:14.5g}", mode.frequency)
                                     : fmt::format("{:>14}", "unstable");  // ω² < 0
     fmt::print("{:4}  {}  {}   {:9.1f} % {:5.1f} % {:5.1f} %\n", m + 1, frequency, period,
@@ -121,13 +114,13 @@ void write_modes_csv(const std::filesystem::path& path, const std::vector<Natura
                      const std::vector<double>& shown_amplitudes) {
   std::string text =
       "mode,frequency_hz,period_s,omega_squared,mass_share_x,mass_share_y,"
-      "mass_share_z,amplitude_shown\n";
+      "mass_share_z,amplitude_shown,free\n";
   for (std::size_t m = 0; m < modes.size(); ++m) {
     const NaturalMode& mode = modes[m];
-    text += fmt::format("{},{},{},{},{},{},{},{}\n", m + 1, mode.frequency,
+    text += fmt::format("{},{},{},{},{},{},{},{},{}\n", m + 1, mode.frequency,
                         mode.frequency > 0.0 ? 1.0 / mode.frequency : 0.0, mode.omega_squared,
                         mode.mass_share.x(), mode.mass_share.y(), mode.mass_share.z(),
-                        shown_amplitudes[m]);
+                        shown_amplitudes[m], mode.free ? 1 : 0);
   }
   write_output_file(path, text, "the table of modes");
 }
@@ -160,7 +153,7 @@ int run_modes(const ModesOptions& options) {
   }
   if (!options.quiet) {
     fmt::print("dinam: {}\n", settle_summary(state.settled, timestep.dt));
-    print_table(modes, kRoundOffShare * max_frequency_squared_bound(model));
+    print_table(modes);
   }
 
   const Model shown = mode_objects(model, state.x, modes);

@@ -11,8 +11,10 @@
 
 #include "core/error.hpp"
 #include "core/stop_request.hpp"
+#include "model/frequency_bound.hpp"
 #include "model/model.hpp"
 #include "solver/positive_definite_solver.hpp"
+#include "solver/rigid_motions.hpp"
 #include "solver/stiffness_matrix.hpp"
 
 namespace dinam {
@@ -61,6 +63,17 @@ class ShiftSolve {
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> indefinite_;
   bool definite_ = true;
 };
+
+// A mode is free where at least this share of its kinetic norm is a rigid motion (the rest is
+// the eigenvector's round-off, near 1e-10 of it where the next mode is well apart) ...
+constexpr double kRigidShare = 1.0 - 1e-6;
+// ... and its |ω²| is below this share of the loads' scale |g| / size (a pendulum of the
+// structure's size swings at about that ω²: a rigid motion below a millionth of it is one no load
+// holds) ...
+constexpr double kLoadShare = 1e-6;
+// ... or below this share of ω_max² (frequency_bound.hpp), the eigensolver's round-off: the free
+// motions of a steel cable of 400 bars came out at 1e-17 of it, those of a tetrahedron 1e-15.
+constexpr double kRoundOffShare = 1e-14;
 
 struct Eigenpairs {
   Vector values;            // ascending
@@ -114,13 +127,26 @@ std::vector<NaturalMode> natural_modes(const Model& model, const State& state,
   for (Index i = 0; i < model.node_count(); ++i) {
     free_mass += dofs.first_dof[i] >= 0 ? model.node_mass[i] : 0.0;
   }
+  const RigidMotions rigid(model, state.x, dofs);
+  Vec3 low = state.x.front();
+  Vec3 high = state.x.front();
+  for (const Vec3& p : state.x) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  const double size = std::max((high - low).norm(), 1e-6);
+  const double free_below = std::max(kLoadShare * model.gravity.norm() / size,
+                                     kRoundOffShare * max_frequency_squared_bound(model));
   std::vector<NaturalMode> modes;
   for (int m = 0; m < count; ++m) {
     NaturalMode mode;
     mode.omega_squared = pairs.values[m];
-    mode.frequency =
-        mode.omega_squared > 0.0 ? std::sqrt(mode.omega_squared) / (2.0 * std::numbers::pi) : 0.0;
     Vector phi = inverse_root_mass.cwiseProduct(pairs.vectors.col(m));
+    mode.free = rigid.count() > 0 && std::abs(mode.omega_squared) <= free_below &&
+                rigid.rigid_share(phi) >= kRigidShare;
+    mode.frequency = mode.omega_squared > 0.0 && !mode.free
+                         ? std::sqrt(mode.omega_squared) / (2.0 * std::numbers::pi)
+                         : 0.0;
     Eigen::Index largest = 0;
     phi.cwiseAbs().maxCoeff(&largest);
     if (phi[largest] < 0.0) {

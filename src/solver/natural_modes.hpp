@@ -6,6 +6,12 @@
 // factorisation. A mode's mass share in a direction is its effective modal mass there over the
 // free mass: how much of the structure moves with it when the supports are shaken that way
 // (the shares over all modes sum to 1).
+//
+// A mode is free (a motion nothing resists: a body sliding or turning) where its shape is a rigid
+// motion the pins leave (rigid_motions.hpp) and its |ω²| is below both the loads' scale |g|/size
+// and the eigensolver's round-off, 1e-14 of ω_max². A shape that bends anything is never free,
+// however stiff the stiffest bar: the round-off of stiff bars pushed real sways under a threshold
+// on |ω²| alone.
 #include <vector>
 
 #include "core/types.hpp"
@@ -18,7 +24,8 @@ struct Model;
 
 struct NaturalMode {
   double omega_squared = 0.0;      // 1/s², negative where the equilibrium is unstable
-  double frequency = 0.0;          // Hz, ω / 2π (0 for a mode with ω² ≤ 0)
+  double frequency = 0.0;          // Hz, ω / 2π (0 for a mode with ω² ≤ 0 and a free one)
+  bool free = false;               // a rigid motion nothing resists: ω² is 0 within round-off
   Vec3 mass_share = Vec3::Zero();  // of the free mass, in x, y and z
   // (n_nodes) m per unit modal amplitude, φᵀ M φ = 1 kg; zero at pinned nodes. Its sign makes
   // its largest coordinate positive.
