@@ -20,11 +20,13 @@
 #include "dynamics/tearing.hpp"
 #include "model/contact_builder.hpp"
 #include "model/model.hpp"
+#include "solver/constant_system.hpp"
 #include "solver/implicit_energy.hpp"
 #include "solver/implicit_newton.hpp"
 #include "solver/incremental_potential.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
+#include "solver/quasi_newton.hpp"
 #include "solver/stiffness_matrix.hpp"
 #include "solver/triplet_matrix.hpp"
 
@@ -282,9 +284,51 @@ struct ImplicitIntegrator::Workspace {
     }
   }
 
+  // 7b'. Or quasi-Newton about a constant matrix (quasi_newton.hpp), where the options ask.
+  ImplicitMinimiser minimiser = ImplicitMinimiser::kNewton;
+  ConstantSystem constant;
+  double constant_h = 0.0;
+  QuasiNewtonWorkspace quasi;
+  bool minimise_quasi(const Model& model, State& state, ImplicitStats& stats) {
+    place_start(state);
+    if (!constant.has_springs()) {
+      constant.set_springs(model, state, dofs);
+    }
+    if (constant_h != hs) {
+      if (!constant.factor(potential.inertia, *potential.damping)) {
+        return false;
+      }
+      constant_h = hs;
+      quasi.forget();
+      stats.factorizations += 1;
+    }
+    auto gradient = [&](Vector& g) { potential.gradient(g); };
+    auto energy = [&] { return potential.energy(); };
+    auto no_factor = [] { return false; };
+    auto precondition = [&](const Vector& r, Vector& solved) { constant.solve(r, solved); };
+    auto join_new_touches = [&] { return friction.join_new_touches(model, x_start, state.x); };
+    auto add_new_touches = [&] { return friction.add_new_touches(model, x_start, state.x); };
+    const StepPotential step{
+        .gradient = gradient,
+        .energy = energy,
+        .factor = no_factor,
+        .precondition = precondition,
+        .join_new_touches = join_new_touches,
+        .add_new_touches = add_new_touches,
+    };
+    QuasiNewtonCounts counts;
+    const bool done = minimise_quasi_newton(state.x, dofs, mass, hs, bar, step, counts, quasi);
+    stats.iterations += counts.iterations;
+    stats.solve_iterations += counts.energies;
+    return done;
+  }
+
   // 7b. Newton's method from there (the free nodes; the driven ones are placed); false where it
   // did not converge.
   bool minimise(const Model& model, State& state, ImplicitStats& stats) {
+    if (minimiser == ImplicitMinimiser::kQuasiNewton) {
+      return minimise_quasi(model, state, stats);
+    }
     place_start(state);
     if (factored_h != hs) {  // the kept Hessian, and the trust region in its norm, are of another h
       factored = false;
@@ -472,6 +516,7 @@ ImplicitIntegrator::ImplicitIntegrator(const Model& model, const ImplicitOptions
     : softened_(softened_ground(model, options)),
       model_(softened_ ? *softened_ : model),
       work_(std::make_unique<Workspace>()) {
+  work_->minimiser = options.minimiser;
   work_->dofs = free_dofs(model_);
   work_->mass = free_masses(model_, work_->dofs);
   work_->bar = median_bar(model_);

@@ -63,9 +63,15 @@ struct ImplicitStats {
 // 34 s at central differences' ω_c, where ω_c h is about 200).
 inline constexpr double kImplicitGroundFrequency = 10.0;
 
+// How each step's incremental potential is minimised: Newton's method in a trust region (the
+// integrator's), or quasi-Newton about projective dynamics' constant matrix (quasi_newton.hpp),
+// which the comparison of the solvers for stiff threads measures (bench/notes/stiff-threads.md).
+enum class ImplicitMinimiser { kNewton, kQuasiNewton };
+
 struct ImplicitOptions {
   // s, the run's longest step, for the ground's softening; empty: the model's ground as it is.
   std::optional<double> longest_step;
+  ImplicitMinimiser minimiser = ImplicitMinimiser::kNewton;
 };
 
 class ImplicitIntegrator {

@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "dynamics/contact/ground_contact.hpp"
 #include "dynamics/contact/object_contact.hpp"
+#include "dynamics/force_kinds.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "model/model.hpp"
 
@@ -159,6 +160,34 @@ class PatternSink final : public StiffnessSink {
   bool missed_ = false;
 };
 
+// Adds the trace of each element's 3 × 3 blocks between free nodes, after the element's matrix is
+// made positive semi-definite, as a triplet over the free nodes.
+class TraceSink final : public StiffnessSink {
+ public:
+  TraceSink(const FreeDofs& dofs, std::vector<Eigen::Triplet<double>>& traces)
+      : dofs_(dofs), traces_(traces) {}
+
+  void prepare(int node_count, double* stiffness) const override {
+    prepare_element(node_count, Definiteness::kProjected, stiffness);
+  }
+
+  void add_prepared(const Index* nodes, int node_count, const double* stiffness) override {
+    for_each_block(dofs_, nodes, node_count, stiffness,
+                   [&](Index row_dof, Index col_dof, const double* columns, std::size_t stride) {
+                     const double trace =
+                         columns[0] + columns[stride + 1] + columns[2 * stride + 2];
+                     if (trace != 0.0) {
+                       traces_.emplace_back(row_dof / 3, col_dof / 3, trace);
+                     }
+                     return true;
+                   });
+  }
+
+ private:
+  const FreeDofs& dofs_;
+  std::vector<Eigen::Triplet<double>>& traces_;
+};
+
 // Hands every element of the kinds `switches` leaves on to `sink`.
 void add_elements(const Model& model, const State& state, const ForceSwitches& switches,
                   StiffnessSink& sink) {
@@ -223,6 +252,12 @@ const SparseMatrix& StiffnessAssembly::assemble(const Model& model, const State&
   add_elements(model, state, switches, sink);
   DINAM_CHECK(!sink.missed());
   return matrix_;
+}
+
+void add_block_traces(const Model& model, const State& state, const ForceSwitches& switches,
+                      const FreeDofs& dofs, std::vector<Eigen::Triplet<double>>& traces) {
+  TraceSink sink(dofs, traces);
+  add_elements(model, state, switches, sink);
 }
 
 }  // namespace dinam

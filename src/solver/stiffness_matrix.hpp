@@ -43,4 +43,14 @@ class StiffnessAssembly {
   SparseMatrix matrix_;
 };
 
+// K's rotation-invariant part over the free nodes: each element's matrix made positive
+// semi-definite, then each of its 3 × 3 blocks between free nodes a and b reduced to its trace,
+// added as the triplet (a, b) of a matrix over the free nodes (node i's index first_dof[i] / 3).
+// A bar's k n nᵀ gives k whichever way it points (projective dynamics' spring, k I); a spring of
+// an angle's k g gᵀ gives the Gram matrix k g_a·g_b of its gradient's blocks. The sum is positive
+// semi-definite, and the same after any rotation of the structure: the constant matrix of the
+// solver for stiff threads (solver/stiff_threads.hpp).
+void add_block_traces(const Model& model, const State& state, const ForceSwitches& switches,
+                      const FreeDofs& dofs, std::vector<Eigen::Triplet<double>>& traces);
+
 }  // namespace dinam
