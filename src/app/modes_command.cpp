@@ -97,9 +97,8 @@ void print_table(const std::vector<NaturalMode>& modes) {
   fmt::print("mode  frequency (Hz)  period (s)   mass share x      y      z\n");
   for (std::size_t m = 0; m < modes.size(); ++m) {
     const NaturalMode& mode = modes[m];
-    const std::string period = mode.frequency > 0.0
-                                   ? fmt::format("{:10.4g}", 1.0 / mode.frequency)
-                                   : "         -";
+    const std::string period =
+        mode.frequency > 0.0 ? fmt::format("{:10.4g}", 1.0 / mode.frequency) : "         -";
     const std::string frequency =
         mode.free                   ? fmt::format("{:>14}", "0 (free)")  // a rigid-body motion
         : mode.omega_squared >= 0.0 ? fmt::format("{:14.5g}", mode.frequency)

@@ -1,6 +1,7 @@
 #include "dynamics/axial_spring.hpp"
 
 #include "dynamics/axial_damper_implicit.hpp"
+#include "dynamics/bar_constraints.hpp"
 
 #include "dynamics/broken.hpp"
 #include "dynamics/force_kinds.hpp"
@@ -86,6 +87,9 @@ const SpringKind kAxialSprings{
     .broken = &State::bar_broken,
     .ns_per_item = 5.5,
     .ns_per_item_yielding = 6.6,
+    .constraint = {.held = [](const Model& model) { return model.bars_are_constraints(); },
+                   .project = project_bars,
+                   .finish = flow_bars},
 };
 
 // Nanoseconds per bar's damper on one thread (bench_force_costs; step_cost.hpp).
@@ -121,6 +125,9 @@ const ForceKind kAxialDampers{
                    model.any_bar_damping ? static_cast<double>(model.bar_count()) : 0.0,
                    kNsPerDamper);
         },
+    .constraint = {.held = [](const Model& model) { return model.bars_are_constraints(); },
+                   .project = nullptr,  // the bars' projection takes their dampers in
+                   .finish = nullptr},
 };
 
 }  // namespace dinam

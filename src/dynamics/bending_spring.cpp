@@ -56,6 +56,7 @@ const SpringKind kBendingSprings{
     .broken = &State::bend_broken,
     .ns_per_item = 14.5,
     .ns_per_item_yielding = 18.2,
+    .constraint = {},
 };
 
 }  // namespace dinam

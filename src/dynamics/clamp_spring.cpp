@@ -83,6 +83,7 @@ const SpringKind kClampSprings{
     .broken = &State::clamp_broken,
     .ns_per_item = 20.0,  // serial: one loop in clamp order
     .ns_per_item_yielding = 20.0,
+    .constraint = {},
 };
 
 }  // namespace dinam

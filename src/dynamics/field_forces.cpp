@@ -57,6 +57,7 @@ const ForceKind kGravity{
     .prepare_state = nullptr,
     .state_bytes = nullptr,
     .add_cost = nullptr,
+    .constraint = {},
 };
 
 // Nanoseconds per node a field acts on, on one thread (bench_force_costs; step_cost.hpp).
@@ -92,6 +93,7 @@ const ForceKind kFields{
           }
           sink.add("fields", nodes, kNsPerFieldNode);
         },
+    .constraint = {},
 };
 
 }  // namespace dinam

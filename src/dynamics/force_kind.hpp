@@ -126,10 +126,15 @@ struct ForceKind {
   // Its share of a step's time (step_cost.hpp), per item it loops over; null where the nodes'
   // own cost covers it.
   void (*add_cost)(const Model&, StepCostSink&);
+  // How `integrator: xpbd` takes it: as forces (nulls), or held as a constraint.
+  ConstraintHold constraint;
 
   const char* name() const { return spring != nullptr ? spring->name() : label; }
   bool acts_in(const Model& model, const ForceSwitches& switches) const {
     return switches.*switched && (present == nullptr || present(model));
+  }
+  bool held_as_constraint(const Model& model) const {
+    return constraint.held != nullptr && constraint.held(model);
   }
 };
 

@@ -58,6 +58,22 @@ inline constexpr ForceKind kSpringForces{
           sink.add(kSpring.name(), static_cast<double>(kSpring.count(model)),
                    kSpring.yields(model) ? kSpring.ns_per_item_yielding : kSpring.ns_per_item);
         },
+    // A spring kind held as a constraint has its projection (spring_kind.hpp).
+    .constraint = {.held =
+                       [](const Model& model) {
+                         return kSpring.constraint.held != nullptr &&
+                                kSpring.constraint.held(model);
+                       },
+                   .project =
+                       [](const Model& model, double h, int sweep, State& state) {
+                         kSpring.constraint.project(model, h, sweep, state);
+                       },
+                   .finish =
+                       [](const Model& model, double h, State& state) {
+                         if (kSpring.constraint.finish != nullptr) {
+                           kSpring.constraint.finish(model, h, state);
+                         }
+                       }},
 };
 
 inline constexpr std::array<const ForceKind*, 11> kForceKinds{

@@ -49,6 +49,7 @@ const ForceKind kGlobalDamping{
                    model.global_damping != 0.0 ? static_cast<double>(model.node_count()) : 0.0,
                    kNsPerDampedNode);
         },
+    .constraint = {},
 };
 
 }  // namespace dinam

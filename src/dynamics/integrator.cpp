@@ -149,6 +149,48 @@ void add_forces(const Worker& worker, const Model& model, const ForceSwitches& s
   }
 }
 
+// Whether some kind of force is held as a constraint (`integrator: xpbd`).
+bool holds_constraints(const Model& model) {
+  return std::any_of(kForceKinds.begin(), kForceKinds.end(),
+                     [&](const ForceKind* kind) { return kind->held_as_constraint(model); });
+}
+
+// What the projection of the kinds held as constraints took out of the motion's energy around
+// t_n, J. Its forces act at t_n as any force in the step (v_{n+½} = v_{n−½} + h a_n):
+// F = M (x_{n+1} − x̃_{n+1}) / h² (ledger.v_whole holds x̃_{n+1}), and they stand for springs. A
+// spring's work booked as every force's, h F·v_n with v_n = (x_{n+1} − x_{n−1}) / 2h, is what
+// its stored energy loses from x_{n−1} to x_{n+1}, halved, to second order: what the two miss by
+// is the scheme's.
+double energy_projected_out(const Model& model, double dt, State& state) {
+  EnergyWorkspace& ledger = state.energy_workspace;
+  const std::vector<Vec3>& before = ledger.v_whole;  // x̃_{n+1}
+  double work = 0.0;
+  for (Index i = 0; i < model.node_count(); ++i) {
+    const Vec3 v_whole = 0.5 * (state.velocity[i] + state.v_next[i]);
+    work += (model.node_mass[i] / dt) * (state.x_next[i] - before[i]).dot(v_whole);
+  }
+  auto held_energy = [&] {
+    double energy = 0.0;
+    for (const ForceKind* kind : kForceKinds) {
+      if (kind->spring != nullptr && kind->held_as_constraint(model)) {
+        energy += kind->spring->energy(model, state, SpringEnergy::kStored);
+      }
+    }
+    return energy;
+  };
+  if (std::isnan(ledger.held_stored_now)) {  // the first step: x_{−1} taken as x_0
+    ledger.held_stored_now = held_energy();
+    ledger.held_stored_before = ledger.held_stored_now;
+  }
+  std::swap(state.x, state.x_next);
+  const double stored_next = held_energy();
+  std::swap(state.x, state.x_next);
+  const double change = 0.5 * (stored_next - ledger.held_stored_before);
+  ledger.held_stored_before = ledger.held_stored_now;
+  ledger.held_stored_now = stored_next;
+  return -(work + change);
+}
+
 // Whether some kind that `switches` leaves on adds its forces after the team's job.
 bool adds_forces_after_team(const Model& model, const ForceSwitches& switches) {
   return std::any_of(kForceKinds.begin(), kForceKinds.end(), [&](const ForceKind* kind) {
@@ -217,6 +259,50 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
     set_driven_velocities(model, static_cast<double>(state.step + 1) * dt, dt, state.x,
                           state.v_next, [&](Index i) { return worker.owns(i); });
   }
+  // 2b. The kinds held as constraints (`integrator: xpbd`): the positions the velocities would
+  //     give, projected by the leader alone (the same bits on any thread count), kind by kind in
+  //     each sweep; the velocities taken from where they end.
+  double projected_out = 0.0;  // J, what the projection took out, while the energy is tracked
+  if (holds_constraints(model)) {
+    member.barrier();
+    on_leader(member, [&] {
+      for (Index i = 0; i < n; ++i) {
+        state.x_next[i] = state.x[i] + dt * state.v_next[i];
+      }
+      if (ledger.enabled) {
+        ledger.v_whole = state.x_next;  // x̃_{n+1}, kept to weigh the projection's impulses
+      }
+      for (int sweep = 0; sweep < kConstraintSweeps; ++sweep) {
+        for (const ForceKind* kind : kForceKinds) {
+          if (kind->constraint.project != nullptr && kind->held_as_constraint(model)) {
+            kind->constraint.project(model, dt, sweep, state);
+          }
+        }
+      }
+      for (const ForceKind* kind : kForceKinds) {
+        if (kind->constraint.finish != nullptr && kind->held_as_constraint(model)) {
+          kind->constraint.finish(model, dt, state);
+        }
+      }
+      for (Index i = 0; i < n; ++i) {
+        if (!model.pinned(i)) {
+          state.v_next[i] = (state.x_next[i] - state.x[i]) / dt;
+        }
+      }
+      if (ledger.enabled) {
+        // Less what the held springs' flow dissipated, which the ledger books as their own
+        // (stage 3).
+        projected_out = energy_projected_out(model, dt, state);
+        for (const ForceKind* kind : kForceKinds) {
+          if (kind->spring != nullptr && kind->held_as_constraint(model)) {
+            for (const double flow : ledger.*kind->spring->flow) {
+              projected_out -= flow;
+            }
+          }
+        }
+      }
+    });
+  }
   // 3. Energy at t_n (velocities averaged across it), and the work of the forces around t_n:
   //    W_n = Δt F_n · v_n covers [t_n − Δt/2, t_n + Δt/2], so the report at t_n counts half of it.
   if (ledger.enabled) {
@@ -230,8 +316,10 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
       book_ledger_works(ledger, dt, step_work);
       step_work.support_work = support_work(model, state.force, ledger.v_whole, dt);
       state.energy.add_works(step_work, 0.5);
+      state.energy.numerical_dissipation += 0.5 * projected_out;
       ledger.last = energy_report(model, state, ledger.v_whole);
       state.energy.add_works(step_work, 0.5);
+      state.energy.numerical_dissipation += 0.5 * projected_out;
       if (!std::isfinite(ledger.last.total)) {
         diverged.store(true, std::memory_order_relaxed);
       }
@@ -315,6 +403,7 @@ State make_state(const Model& model, bool track_energy) {
   state.force.assign(n, Vec3::Zero());
   state.x_next.assign(n, Vec3::Zero());
   state.v_next.assign(n, Vec3::Zero());
+  state.bar_lambda.assign(model.bars_are_constraints() ? model.bar_count() : 0, 0.0);
   // Plastic sets only for the kinds that can yield (model.hpp).
   for (const SpringKind* kind : kSpringKinds) {
     (state.*kind->plastic_set).assign(kind->yields(model) ? kind->count(model) : 0, 0.0);
@@ -341,9 +430,18 @@ State make_state(const Model& model, bool track_energy) {
   return state;
 }
 
+ForceSwitches stepped_switches(const Model& model, ForceSwitches switches) {
+  for (const ForceKind* kind : kForceKinds) {
+    if (kind->held_as_constraint(model)) {
+      switches.*kind->switched = false;
+    }
+  }
+  return switches;
+}
+
 void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches, State& state) {
   state.dt = dt;
-  compute_forces(model, switches, state, false);
+  compute_forces(model, stepped_switches(model, switches), state, false);
   if (state.energy_workspace.enabled) {  // after the forces: contact between objects finds its
                                          // pairs there
     state.energy_workspace.last = energy_report(model, state, state.velocity);
@@ -381,8 +479,10 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
   advance_steps(model, dt, switches, state, 1, options);
 }
 
-void advance_steps(const Model& model, double dt, const ForceSwitches& switches, State& state,
+void advance_steps(const Model& model, double dt, const ForceSwitches& given, State& state,
                    std::int64_t steps, const StepOptions& options) {
+  const ForceSwitches switches = stepped_switches(model, given);
+  state.dt = dt;
   const bool alone = !step_runs_in_parallel(model);
   const WorkSplit* split = share_work(model, state);
   std::atomic<bool> diverged{false};

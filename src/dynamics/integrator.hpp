@@ -18,6 +18,11 @@ struct Model;
 // stepping/time_step.hpp makes the state at t = 0, settled as the scene asks).
 State make_state(const Model& model, bool track_energy);
 
+// The forces a step of `model` finds, of those `switches` leaves on: where the bars are
+// constraints (`integrator: xpbd`, bar_constraints.hpp), all but their axial springs and dampers,
+// which the step's projection holds instead.
+ForceSwitches stepped_switches(const Model& model, ForceSwitches switches);
+
 // Starts leapfrog from rest or from v_0 at the state's positions: the forces at (x_0, v_0) into
 // state.force, then v_{−½} = v_0 − ½Δt a_0.
 void start_leapfrog(const Model& model, double dt, const ForceSwitches& switches, State& state);

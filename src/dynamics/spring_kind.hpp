@@ -25,6 +25,27 @@ namespace dinam {
 // every iterate).
 enum class SpringEnergy { kStored, kWithFlow };
 
+// How the solver for stiff threads (`integrator: xpbd`) takes a kind of force: held as a
+// constraint, its forces are left out of the explicit half of each step (stepped_switches,
+// integrator.hpp), and its projection runs after that half, kConstraintSweeps Gauss–Seidel sweeps
+// a step (XPBD: bar_constraints.hpp), which the velocities then follow.
+struct ConstraintHold {
+  bool (*held)(const Model&);  // whether the model holds the kind so; null: never
+  // Sweep number `sweep` (from 0: the step's first, which starts its multipliers afresh) of its
+  // projection of state.x_next (x̃_{n+1} in, x_{n+1} out) from state.x (x_n), for a step of h, on
+  // one thread; null where another kind's projection takes it in (the bars' dampers, the bars').
+  void (*project)(const Model&, double h, int sweep, State&);
+  // After the step's last sweep: what flowed plastically moved into the plastic sets (and its
+  // work into the ledger's flow, while the energy is tracked); null where nothing can.
+  void (*finish)(const Model&, double h, State&);
+};
+
+// Sweeps of the projection a step: each costs a tenth of a step's forces on a cloth, and the
+// bars' stretch left after them is a share of what one step's loads would stretch them by. Four
+// keep the windy flag's mean within 1.1 cm of central differences' over frames 20–120 (2: 1.3,
+// 3: 1.8, 6: 1.0; bench/notes/stiff-threads.md).
+inline constexpr int kConstraintSweeps = 4;
+
 struct SpringKind {
   // The model stage's half (model/model_spring_kind.hpp): its name, arrays, stability bound and
   // tearing.
@@ -44,6 +65,7 @@ struct SpringKind {
   // changes.
   double ns_per_item;
   double ns_per_item_yielding;
+  ConstraintHold constraint;  // for `integrator: xpbd`
 
   const char* name() const { return built->name; }  // "bending springs"
   Index count(const Model& model) const { return built->count(model); }

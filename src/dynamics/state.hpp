@@ -2,6 +2,7 @@
 // Everything that changes during a run. The model it belongs to is passed beside it.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,10 @@ struct EnergyWorkspace {
   std::vector<double> torsion_flow;  // (n_torsions)
   std::vector<double> clamp_flow;    // (n_clamps)
   EnergyReport last;                 // at the last step taken
+  // J, what the kinds held as constraints store (`integrator: xpbd`) at x_{n−1} and x_n, for the
+  // projection's share of the balance (integrator.cpp); NaN before the first step.
+  double held_stored_before = std::numeric_limits<double>::quiet_NaN();
+  double held_stored_now = std::numeric_limits<double>::quiet_NaN();
 
   // The five per-kind force arrays, to clear or size them together.
   std::array<std::vector<Vec3>*, 5> force_parts() {
@@ -124,6 +129,9 @@ struct State {
   // every thread has read the old ones (so the threads meet once a step, not twice).
   std::vector<Vec3> x_next;
   std::vector<Vec3> v_next;
+  // (n_bars, or 0 unless the bars are constraints) N·s², scratch: the step's XPBD multiplier of
+  // each bar (dynamics/bar_constraints.hpp), λ/h² its tension.
+  std::vector<double> bar_lambda;
 
   std::vector<double> bar_plastic_set;      // (n_bars) m
   std::vector<double> bend_plastic_set;     // (n_bends) rad

@@ -39,6 +39,7 @@ void for_each_state_array(Visit&& visit, States&... states) {
   visit(std::string_view("force"), kScratch, states.force...);
   visit(std::string_view("x_next"), kScratch, states.x_next...);
   visit(std::string_view("v_next"), kScratch, states.v_next...);
+  visit(std::string_view("bar_lambda"), kScratch, states.bar_lambda...);
 
   visit(std::string_view("bar_plastic_set"), kHistory, states.bar_plastic_set...);
   visit(std::string_view("bend_plastic_set"), kHistory, states.bend_plastic_set...);
@@ -90,6 +91,8 @@ void for_each_state_array(Visit&& visit, States&... states) {
   visit(std::string_view("object_contact.triangle_boxes"), kScratch,
         states.object_contact.triangle_boxes...);
   visit(std::string_view("object_contact.bar_used"), kScratch, states.object_contact.bar_used...);
+  visit(std::string_view("object_contact.object_bars_look"), kScratch,
+        states.object_contact.object_bars_look...);
   visit(std::string_view("object_contact.triangle_used"), kScratch,
         states.object_contact.triangle_used...);
 

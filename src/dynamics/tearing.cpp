@@ -17,6 +17,17 @@ double elastic_energy(const Model& model, const State& state) {
 }
 
 bool past_its_limit(const Model& model, const State& state, Index b) {
+  if (model.bars_are_constraints()) {
+    // Held as a constraint (bar_constraints.hpp): its tension is the last step's projection's,
+    // −λ/h², and its strain what that tension stretches its material by, T / (E A).
+    if (state.dt <= 0.0 || state.bar_lambda.empty()) {
+      return false;
+    }
+    const double tension = -state.bar_lambda[b] / (state.dt * state.dt);
+    return tension >= model.bar_breaking_force[b] || tension >= model.bar_breaking_strain[b] *
+                                                                    model.bar_axial_stiffness[b] *
+                                                                    model.bar_rest_length[b];
+  }
   const Index n0 = model.bar_nodes[2 * b];
   const Index n1 = model.bar_nodes[2 * b + 1];
   const double length = (state.x[n1] - state.x[n0]).norm();

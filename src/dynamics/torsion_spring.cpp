@@ -57,6 +57,7 @@ const SpringKind kTorsionSprings{
     .broken = &State::torsion_broken,
     .ns_per_item = 23.2,
     .ns_per_item_yielding = 25.0,
+    .constraint = {},
 };
 
 }  // namespace dinam

@@ -259,6 +259,7 @@ const ForceKind kWind{
           sink.add("wind on bars", static_cast<double>(model.wind.bars.size()),
                    turbulent ? kNsPerWindBarTurbulent : kNsPerWindBar);
         },
+    .constraint = {},
 };
 
 }  // namespace dinam

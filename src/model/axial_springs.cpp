@@ -11,6 +11,9 @@ namespace {
 
 // g = (−n, n): the exact blocks k n nᵀ, and the coupling of the two ends when both are free.
 void add_axial_frequency_terms(const Model& model, GershgorinSums& sums) {
+  if (model.bars_are_constraints()) {
+    return;  // projected, not stepped: no frequency of theirs bounds the step
+  }
   const auto& x = model.node_initial_x;
   for (Index b = 0; b < model.bar_count(); ++b) {
     const Index n0 = model.bar_nodes[2 * b];

@@ -93,7 +93,10 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
 double max_damping_rate_bound(const Model& model) {
   const Index n = model.node_count();
   std::vector<double> rate(n, model.global_damping);  // α m / m
-  for (Index b = 0; b < static_cast<Index>(model.bar_damping.size()); ++b) {
+  // Bars held as constraints take their dampers into their projection.
+  const Index dampers =
+      model.bars_are_constraints() ? 0 : static_cast<Index>(model.bar_damping.size());
+  for (Index b = 0; b < dampers; ++b) {
     const double c = model.bar_damping[b];
     if (c == 0.0) {
       continue;

@@ -254,6 +254,9 @@ struct Model {
   Index clamp_count() const { return static_cast<Index>(clamp_stiffness.size()); }
   Index face_count() const { return static_cast<Index>(face_offsets.size()) - 1; }
   bool pinned(Index node) const { return node_inv_mass[node] == 0.0; }
+  // Whether the bars are held as constraints (`integrator: xpbd`, dynamics/bar_constraints.hpp)
+  // rather than by their axial springs: then they bound no step.
+  bool bars_are_constraints() const { return integrator == IntegratorKind::kXpbd; }
   double total_mass() const;
 };
 

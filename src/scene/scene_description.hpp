@@ -332,9 +332,11 @@ struct ContactDesc {
 enum class SettleMethod { kNewton, kRelax };
 
 // How the motion is integrated in time (`integrator`): central differences, explicit, whose step
-// the stiffest bar bounds; or backward Euler, implicit (solver/implicit_integrator.hpp), whose
-// step is chosen for accuracy.
-enum class IntegratorKind { kCentralDifference, kImplicit };
+// the stiffest bar bounds; backward Euler or BDF2, implicit (solver/implicit_integrator.hpp), whose
+// step is chosen for accuracy; or central differences with the bars held as constraints
+// (dynamics/bar_constraints.hpp: XPBD), whose step the softer springs bound: the solver for
+// stiff threads.
+enum class IntegratorKind { kCentralDifference, kImplicit, kXpbd };
 
 // The implicit integrator's steps per frame where `timestep` does not say.
 inline constexpr int kImplicitStepsPerFrame = 4;
@@ -429,7 +431,7 @@ struct SceneDescription {
   // Whether the integrator's step is bounded by the stiffest springs (central differences'), so
   // that mass scaling can lengthen it; the implicit schemes' is not.
   bool step_bounded_by_stiffness() const {
-    return integrator == IntegratorKind::kCentralDifference;
+    return integrator != IntegratorKind::kImplicit;
   }
 };
 

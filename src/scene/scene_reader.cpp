@@ -312,11 +312,15 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
     scene.integrator = IntegratorKind::kImplicit;
     scene.implicit_scheme =
         integrator == "implicit" ? ImplicitScheme::kBackwardEuler : ImplicitScheme::kBdf2;
+  } else if (integrator == "xpbd") {
+    scene.integrator = IntegratorKind::kXpbd;
   } else if (integrator != "central_difference") {
     throw_user_error(scene.integrator_loc,
                      "'integrator' must be central_difference (explicit, the paper's method), "
-                     "implicit (backward Euler, steps as long as a frame) or implicit_bdf2 (the "
-                     "same steps, second order, less numerical damping); got '{}'",
+                     "xpbd (the same with the bars held as constraints: cloth, rope and cable at "
+                     "a tenth of the steps), implicit (backward Euler, steps as long as a frame) "
+                     "or implicit_bdf2 (the same steps, second order, less numerical damping); "
+                     "got '{}'",
                      integrator);
   }
   scene.gravity = map.vec3("gravity", scene.gravity);

@@ -71,8 +71,10 @@ struct StepperKind {
   std::vector<ModeDamping> (*numerical_damping)(const TimeStep&);
 };
 
-// Central differences (the paper's method) and the implicit schemes (backward Euler, BDF2).
+// Central differences (the paper's method), the same with the bars held as constraints (XPBD: the
+// solver for stiff threads) and the implicit schemes (backward Euler, BDF2).
 extern const StepperKind kCentralDifferences;
+extern const StepperKind kBarConstraints;
 extern const StepperKind kImplicitSchemes;
 
 // The kind of the model's integrator (model.integrator).

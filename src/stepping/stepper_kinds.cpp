@@ -11,6 +11,8 @@ const StepperKind& stepper_kind(const Model& model) {
   switch (model.integrator) {
     case IntegratorKind::kImplicit:
       return kImplicitSchemes;
+    case IntegratorKind::kXpbd:
+      return kBarConstraints;
     case IntegratorKind::kCentralDifference:
       break;
   }
@@ -18,8 +20,9 @@ const StepperKind& stepper_kind(const Model& model) {
 }
 
 void use_stepper(SceneDescription& scene, const StepperKind& kind) {
-  scene.integrator =
-      &kind == &kImplicitSchemes ? IntegratorKind::kImplicit : IntegratorKind::kCentralDifference;
+  scene.integrator = &kind == &kImplicitSchemes  ? IntegratorKind::kImplicit
+                     : &kind == &kBarConstraints ? IntegratorKind::kXpbd
+                                                 : IntegratorKind::kCentralDifference;
 }
 
 TimeStep choose_timestep(const Model& model, std::optional<double> requested, double fps,

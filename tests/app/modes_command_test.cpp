@@ -65,8 +65,8 @@ std::vector<PrintedMode> modes_of(const test::TemporaryFolder& folder, const std
   const auto scene = folder.path() / "scene.yaml";
   std::ofstream(scene) << yaml;
   const test::CommandResult modes =
-      test::run_dinam({"modes", scene.string(), "-o", (folder.path() / "modes").string(),
-                       "--count", std::to_string(count)});
+      test::run_dinam({"modes", scene.string(), "-o", (folder.path() / "modes").string(), "--count",
+                       std::to_string(count)});
   EXPECT_EQ(modes.exit_code, 0) << modes.output;
   std::vector<PrintedMode> rows = printed_table(modes.output);
   EXPECT_EQ(rows.size(), static_cast<std::size_t>(count)) << modes.output;
@@ -104,9 +104,9 @@ objects:
 // base is pinned at four corners.
 TEST(ModesCommand, TheShippedTowerPrintsItsTwoSways) {
   const test::TemporaryFolder folder("modes");
-  const test::CommandResult modes =
-      test::run_dinam({"modes", (std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/shaken_tower.yaml").string(), "-o",
-                       (folder.path() / "modes").string(), "--count", "3"});
+  const test::CommandResult modes = test::run_dinam(
+      {"modes", (std::filesystem::path(DINAM_SOURCE_DIR) / "scenes/shaken_tower.yaml").string(),
+       "-o", (folder.path() / "modes").string(), "--count", "3"});
   ASSERT_EQ(modes.exit_code, 0) << modes.output;
   const std::vector<PrintedMode> rows = printed_table(modes.output);
   ASSERT_EQ(rows.size(), 3u) << modes.output;

@@ -68,6 +68,31 @@ void file_boxes(const Model& model, State& state) {
   work.triangle_grid.build(work.triangle_boxes, work.triangle_used, widest_point);
 }
 
+// Which of two objects' bars look for the pairs between them: the object of fewer bars (of the
+// lower id, where they have as many), so that a cloth over a pinned collider is searched from
+// the collider's few bars, not each of the cloth's bars through its own neighbours.
+bool bars_look_for(const Model& model, Index object, Index other) {
+  const Index bars = model.objects[object].bar_count;
+  const Index other_bars = model.objects[other].bar_count;
+  return bars < other_bars || (bars == other_bars && object < other);
+}
+
+// Which objects' bars look for pairs at all (ObjectContactWorkspace::object_bars_look), once.
+void note_looking_objects(const Model& model, ObjectContactWorkspace& work) {
+  const auto objects = static_cast<Index>(model.objects.size());
+  if (static_cast<Index>(work.object_bars_look.size()) == objects) {
+    return;
+  }
+  work.object_bars_look.assign(static_cast<std::size_t>(objects), 0);
+  for (Index a = 0; a < objects; ++a) {
+    for (Index b = 0; b < objects; ++b) {
+      if (objects_may_touch(model.contact, a, b) && (a == b || bars_look_for(model, a, b))) {
+        work.object_bars_look[static_cast<std::size_t>(a)] = 1;
+      }
+    }
+  }
+}
+
 // The narrowest skin, as a fraction of the widest (the largest contact radius).
 constexpr double kNarrowestSkin = 0.05;
 
@@ -110,10 +135,14 @@ void find_candidates(const Model& model, State& state) {
   work.skin = next_skin(model, state);
   const double skin = work.skin;
   file_boxes(model, state);
+  note_looking_objects(model, work);
   work.candidates.clear();
   auto search = [&](Index count, const auto& gather) {
     gather_in_parallel(count, work.thread_candidates, work.candidates, gather);
   };
+  // Each pair of bars is looked for from one of them: within an object from the lower id, between
+  // two objects from the object whose bars look for the other's (bars_look_for); it is keyed
+  // and laid out lower bar first either way.
   search(static_cast<Index>(contact.bars.size()), [&](Index k, auto& list) {
     const Index a = contact.bars[k];
     if (work.bar_used[a] == 0) {
@@ -122,19 +151,28 @@ void find_candidates(const Model& model, State& state) {
     const Index a0 = model.bar_nodes[2 * a];
     const Index a1 = model.bar_nodes[2 * a + 1];
     const Index object_a = model.node_object[a0];
+    if (work.object_bars_look[object_a] == 0) {
+      return;
+    }
     const bool a_free = !model.pinned(a0) || !model.pinned(a1);
     work.bar_grid.visit_overlapping(work.bar_boxes[a], [&](Index b) {
       const Index b0 = model.bar_nodes[2 * b];
       const Index b1 = model.bar_nodes[2 * b + 1];
-      if (b <= a || a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1 ||
-          !objects_may_touch(contact, object_a, model.node_object[b0]) ||
+      const Index object_b = model.node_object[b0];
+      const bool looked_for = object_a == object_b
+                                  ? b > a && contact.object_self[object_a] != 0
+                                  : objects_may_touch(contact, object_a, object_b) &&
+                                        bars_look_for(model, object_a, object_b);
+      if (!looked_for || a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1 ||
           (!a_free && model.pinned(b0) && model.pinned(b1)) ||
-          (object_a == model.node_object[b0] &&
-           (contact.joined(a0, b0) || contact.joined(a0, b1) || contact.joined(a1, b0) ||
-            contact.joined(a1, b1)))) {
+          (object_a == object_b && (contact.joined(a0, b0) || contact.joined(a0, b1) ||
+                                    contact.joined(a1, b0) || contact.joined(a1, b1)))) {
         return;
       }
-      add_if_near(contact, skin, x, {pair_key(kBarBarContact, a, b), {a0, a1, b0, b1}}, list);
+      const ContactCandidate pair =
+          a < b ? ContactCandidate{pair_key(kBarBarContact, a, b), {a0, a1, b0, b1}}
+                : ContactCandidate{pair_key(kBarBarContact, b, a), {b0, b1, a0, a1}};
+      add_if_near(contact, skin, x, pair, list);
     });
   });
   search(static_cast<Index>(contact.points.size()), [&](Index k, auto& list) {
@@ -195,6 +233,7 @@ void prepare_object_contact(const Model& model, State& state) {
   work.triangle_boxes.resize(triangles);
   work.triangle_used.assign(triangles, 0);
   work.reference_x.resize(static_cast<std::size_t>(model.node_count()));
+  note_looking_objects(model, work);
 }
 
 }  // namespace dinam

@@ -244,6 +244,7 @@ const ForceKind kGroundContact{
           sink.add("ground", model.ground.enabled ? static_cast<double>(model.node_count()) : 0.0,
                    kNsPerGroundNode);
         },
+    .constraint = {},
 };
 
 }  // namespace dinam

@@ -348,7 +348,8 @@ const ForceKind kObjectContact{
       }
       const std::uint64_t items = model.contact.bars.size() + model.contact.triangle_face.size();
       return items * (sizeof(Box) + sizeof(std::uint8_t)) +
-             static_cast<std::uint64_t>(model.node_count()) * sizeof(Vec3);
+             static_cast<std::uint64_t>(model.node_count()) * sizeof(Vec3) +
+             model.objects.size() * sizeof(std::uint8_t);  // which objects' bars look for pairs
     },
     .add_cost =
         [](const Model& model, StepCostSink& sink) {
@@ -358,6 +359,7 @@ const ForceKind kObjectContact{
             sink.add_unshared("a surface's contact with itself", pressed, kNsPerPressed);
           }
         },
+    .constraint = {},
 };
 
 }  // namespace dinam

@@ -68,6 +68,9 @@ struct ObjectContactWorkspace {
   std::vector<Box> bar_boxes;               // (n_bars) each bar's capsule box
   std::vector<Box> triangle_boxes;          // (n_triangles)
   std::vector<std::uint8_t> bar_used;       // (n_bars) 1 for an unbroken bar with contact
+  // (n_objects) 1 where the object's bars look for pairs at all: it touches itself, or it is the
+  // side that looks (bars_look_for, contact_candidates.cpp) for another object it may touch.
+  std::vector<std::uint8_t> object_bars_look;
   std::vector<std::uint8_t> triangle_used;  // (n_triangles) 1 for a triangle of an unbroken face
   ContactGrid bar_grid;
   ContactGrid triangle_grid;
