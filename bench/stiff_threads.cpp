@@ -155,6 +155,9 @@ struct Run {
 
 Run run_method(const BenchScene& bench, const Method& method, double budget) {
   SceneDescription scene = bench.scene;
+  if (method.integrator != IntegratorKind::kCentralDifference) {
+    scene.timestep.reset();  // each at its own automatic step; central differences at the scene's
+  }
   scene.integrator = method.integrator;
   scene.implicit_scheme = method.scheme;
   const Model model = build_model(scene);

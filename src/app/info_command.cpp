@@ -75,8 +75,8 @@ struct RunFigures {
 void print_integrator_choice(const IntegratorChoice& choice) {
   const ImplicitStepCost& step = choice.implicit.implicit;
   fmt::print(
-      "integrators      central_difference: {} steps{}, about {}; implicit: {} steps ({}), about "
-      "{} "
+      "integrators      central_difference: {} steps{}, about {}; xpbd: {} steps, about {}; "
+      "implicit: {} steps ({}), about {} "
       "at {:g} Newton iterations, {:g} iterations of their solves "
       "and {:g} factorisations a step, as {} ({:.3g} ms a factorisation, of a factor of {:.3g} "
       "nonzeros for {:.0f} unknowns; bench/notes/implicit-integrator.md, \"Which integrator\")\n",
@@ -84,7 +84,8 @@ void print_integrator_choice(const IntegratorChoice& choice) {
       choice.central_difference_unscaled
           ? " (without the mass scaling that would lengthen them: no memory for its model)"
           : "",
-      duration_text(choice.central_difference.seconds), choice.implicit.steps,
+      duration_text(choice.central_difference.seconds), choice.xpbd.steps,
+      duration_text(choice.xpbd.seconds), choice.implicit.steps,
       choice.contact_envelope
           ? "at most: contact between objects moves no node more than half its smallest radius "
             "a step, and this counts a fall through the scene's height for the whole run"
@@ -158,6 +159,8 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"measured_seconds_per_step", run.measured.seconds_per_step},
       {"central_difference_steps", run.choice.central_difference.steps},
       {"central_difference_estimated_run_s", run.choice.central_difference.seconds},
+      {"xpbd_steps", run.choice.xpbd.steps},
+      {"xpbd_estimated_run_s", run.choice.xpbd.seconds},
       {"implicit_steps", run.choice.implicit.steps},
       {"implicit_estimated_run_s", run.choice.implicit.seconds},
       {"recommended_integrator", recommended_key(run.choice)},

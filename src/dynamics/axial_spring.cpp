@@ -67,6 +67,12 @@ void add_axial_damper_forces(ForceContext& context) {
 }
 
 double axial_spring_energy(const Model& model, const State& state, SpringEnergy which) {
+  if (which == SpringEnergy::kStored && model.bars_are_constraints()) {
+    // Held as constraints, the paper's rigid bars: they store nothing. Their length's share
+    // beyond the rest is what the sweeps leave unsolved, no spring's; the work their projection
+    // does is booked as numerical dissipation (integrator.cpp).
+    return 0.0;
+  }
   return sum_over_intact(state.bar_broken, model.bar_count(), [&](Index b) {
     const auto r = axial_spring(
         state.x[model.bar_nodes[2 * b]], state.x[model.bar_nodes[2 * b + 1]],
@@ -87,9 +93,15 @@ const SpringKind kAxialSprings{
     .broken = &State::bar_broken,
     .ns_per_item = 5.5,
     .ns_per_item_yielding = 6.6,
-    .constraint = {.held = [](const Model& model) { return model.bars_are_constraints(); },
+    .constraint = {.held = true,
                    .project = project_bars,
-                   .finish = flow_bars},
+                   .finish = flow_bars,
+                   .add_cost =
+                       [](const Model& model, StepCostSink& sink) {
+                         sink.add_unshared("the bars' projection",
+                                           kConstraintSweeps * static_cast<double>(model.bar_count()),
+                                           kNsPerBarProjection);
+                       }},
 };
 
 // Nanoseconds per bar's damper on one thread (bench_force_costs; step_cost.hpp).
@@ -125,9 +137,10 @@ const ForceKind kAxialDampers{
                    model.any_bar_damping ? static_cast<double>(model.bar_count()) : 0.0,
                    kNsPerDamper);
         },
-    .constraint = {.held = [](const Model& model) { return model.bars_are_constraints(); },
+    .constraint = {.held = true,
                    .project = nullptr,  // the bars' projection takes their dampers in
-                   .finish = nullptr},
+                   .finish = nullptr,
+                   .add_cost = nullptr},
 };
 
 }  // namespace dinam

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "dynamics/spring_kind.hpp"
 #include "dynamics/state.hpp"
@@ -10,39 +12,58 @@
 namespace dinam {
 namespace {
 
-// Draws bar b towards its rest length (the header's Δλ), its tension held within its yield force.
-void project_bar(const Model& model, double h, Index b, State& state) {
-  const double k = model.bar_axial_stiffness[b];
-  if (k <= 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
+// Each bar's record for steps of h (BarProjection), in the model's sweep order.
+void pack_bars(const Model& model, double h, State& state) {
+  for (Index place = 0; place < model.bar_count(); ++place) {
+    const Index b = model.bar_sweep_order[place];
+    BarProjection& bar = state.bar_projection[place];
+    bar.bar = b;
+    bar.i = model.bar_nodes[2 * b];
+    bar.j = model.bar_nodes[2 * b + 1];
+    bar.wi = model.node_inv_mass[bar.i];
+    bar.wj = model.node_inv_mass[bar.j];
+    bar.rest = model.bar_rest_length[b];
+    const double k = model.bar_axial_stiffness[b];
+    bar.compliance = 0.0;
+    bar.gamma = 0.0;
+    bar.denominator = 0.0;
+    if (k <= 0.0 || bar.wi + bar.wj == 0.0) {
+      continue;  // no constraint: a sheet's shared side, or held at both ends
+    }
+    bar.compliance = 1.0 / (k * h * h);
+    bar.gamma = model.bar_damping.empty() ? 0.0 : model.bar_damping[b] / (k * h);
+    bar.denominator = 1.0 / ((1.0 + bar.gamma) * (bar.wi + bar.wj) + bar.compliance);
+  }
+  state.bar_projection_step = h;
+}
+
+// Draws a bar towards its rest length (the header's Δλ), its tension held within its yield force.
+void project_bar(const Model& model, double h, const BarProjection& bar, State& state) {
+  const Index b = bar.bar;
+  if (bar.compliance == 0.0 || (!state.bar_broken.empty() && state.bar_broken[b] != 0)) {
     return;
   }
-  const Index i = model.bar_nodes[2 * b];
-  const Index j = model.bar_nodes[2 * b + 1];
-  const double wi = model.node_inv_mass[i];
-  const double wj = model.node_inv_mass[j];
   std::vector<Vec3>& x = state.x_next;
-  const Vec3 d = x[j] - x[i];
+  const Vec3 d = x[bar.j] - x[bar.i];
   const double length = d.norm();
-  if (wi + wj == 0.0 || length == 0.0) {
-    return;  // held at both ends, or no direction to draw it along
+  if (length == 0.0) {
+    return;  // no direction to draw it along
   }
-  const Vec3 n = d / length;
-  const double compliance = 1.0 / (k * h * h);  // α̃
-  const double gamma = model.bar_damping.empty() ? 0.0 : model.bar_damping[b] / (k * h);
-  const double stretch =
-      length - model.bar_rest_length[b] - plastic_set_of(state.bar_plastic_set, b);  // C
-  const double moved = n.dot((x[j] - state.x[j]) - (x[i] - state.x[i]));  // ∇C·(x − x_n)
+  const Vec3 n = d * (1.0 / length);
+  const double stretch = length - bar.rest - plastic_set_of(state.bar_plastic_set, b);  // C
   double& lambda = state.bar_lambda[b];
-  const double unheld = lambda - (stretch + compliance * lambda + gamma * moved) /
-                                     ((1.0 + gamma) * (wi + wj) + compliance);
+  double residual = stretch + bar.compliance * lambda;
+  if (bar.gamma != 0.0) {  // γ ∇C·(x − x_n)
+    residual += bar.gamma * n.dot((x[bar.j] - state.x[bar.j]) - (x[bar.i] - state.x[bar.i]));
+  }
   // |λ|/h² is the bar's force: held at its yield force, where it flows (the step's end moves its
   // plastic set on).
   const double most = yield_limit(model.bar_yield_force, b) * h * h;
-  const double held = std::clamp(unheld, -most, most);
+  const double held = std::clamp(lambda - residual * bar.denominator, -most, most);
   const double change = held - lambda;
   lambda = held;
-  x[i] -= (wi * change) * n;
-  x[j] += (wj * change) * n;
+  x[bar.i] -= (bar.wi * change) * n;
+  x[bar.j] += (bar.wj * change) * n;
 }
 
 // After the last sweep: a bar held at its yield force keeps as its new plastic set what it is
@@ -71,19 +92,39 @@ void flow_yielding_bars(const Model& model, double h, State& state) {
 
 }  // namespace
 
+double bar_constraint_step_cap(const Model& model) {
+  double load = model.gravity.norm();  // m/s², the largest acceleration the loads may give a node
+  for (const FieldForce& field : model.fields) {
+    double lightest = std::numeric_limits<double>::infinity();
+    for (const Index i : field.nodes) {
+      lightest = std::min(lightest, model.node_mass[i]);
+    }
+    load += field.per_unit_mass ? field.value.norm() : field.value.norm() / lightest;
+  }
+  std::vector<double> lengths = model.bar_rest_length;
+  if (lengths.empty() || !(load > 0.0)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return std::sqrt(kLoadStretchShare * lengths[lengths.size() / 2] / load);
+}
+
 void project_bars(const Model& model, double h, int sweep, State& state) {
   const Index bars = model.bar_count();
   if (sweep == 0) {
     std::fill(state.bar_lambda.begin(), state.bar_lambda.end(), 0.0);
     std::fill(state.energy_workspace.bar_flow.begin(), state.energy_workspace.bar_flow.end(), 0.0);
   }
+  if (state.bar_projection_step != h) {
+    pack_bars(model, h, state);
+  }
   if (sweep % 2 == 0) {
-    for (Index b = 0; b < bars; ++b) {
-      project_bar(model, h, b, state);
+    for (Index k = 0; k < bars; ++k) {
+      project_bar(model, h, state.bar_projection[k], state);
     }
   } else {
-    for (Index b = bars - 1; b >= 0; --b) {
-      project_bar(model, h, b, state);
+    for (Index k = bars - 1; k >= 0; --k) {
+      project_bar(model, h, state.bar_projection[k], state);
     }
   }
 }

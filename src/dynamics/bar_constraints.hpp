@@ -26,6 +26,19 @@ namespace dinam {
 struct Model;
 struct State;
 
+// The longest step at which the sweeps hold the bars (s): the one in which gravity and the fields
+// would move a free node by kLoadStretchShare of the median bar, a h² = share × L, beyond which a
+// few sweeps leave the bars visibly stretched (the paper's flag at steps of 4 ms, 0.7 mm a step:
+// its mean 5.9 cm from central differences'; at 2 ms, 2.5 cm). The wind is left out: a flag in
+// it streams out, its drag borne by the threads' tension, and the windy flag's 0.6 ms steps
+// hold it within 1.1 cm. Infinite where no load acts.
+inline constexpr double kLoadStretchShare = 5e-4;
+double bar_constraint_step_cap(const Model& model);
+
+// One bar's projection in a sweep, ns on one thread: the windy flag's 3 434 bars, four sweeps a
+// step, in its xpbd run (bench/notes/stiff-threads.md); only the run-time estimate reads it.
+inline constexpr double kNsPerBarProjection = 6.0;
+
 // One sweep of the bars' projection (ConstraintHold::project, spring_kind.hpp): each bar in turn,
 // in bar order on even sweeps and backwards on odd ones, its multiplier in state.bar_lambda.
 void project_bars(const Model& model, double h, int sweep, State& state);

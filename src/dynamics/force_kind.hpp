@@ -133,8 +133,9 @@ struct ForceKind {
   bool acts_in(const Model& model, const ForceSwitches& switches) const {
     return switches.*switched && (present == nullptr || present(model));
   }
+  // Whether a run of `model` holds it as a constraint (`integrator: xpbd`).
   bool held_as_constraint(const Model& model) const {
-    return constraint.held != nullptr && constraint.held(model);
+    return constraint.held && model.bars_are_constraints();
   }
 };
 

@@ -24,7 +24,9 @@ extern const ForceKind kGroundContact;  // ground_contact.cpp
 extern const ForceKind kObjectContact;  // object_contact.cpp
 
 // A spring kind (spring_kind.hpp) as a force kind: a potential, its plastic sets held.
-template <const SpringKind& kSpring, bool ForceSwitches::*kSwitch>
+// kHeld: whether `integrator: xpbd` holds it as a constraint (its SpringKind's constraint.held,
+// which spring_kinds_test checks against this).
+template <const SpringKind& kSpring, bool ForceSwitches::*kSwitch, bool kHeld = false>
 inline constexpr ForceKind kSpringForces{
     .label = nullptr,
     .spring = &kSpring,
@@ -59,11 +61,7 @@ inline constexpr ForceKind kSpringForces{
                    kSpring.yields(model) ? kSpring.ns_per_item_yielding : kSpring.ns_per_item);
         },
     // A spring kind held as a constraint has its projection (spring_kind.hpp).
-    .constraint = {.held =
-                       [](const Model& model) {
-                         return kSpring.constraint.held != nullptr &&
-                                kSpring.constraint.held(model);
-                       },
+    .constraint = {.held = kHeld,
                    .project =
                        [](const Model& model, double h, int sweep, State& state) {
                          kSpring.constraint.project(model, h, sweep, state);
@@ -73,6 +71,12 @@ inline constexpr ForceKind kSpringForces{
                          if (kSpring.constraint.finish != nullptr) {
                            kSpring.constraint.finish(model, h, state);
                          }
+                       },
+                   .add_cost =
+                       [](const Model& model, StepCostSink& sink) {
+                         if (kSpring.constraint.add_cost != nullptr) {
+                           kSpring.constraint.add_cost(model, sink);
+                         }
                        }},
 };
 
@@ -81,7 +85,7 @@ inline constexpr std::array<const ForceKind*, 11> kForceKinds{
     &kFields,
     &kWind,
     &kGlobalDamping,
-    &kSpringForces<kAxialSprings, &ForceSwitches::axial_springs>,
+    &kSpringForces<kAxialSprings, &ForceSwitches::axial_springs, true>,
     &kSpringForces<kBendingSprings, &ForceSwitches::bending>,
     &kSpringForces<kClampSprings, &ForceSwitches::clamps>,
     &kSpringForces<kTorsionSprings, &ForceSwitches::torsion>,

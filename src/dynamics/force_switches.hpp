@@ -36,6 +36,10 @@ struct StepOptions {
   // push without its damper and friction, so that neither the velocities nor the contact history
   // are read.
   bool elastic_only = false;
+  // The bars as springs even in a model that holds them as constraints (`integrator: xpbd`,
+  // stepped_switches): the settling phase relaxes to the model's equilibrium, which its bars'
+  // springs define, at a step that they bound.
+  bool bars_as_springs = false;
 };
 
 }  // namespace dinam

@@ -156,39 +156,18 @@ bool holds_constraints(const Model& model) {
 }
 
 // What the projection of the kinds held as constraints took out of the motion's energy around
-// t_n, J. Its forces act at t_n as any force in the step (v_{n+½} = v_{n−½} + h a_n):
-// F = M (x_{n+1} − x̃_{n+1}) / h² (ledger.v_whole holds x̃_{n+1}), and they stand for springs. A
-// spring's work booked as every force's, h F·v_n with v_n = (x_{n+1} − x_{n−1}) / 2h, is what
-// its stored energy loses from x_{n−1} to x_{n+1}, halved, to second order: what the two miss by
-// is the scheme's.
-double energy_projected_out(const Model& model, double dt, State& state) {
-  EnergyWorkspace& ledger = state.energy_workspace;
-  const std::vector<Vec3>& before = ledger.v_whole;  // x̃_{n+1}
+// t_n, J: the work of its forces, which act at t_n as any force in the step does (v_{n+½} =
+// v_{n−½} + h a_n), F = M (x_{n+1} − x̃_{n+1}) / h² (ledger.v_whole holds x̃_{n+1}), booked as
+// every force's is, h F·v_n. The kinds held store nothing (rigid, as the paper's bars): a
+// conservative constraint's work would be nil, and what it is not is the scheme's.
+double energy_projected_out(const Model& model, double dt, const State& state) {
+  const std::vector<Vec3>& before = state.energy_workspace.v_whole;  // x̃_{n+1}
   double work = 0.0;
   for (Index i = 0; i < model.node_count(); ++i) {
     const Vec3 v_whole = 0.5 * (state.velocity[i] + state.v_next[i]);
     work += (model.node_mass[i] / dt) * (state.x_next[i] - before[i]).dot(v_whole);
   }
-  auto held_energy = [&] {
-    double energy = 0.0;
-    for (const ForceKind* kind : kForceKinds) {
-      if (kind->spring != nullptr && kind->held_as_constraint(model)) {
-        energy += kind->spring->energy(model, state, SpringEnergy::kStored);
-      }
-    }
-    return energy;
-  };
-  if (std::isnan(ledger.held_stored_now)) {  // the first step: x_{−1} taken as x_0
-    ledger.held_stored_now = held_energy();
-    ledger.held_stored_before = ledger.held_stored_now;
-  }
-  std::swap(state.x, state.x_next);
-  const double stored_next = held_energy();
-  std::swap(state.x, state.x_next);
-  const double change = 0.5 * (stored_next - ledger.held_stored_before);
-  ledger.held_stored_before = ledger.held_stored_now;
-  ledger.held_stored_now = stored_next;
-  return -(work + change);
+  return -work;
 }
 
 // Whether some kind that `switches` leaves on adds its forces after the team's job.
@@ -263,7 +242,7 @@ void advance(const Worker& worker, const Model& model, double dt, const StepOpti
   //     give, projected by the leader alone (the same bits on any thread count), kind by kind in
   //     each sweep; the velocities taken from where they end.
   double projected_out = 0.0;  // J, what the projection took out, while the energy is tracked
-  if (holds_constraints(model)) {
+  if (holds_constraints(model) && !options.bars_as_springs) {
     member.barrier();
     on_leader(member, [&] {
       for (Index i = 0; i < n; ++i) {
@@ -404,6 +383,7 @@ State make_state(const Model& model, bool track_energy) {
   state.x_next.assign(n, Vec3::Zero());
   state.v_next.assign(n, Vec3::Zero());
   state.bar_lambda.assign(model.bars_are_constraints() ? model.bar_count() : 0, 0.0);
+  state.bar_projection.assign(model.bars_are_constraints() ? model.bar_count() : 0, {});
   // Plastic sets only for the kinds that can yield (model.hpp).
   for (const SpringKind* kind : kSpringKinds) {
     (state.*kind->plastic_set).assign(kind->yields(model) ? kind->count(model) : 0, 0.0);
@@ -481,7 +461,8 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
 
 void advance_steps(const Model& model, double dt, const ForceSwitches& given, State& state,
                    std::int64_t steps, const StepOptions& options) {
-  const ForceSwitches switches = stepped_switches(model, given);
+  const ForceSwitches switches =
+      options.bars_as_springs ? given : stepped_switches(model, given);
   state.dt = dt;
   const bool alone = !step_runs_in_parallel(model);
   const WorkSplit* split = share_work(model, state);

@@ -163,6 +163,7 @@ SettleOutcome creep_under_gravity(const Model& model, double dt, const ForceSwit
                                   State& settling) {
   StepOptions options;
   options.pins_hold_still = true;
+  options.bars_as_springs = true;  // the model's own equilibrium, whatever its integrator
   for (Vec3& v : settling.velocity) {
     v.setZero();
   }
@@ -198,6 +199,7 @@ SettleOutcome relax_to_rest(const Model& model, double dt, const ForceSwitches& 
   }
   StepOptions options;
   options.pins_hold_still = true;
+  options.bars_as_springs = true;  // the model's own equilibrium, whatever its integrator
   SettleOutcome outcome =
       relax_by_kinetic_damping(model, dt, quiet, viscous.max_steps - viscous.steps,
                                model.settle.residual, settling, options, stop);

@@ -12,6 +12,7 @@
 #include "core/types.hpp"
 #include "dynamics/force_context.hpp"
 #include "dynamics/state.hpp"
+#include "dynamics/step_cost.hpp"
 #include "dynamics/stiffness.hpp"
 #include "model/model.hpp"
 #include "model/model_spring_kinds.hpp"
@@ -30,7 +31,7 @@ enum class SpringEnergy { kStored, kWithFlow };
 // integrator.hpp), and its projection runs after that half, kConstraintSweeps Gauss–Seidel sweeps
 // a step (XPBD: bar_constraints.hpp), which the velocities then follow.
 struct ConstraintHold {
-  bool (*held)(const Model&);  // whether the model holds the kind so; null: never
+  bool held = false;  // whether `integrator: xpbd` holds the kind as a constraint
   // Sweep number `sweep` (from 0: the step's first, which starts its multipliers afresh) of its
   // projection of state.x_next (x̃_{n+1} in, x_{n+1} out) from state.x (x_n), for a step of h, on
   // one thread; null where another kind's projection takes it in (the bars' dampers, the bars').
@@ -38,6 +39,8 @@ struct ConstraintHold {
   // After the step's last sweep: what flowed plastically moved into the plastic sets (and its
   // work into the ledger's flow, while the energy is tracked); null where nothing can.
   void (*finish)(const Model&, double h, State&);
+  // Its projection's share of a step's time (step_cost.hpp): all its sweeps, on one thread.
+  void (*add_cost)(const Model&, StepCostSink&);
 };
 
 // Sweeps of the projection a step: each costs a tenth of a step's forces on a cloth, and the

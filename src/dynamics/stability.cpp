@@ -11,9 +11,12 @@
 
 namespace dinam {
 
-double critical_timestep(const Model& model) {
-  const double omega_squared = max_frequency_squared_bound(model);
-  const double gamma = max_damping_rate_bound(model);
+double critical_timestep(const Model& model, BarsIn bars) {
+  return critical_timestep_of(max_frequency_squared_bound(model, true, bars),
+                              max_damping_rate_bound(model, bars));
+}
+
+double critical_timestep_of(double omega_squared, double gamma) {
   if (omega_squared <= 0.0) {
     // Pure damping: v_{n+½} = (1 − γΔt) v_{n−½} is stable for γΔt < 2.
     return gamma > 0.0 ? 2.0 / gamma : std::numeric_limits<double>::infinity();
@@ -24,8 +27,8 @@ double critical_timestep(const Model& model) {
 }
 
 TimeStep choose_explicit_timestep(const Model& model, std::optional<double> requested, double fps,
-                                  const FileLoc& where) {
-  const double critical = critical_timestep(model);
+                                  const FileLoc& where, BarsIn bars) {
+  const double critical = critical_timestep(model, bars);
   if (requested && *requested > critical) {
     throw_user_error(where,
                      "the time step {:.6g} s is above this model's stability limit {:.6g} s "

@@ -15,7 +15,10 @@ struct Model;
 // bound, the central-difference limit with damping evaluated at the half step,
 //   Δt ≤ (2/ω) (√(1 + ζ²) − ζ)   (Belytschko, Liu and Moran, 2000, §6.4),
 // which is 2/ω undamped. Infinite when nothing can vibrate.
-double critical_timestep(const Model& model);
+// `bars` as the bound counts them (frequency_bound.hpp).
+double critical_timestep(const Model& model, BarsIn bars = BarsIn::kTheModelsWay);
+// The same limit from the bounds themselves: ω² (rad²/s²) and γ (1/s).
+double critical_timestep_of(double omega_squared, double gamma);
 
 struct TimeStep {
   double dt = 0.0;          // s, the step in use
@@ -29,7 +32,7 @@ struct TimeStep {
 // the step is fitted to the frames (fit_timestep_to_frames). stepping/time_step.hpp chooses the
 // step of whichever integrator the model has.
 TimeStep choose_explicit_timestep(const Model& model, std::optional<double> requested, double fps,
-                                  const FileLoc& where);
+                                  const FileLoc& where, BarsIn bars = BarsIn::kTheModelsWay);
 
 // A step of at most `target` s, shortened so that a whole number of steps fills each frame; a
 // step that would take more than 10⁸ steps a frame is refused at `where` (the `requested` one, or

@@ -2,7 +2,6 @@
 // Everything that changes during a run. The model it belongs to is passed beside it.
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -70,10 +69,6 @@ struct EnergyWorkspace {
   std::vector<double> torsion_flow;  // (n_torsions)
   std::vector<double> clamp_flow;    // (n_clamps)
   EnergyReport last;                 // at the last step taken
-  // J, what the kinds held as constraints store (`integrator: xpbd`) at x_{n−1} and x_n, for the
-  // projection's share of the balance (integrator.cpp); NaN before the first step.
-  double held_stored_before = std::numeric_limits<double>::quiet_NaN();
-  double held_stored_now = std::numeric_limits<double>::quiet_NaN();
 
   // The five per-kind force arrays, to clear or size them together.
   std::array<std::vector<Vec3>*, 5> force_parts() {
@@ -112,6 +107,20 @@ struct PlasticSetUpdate {
   double value;
 };
 
+// A bar held as a constraint, as its projection reads it (dynamics/bar_constraints.hpp): its
+// nodes and what the step's length and its material make of it, in one record.
+struct BarProjection {
+  Index bar = 0;
+  Index i = 0;
+  Index j = 0;
+  double wi = 0.0;           // 1/kg, its ends' inverse masses
+  double wj = 0.0;
+  double rest = 0.0;         // m
+  double compliance = 0.0;   // α̃ = 1/(k h²), 1/kg; 0 for a bar that is no constraint
+  double gamma = 0.0;        // c/(k h), its damper's share
+  double denominator = 0.0;  // 1 / ((1 + γ)(w_i + w_j) + α̃), kg
+};
+
 // The state at step n: positions at t_n, the velocities as the stepper carries them.
 struct State {
   double time = 0.0;      // s, t_n
@@ -132,6 +141,10 @@ struct State {
   // (n_bars, or 0 unless the bars are constraints) N·s², scratch: the step's XPBD multiplier of
   // each bar (dynamics/bar_constraints.hpp), λ/h² its tension.
   std::vector<double> bar_lambda;
+  // (n_bars, or 0 unless the bars are constraints) what each bar's projection reads, packed, for
+  // the step length it was made for, in the order the sweeps take them (bar_constraints.cpp).
+  std::vector<BarProjection> bar_projection;
+  double bar_projection_step = 0.0;  // s, the step `bar_projection` was made for
 
   std::vector<double> bar_plastic_set;      // (n_bars) m
   std::vector<double> bend_plastic_set;     // (n_bends) rad

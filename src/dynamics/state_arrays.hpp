@@ -40,6 +40,7 @@ void for_each_state_array(Visit&& visit, States&... states) {
   visit(std::string_view("x_next"), kScratch, states.x_next...);
   visit(std::string_view("v_next"), kScratch, states.v_next...);
   visit(std::string_view("bar_lambda"), kScratch, states.bar_lambda...);
+  visit(std::string_view("bar_projection"), kScratch, states.bar_projection...);
 
   visit(std::string_view("bar_plastic_set"), kHistory, states.bar_plastic_set...);
   visit(std::string_view("bend_plastic_set"), kHistory, states.bend_plastic_set...);

@@ -21,11 +21,16 @@ constexpr double kThreadEfficiency = 0.8;
 
 }  // namespace
 
-StepCost estimate_step_cost(const Model& model, int threads) {
+StepCost estimate_step_cost(const Model& model, int threads, bool as_xpbd) {
   StepCost cost;
   StepCostSink sink(cost);
   for (const ForceKind* kind : kForceKinds) {
-    if (kind->add_cost != nullptr) {
+    const bool held = kind->held_as_constraint(model) || (as_xpbd && kind->constraint.held);
+    if (held) {
+      if (kind->constraint.add_cost != nullptr) {
+        kind->constraint.add_cost(model, sink);
+      }
+    } else if (kind->add_cost != nullptr) {
       kind->add_cost(model, sink);
     }
   }

@@ -53,6 +53,8 @@ class StepCostSink {
 // the efficiency bench_threads measures on two idle cores; contact between objects is counted at
 // the cost of watching for it, a surface with contact with itself (a cloth that folds) at what a
 // cloth lying on itself costs.
-StepCost estimate_step_cost(const Model& model, int threads);
+// With `as_xpbd`, the step of `integrator: xpbd` whatever the model's own integrator: the kinds it
+// holds as constraints cost their projection's sweeps, on one thread, not their forces.
+StepCost estimate_step_cost(const Model& model, int threads, bool as_xpbd = false);
 
 }  // namespace dinam

@@ -11,7 +11,7 @@ namespace {
 
 // g = (−n, n): the exact blocks k n nᵀ, and the coupling of the two ends when both are free.
 void add_axial_frequency_terms(const Model& model, GershgorinSums& sums) {
-  if (model.bars_are_constraints()) {
+  if (sums.bars_held) {
     return;  // projected, not stepped: no frequency of theirs bounds the step
   }
   const auto& x = model.node_initial_x;

@@ -34,9 +34,15 @@ void GershgorinSums::add(const Model& model, double k, const Index* nodes, const
   }
 }
 
-NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact) {
+bool bars_left_out(const Model& model, BarsIn bars) {
+  return bars == BarsIn::kConstraints ||
+         (bars == BarsIn::kTheModelsWay && model.bars_are_constraints());
+}
+
+NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact, BarsIn bars) {
   const Index n = model.node_count();
   GershgorinSums sums(n);
+  sums.bars_held = bars_left_out(model, bars);
   for (const ModelSpringKind* kind : kModelSpringKinds) {
     kind->add_frequency_terms(model, sums);  // in the list's order: the bound's bits
   }
@@ -81,8 +87,8 @@ NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact) 
   return rows;
 }
 
-double max_frequency_squared_bound(const Model& model, bool include_contact) {
-  const NodeFrequencyRows rows = node_frequency_rows(model, include_contact);
+double max_frequency_squared_bound(const Model& model, bool include_contact, BarsIn bars) {
+  const NodeFrequencyRows rows = node_frequency_rows(model, include_contact, bars);
   double bound = 0.0;
   for (std::size_t i = 0; i < rows.own.size(); ++i) {
     bound = std::max(bound, rows.own[i] + rows.coupling[i]);
@@ -90,12 +96,12 @@ double max_frequency_squared_bound(const Model& model, bool include_contact) {
   return bound;
 }
 
-double max_damping_rate_bound(const Model& model) {
+double max_damping_rate_bound(const Model& model, BarsIn bars, bool include_contact) {
   const Index n = model.node_count();
   std::vector<double> rate(n, model.global_damping);  // α m / m
   // Bars held as constraints take their dampers into their projection.
   const Index dampers =
-      model.bars_are_constraints() ? 0 : static_cast<Index>(model.bar_damping.size());
+      bars_left_out(model, bars) ? 0 : static_cast<Index>(model.bar_damping.size());
   for (Index b = 0; b < dampers; ++b) {
     const double c = model.bar_damping[b];
     if (c == 0.0) {
@@ -107,7 +113,7 @@ double max_damping_rate_bound(const Model& model) {
     rate[n0] += c * model.node_inv_mass[n0] + coupling;
     rate[n1] += c * model.node_inv_mass[n1] + coupling;
   }
-  if (model.ground.enabled) {
+  if (model.ground.enabled && include_contact) {
     for (Index i = 0; i < n; ++i) {
       rate[i] += model.ground.node_damping[i] * model.node_inv_mass[i];
     }

@@ -9,11 +9,24 @@ namespace dinam {
 
 struct Model;
 
+// Whether a bound counts the bars' own springs and dampers: as the model's integrator takes them
+// (central differences' springs, `xpbd`'s constraints, which bound no step), held as constraints
+// whatever the model's integrator (`dinam info` estimating an xpbd run from another's model), or
+// as springs (the settling phase, which relaxes an xpbd model with its bars as springs).
+enum class BarsIn { kTheModelsWay, kConstraints, kSprings };
+
+// Whether the bars' springs are left out of a bound asked with `bars` of `model`.
+bool bars_left_out(const Model& model, BarsIn bars);
+
 // The bound's sums, which each kind of spring adds its terms to (ModelSpringKind::
 // add_frequency_terms): the diagonal blocks (N/m) and the scaled couplings (1/s²).
 struct GershgorinSums {
   std::vector<Mat3> diagonal;    // (n_nodes) Σ k g_i g_iᵀ, or an isotropic upper bound of it
   std::vector<double> coupling;  // (n_nodes) Σ k |g_i| |g_j| / √(m_i m_j) over free j ≠ i
+
+  // Whether the bars' own springs are left out (bars_left_out): held as constraints
+  // (`integrator: xpbd`), they bound no step.
+  bool bars_held = false;
 
   explicit GershgorinSums(Index n) : diagonal(n, Mat3::Zero()), coupling(n, 0.0) {}
 
@@ -33,7 +46,8 @@ struct GershgorinSums {
 // the rest geometry; ground contact adds its penalty stiffness to every node's diagonal block.
 // It is exact for one mass on a spring and for the top mode of a uniform chain. Stiffening by
 // tension and large rotations is not included: the automatic step keeps a margin for it.
-double max_frequency_squared_bound(const Model& model, bool include_contact = true);
+double max_frequency_squared_bound(const Model& model, bool include_contact = true,
+                                   BarsIn bars = BarsIn::kTheModelsWay);
 
 // The bound's row of every node, 1/s²: `own` = λ_max(Σ k g_i g_iᵀ) / m_i and `coupling` = the
 // sum over the other free nodes; both 0 for a pinned node. The bound is the largest own +
@@ -44,11 +58,14 @@ struct NodeFrequencyRows {
   std::vector<double> own;       // (n_nodes)
   std::vector<double> coupling;  // (n_nodes)
 };
-NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact = true);
+NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact = true,
+                                     BarsIn bars = BarsIn::kTheModelsWay);
 
 // An upper bound of the damping rates, 1/s: λ_max(M⁻¹C) by the same Gershgorin argument as the
 // frequency bound, over the global friction α, the axial dampers and the ground's normal damping.
-double max_damping_rate_bound(const Model& model);
+// Without `include_contact`, the ground's damping is left out.
+double max_damping_rate_bound(const Model& model, BarsIn bars = BarsIn::kTheModelsWay,
+                              bool include_contact = true);
 
 // The fraction of the critical step that `timestep: auto` uses, leaving room for the stiffening
 // that large rotations and tension add beyond the rest-state bound.

@@ -183,6 +183,9 @@ struct Model {
   bool any_bar_damping = false;     // some bar_damping is not 0
   std::vector<double> bar_radius;   // (n_bars) m, of the round section of equal area
   std::vector<std::uint8_t> bar_on_face;  // (n_bars) 1 when an edge of a mesh face
+  // (n_bars, or 0 unless the bars are constraints) the order their projection's sweeps take them
+  // in (dynamics/bar_constraints.hpp): by colour, the bars of a colour sharing no node.
+  std::vector<Index> bar_sweep_order;
 
   // Bending springs: at node c between bars c–a and c–b, on the angle θ between them.
   std::vector<Index> bend_nodes;          // (n_bends × 3) a, c, b

@@ -33,6 +33,7 @@ void for_each_model_array(ModelType& model, Visit&& visit) {
   visit(std::string_view("bar_damping"), model.bar_damping);
   visit(std::string_view("bar_radius"), model.bar_radius);
   visit(std::string_view("bar_on_face"), model.bar_on_face);
+  visit(std::string_view("bar_sweep_order"), model.bar_sweep_order);
 
   visit(std::string_view("bend_nodes"), model.bend_nodes);
   visit(std::string_view("bend_rest_angle"), model.bend_rest_angle);

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <memory>
 
+#include "dynamics/bar_constraints.hpp"
 #include "dynamics/integrator.hpp"
+#include "dynamics/stability.hpp"
 #include "dynamics/spring_kind.hpp"
 #include "dynamics/step_cost.hpp"
 #include "model/frequency_bound.hpp"
@@ -85,7 +87,10 @@ EnergyBalanceGuide energy_balance_guide(const Model& model, const TimeStep& time
 
 const StepperKind kCentralDifferences = {
     .key = "central_difference",
-    .choose_timestep = choose_explicit_timestep,
+    .choose_timestep =
+        [](const Model& model, std::optional<double> requested, double fps, const FileLoc& where) {
+          return choose_explicit_timestep(model, requested, fps, where);
+        },
     .settling_step = [](const Model&, double dt) { return dt; },
     .finish_start = start_leapfrog,
     .make_stepper = [](const Model& model, const TimeStep& timestep) -> std::unique_ptr<Stepper> {
@@ -106,25 +111,82 @@ const StepperKind kCentralDifferences = {
 
 namespace {
 
+// The bound without the bars. Asked of another integrator's model (`dinam info`, whose estimate
+// does not build a model of its own), whose contact penalties were made for that integrator's
+// bound: an xpbd model's are made for its own, so the contact keeps its share of the bound.
+TimeStep constrained_timestep(const Model& model, std::optional<double> requested, double fps,
+                              const FileLoc& where) {
+  if (requested) {
+    return choose_explicit_timestep(model, requested, fps, where, BarsIn::kConstraints);
+  }
+  if (model.bars_are_constraints()) {
+    TimeStep step = choose_explicit_timestep(model, requested, fps, where, BarsIn::kConstraints);
+    const double cap = bar_constraint_step_cap(model);
+    if (step.dt > cap) {
+      const double critical = step.critical;
+      step = fit_timestep_to_frames(cap, fps, requested, where);
+      step.critical = critical;
+      step.automatic = true;
+    }
+    return step;
+  }
+  const double structure = max_frequency_squared_bound(model, false);
+  const double held = max_frequency_squared_bound(model, false, BarsIn::kConstraints);
+  const double contact_share =
+      structure > 0.0 ? max_frequency_squared_bound(model, true) / structure : 1.0;
+  // The ground's damper, 2 ζ ω_c a node, for the penalty an xpbd model would give it.
+  double ground_rate = 0.0;
+  if (model.ground.enabled && model.ground.automatic_frequency_squared && structure > 0.0) {
+    ground_rate = 2.0 * model.ground.damping_ratio *
+                  std::sqrt(*model.ground.automatic_frequency_squared * held / structure);
+  }
+  const double critical = critical_timestep_of(
+      contact_share * held, max_damping_rate_bound(model, BarsIn::kConstraints, false) + ground_rate);
+  TimeStep step = fit_timestep_to_frames(
+      std::min(kAutoTimestepSafety * critical, bar_constraint_step_cap(model)), fps, requested,
+      where);
+  step.critical = critical;
+  step.automatic = true;
+  return step;
+}
+
 std::string constrained_timestep_note(const Model& model, const TimeStep& timestep) {
+  if (timestep.automatic &&
+      bar_constraint_step_cap(model) < kAutoTimestepSafety * timestep.critical) {
+    return fmt::format(
+        "auto: the bars are constraints, so the other springs' limit, {:.3g} s, is the "
+        "stability's; shortened to {:.3g} s, within which gravity and the fields move a node by "
+        "{:g} of the median bar, as the projection's few sweeps need",
+        timestep.critical, bar_constraint_step_cap(model), kLoadStretchShare);
+  }
   return leapfrog_timestep_note(model, timestep) +
          "; the bars are constraints, so the limit is the other springs'";
 }
 
-std::string constrained_energy_balance_note(const Model&, const TimeStep&) {
+// What the projection takes out of a swing, measured: a 1 m hemp rope of 40 bars let swing from
+// 10° (steps of 1.1 ms) loses 1.2 % of its amplitude a period where central differences lose none
+// (tests/acceptance/stiff_threads.py checks it, bench/notes/stiff-threads.md).
+constexpr double kRopeSwingLossPerPeriod = 0.012;
+constexpr double kRopeSwingStep = 1.1e-3;
+
+std::string constrained_energy_balance_note(const Model&, const TimeStep& timestep) {
   return fmt::format(
-      "the bars are held by {} sweeps of XPBD a step, which leave them a little more stretchy "
-      "than their material and take out a little energy: energy.csv books it as "
-      "numerical_dissipation_J",
-      kConstraintSweeps);
+      "the bars are held as constraints by {} sweeps of XPBD a step; the work their projection "
+      "does is booked as energy.csv's numerical_dissipation_J (the bars store none), so total_J "
+      "holds as central differences' does; it takes out about {:.1f} % of a hanging rope's swing "
+      "a period at steps of {:.2g} s (this scene's: {:.3g} s), where central differences take "
+      "out none",
+      kConstraintSweeps, 100.0 * kRopeSwingLossPerPeriod, kRopeSwingStep, timestep.dt);
 }
 
 }  // namespace
 
 const StepperKind kBarConstraints = {
     .key = "xpbd",
-    .choose_timestep = choose_explicit_timestep,
-    .settling_step = [](const Model&, double dt) { return dt; },
+    .choose_timestep = constrained_timestep,
+    // Relaxation steps the bars as springs (StepOptions::bars_as_springs), which bound its step.
+    .settling_step = [](const Model& model,
+                        double) { return kAutoTimestepSafety * critical_timestep(model, BarsIn::kSprings); },
     .finish_start = start_leapfrog,
     .make_stepper = [](const Model& model, const TimeStep& timestep) -> std::unique_ptr<Stepper> {
       return std::make_unique<CentralDifferenceStepper>(model, timestep);
@@ -133,7 +195,7 @@ const StepperKind kBarConstraints = {
     .workspace_bytes = [](const Model&) { return std::uint64_t{0}; },
     .estimate_steps =
         [](const SceneDescription&, const Model& model, int threads, RunEstimate& estimate) {
-          estimate.step = estimate_step_cost(model, threads);
+          estimate.step = estimate_step_cost(model, threads, true);
         },
     .step_can_be_timed = true,
     .timestep_note = constrained_timestep_note,

@@ -1,5 +1,7 @@
 #include "stepping/run_estimate.hpp"
 
+#include "stepping/integrator_choice.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -133,12 +135,23 @@ void refuse_if_too_long(const SceneDescription& scene, const Model& model, const
   // The step that would bring the run within the limit, as a `max_steps`.
   const auto max_steps = static_cast<long long>(
       std::floor(static_cast<double>(steps_at_most) * kLongRunSeconds / capped_seconds));
+  // Another integrator, where `info` would recommend one: first, since it keeps the material.
+  const IntegratorChoice choice = compare_integrators(scene, model, estimate.step.threads, false);
+  std::string other;
+  if (choice.recommended != &stepper_kind(model)) {
+    const RunEstimate& recommended =
+        choice.recommends_xpbd() ? choice.xpbd
+        : choice.recommends_implicit() ? choice.implicit
+                                       : choice.central_difference;
+    other = fmt::format("use 'integrator: {}' (about {}: {}), ", recommended_key(choice),
+                        duration_text(recommended.seconds), recommendation_reason(choice));
+  }
   throw_user_error(key,
-                   "this run of {:g} s needs {} steps of {:.3g} s{} and {}; aim the step with "
+                   "this run of {:g} s needs {} steps of {:.3g} s{} and {}; {}aim the step with "
                    "'timestep: {{max_steps: {}}}' (mass scaling and collapsing the shortest bars), "
                    "collapse short bars with 'mesh: {{weld: 0.1}}', use a softer material, or "
                    "pass --force to run it anyway",
-                   scene.duration, steps_at_most, timestep.dt, cause, cost, max_steps);
+                   scene.duration, steps_at_most, timestep.dt, cause, cost, other, max_steps);
 }
 
 }  // namespace dinam

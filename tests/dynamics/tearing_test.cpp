@@ -84,6 +84,20 @@ TEST(Tearing, ImplicitBarBreaksWhenItsTensionReachesTheBreakingForce) {
   EXPECT_EQ(state.bar_broken[1], 1);  // the bar at the pinned end carries the same tension
 }
 
+// Held as constraints (`integrator: xpbd`), a bar's tension is its projection's, −λ/h² (the
+// same quasi-static pull), and it breaks when that reaches 20 N; its breaking strain is read as
+// the tension that would strain its material so, ε E A (0.02: 20 N here too). Steps of its own
+// automatic length.
+TEST(Tearing, BarHeldAsAConstraintBreaksAtItsTensionOrItsStrainsTension) {
+  for (const char* breaking : {"{force: 20}", "{strain: 0.02}"}) {
+    const Model model = pulled_wire(breaking, "xpbd");
+    const double dt = choose_timestep(model, std::nullopt, 24.0, {}).dt;
+    State state = initial_state(model, dt);
+    const double broke = time_of_first_break(model, state, dt);
+    EXPECT_NEAR(broke, 0.4, 2e-3 * 0.4 + 2.0 * dt) << breaking;
+  }
+}
+
 // The strain is F / (E A) = 0.05 t / kRampTime, so a breaking strain of 0.02 breaks at 0.4 s.
 // Both bars carry the same tension and break in the same step, and the bending spring between
 // them goes with them: the freed end node then feels the pull alone, accelerating at F / m

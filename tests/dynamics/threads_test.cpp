@@ -47,9 +47,12 @@ State run_on_threads(const Model& model, int threads, int steps) {
 // and torsion springs), big enough that every spring loop runs in parallel, with turbulent wind
 // on its faces and on a rope's bars, global damping and ground contact (it falls 5 mm onto the
 // ground in the first 30 steps or so).
-State run_cloth(int threads, int steps, const std::string& breaking = "") {
+// `integrator` is a top-level line to add ("integrator: xpbd").
+State run_cloth(int threads, int steps, const std::string& breaking = "",
+                const std::string& integrator = "") {
   const Model model = build_model(test::scene_from_yaml(std::string(R"(version: 1
 duration: 1
+)") + integrator + R"(
 wind: {velocity: [3, 0, 0], gust: {amplitude: 1}, turbulence: {amplitude: 1, scale: 0.3}}
 ground: {height: 0.595}
 damping: {global: 0.05}
@@ -58,7 +61,7 @@ objects:
     mesh:
       grid: {width: 1.2, height: 1.2, columns: 120, rows: 120, diagonals: one}
       translation: [0, 0, 0.6]
-    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001, yield_stress: 2.0e5)") +
+    material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001, yield_stress: 2.0e5)" +
                                                         breaking + R"(}
     pinned: {box: {min: [-1, -1, 0], max: [0.001, 2, 1]}}
     damping: {axial_ratio: 0.05}
@@ -82,7 +85,8 @@ objects:
 template <class T>
 constexpr bool kComparable = std::is_arithmetic_v<T> ||
                              std::is_base_of_v<Eigen::MatrixBase<T>, T> || std::is_same_v<T, Box> ||
-                             std::is_same_v<T, ContactCandidate> || std::is_same_v<T, ContactPoint>;
+                             std::is_same_v<T, ContactCandidate> ||
+                             std::is_same_v<T, ContactPoint> || std::is_same_v<T, BarProjection>;
 
 // Two values with the same bits, member by member for the structures the state holds (whose
 // padding must not be read), doubles by their bits.
@@ -104,6 +108,11 @@ bool same_value_bits(const T& a, const T& b) {
     return same_value_bits(a.min, b.min) && same_value_bits(a.max, b.max);
   } else if constexpr (std::is_same_v<T, ContactCandidate>) {
     return a.key == b.key && a.nodes == b.nodes;
+  } else if constexpr (std::is_same_v<T, BarProjection>) {
+    return a.bar == b.bar && a.i == b.i && a.j == b.j && same_value_bits(a.wi, b.wi) &&
+           same_value_bits(a.wj, b.wj) && same_value_bits(a.rest, b.rest) &&
+           same_value_bits(a.compliance, b.compliance) && same_value_bits(a.gamma, b.gamma) &&
+           same_value_bits(a.denominator, b.denominator);
   } else {
     static_assert(std::is_same_v<T, ContactPoint>);
     return a.features == b.features && a.key == b.key && a.nodes == b.nodes &&
@@ -163,6 +172,19 @@ TEST(Threads, TearingIsTheSameForAnyThreadCount) {
   const State two = run_cloth(2, 60, breaking);
   EXPECT_GT(one.broken_bars.size(), 10u);                        // it tore
   EXPECT_LT(one.broken_bars.size(), one.bar_broken.size() / 2);  // but not to shreds
+  expect_same_state(one, two);
+}
+
+// The bars held as constraints (`integrator: xpbd`): the leader projects them alone, so with the
+// same cloth and rope, yielding (the bars inside the projection, the other springs explicit),
+// tearing by the projection's tension and the energy ledger, 1 and 2 threads give the same bits.
+TEST(Threads, TheBarsAsConstraintsAreTheSameForAnyThreadCount) {
+  const std::string breaking = ", breaking: {force: 0.3}";
+  const State one = run_cloth(1, 60, breaking, "integrator: xpbd\n");
+  const State two = run_cloth(2, 60, breaking, "integrator: xpbd\n");
+  EXPECT_GT(one.broken_bars.size(), 10u);  // it tore, by the projection's tension
+  EXPECT_GT(one.energy.plastic_dissipation, 0.0);
+  EXPECT_NE(one.energy.numerical_dissipation, 0.0);  // the projection's share, booked
   expect_same_state(one, two);
 }
 
