@@ -98,9 +98,10 @@ const SpringKind kAxialSprings{
                    .finish = flow_bars,
                    .add_cost =
                        [](const Model& model, StepCostSink& sink) {
-                         sink.add_unshared("the bars' projection",
-                                           kConstraintSweeps * static_cast<double>(model.bar_count()),
-                                           kNsPerBarProjection);
+                         sink.add_unshared(
+                             "the bars' projection",
+                             kConstraintSweeps * static_cast<double>(model.bar_count()),
+                             kNsPerBarProjection);
                        }},
 };
 

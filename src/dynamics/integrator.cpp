@@ -461,8 +461,7 @@ void step(const Model& model, double dt, const ForceSwitches& switches, State& s
 
 void advance_steps(const Model& model, double dt, const ForceSwitches& given, State& state,
                    std::int64_t steps, const StepOptions& options) {
-  const ForceSwitches switches =
-      options.bars_as_springs ? given : stepped_switches(model, given);
+  const ForceSwitches switches = options.bars_as_springs ? given : stepped_switches(model, given);
   state.dt = dt;
   const bool alone = !step_runs_in_parallel(model);
   const WorkSplit* split = share_work(model, state);

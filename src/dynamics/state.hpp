@@ -113,7 +113,7 @@ struct BarProjection {
   Index bar = 0;
   Index i = 0;
   Index j = 0;
-  double wi = 0.0;           // 1/kg, its ends' inverse masses
+  double wi = 0.0;  // 1/kg, its ends' inverse masses
   double wj = 0.0;
   double rest = 0.0;         // m
   double compliance = 0.0;   // α̃ = 1/(k h²), 1/kg; 0 for a bar that is no constraint

@@ -59,7 +59,7 @@ struct NodeFrequencyRows {
   std::vector<double> coupling;  // (n_nodes)
 };
 NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact = true,
-                                     BarsIn bars = BarsIn::kTheModelsWay);
+                                      BarsIn bars = BarsIn::kTheModelsWay);
 
 // An upper bound of the damping rates, 1/s: λ_max(M⁻¹C) by the same Gershgorin argument as the
 // frequency bound, over the global friction α, the axial dampers and the ground's normal damping.

@@ -84,7 +84,10 @@ std::uint64_t made_state_bytes(const Model& model, bool energy) {
   const auto nodes = static_cast<std::uint64_t>(model.node_count());
   const auto bars = static_cast<std::uint64_t>(model.bar_count());
   std::uint64_t bytes = nodes * 5 * sizeof(Vec3);  // x, velocity, force, x_next, v_next
-  for (const ForceKind* kind : kForceKinds) {      // each kind's own arrays
+  if (model.bars_are_constraints()) {  // each bar's multiplier and its projection's record
+    bytes += bars * (sizeof(double) + sizeof(BarProjection));
+  }
+  for (const ForceKind* kind : kForceKinds) {  // each kind's own arrays
     bytes += kind->state_bytes != nullptr ? kind->state_bytes(model, energy) : 0;
   }
   if (energy) {

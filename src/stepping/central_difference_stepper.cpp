@@ -7,8 +7,8 @@
 
 #include "dynamics/bar_constraints.hpp"
 #include "dynamics/integrator.hpp"
-#include "dynamics/stability.hpp"
 #include "dynamics/spring_kind.hpp"
+#include "dynamics/stability.hpp"
 #include "dynamics/step_cost.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
@@ -141,7 +141,8 @@ TimeStep constrained_timestep(const Model& model, std::optional<double> requeste
                   std::sqrt(*model.ground.automatic_frequency_squared * held / structure);
   }
   const double critical = critical_timestep_of(
-      contact_share * held, max_damping_rate_bound(model, BarsIn::kConstraints, false) + ground_rate);
+      contact_share * held,
+      max_damping_rate_bound(model, BarsIn::kConstraints, false) + ground_rate);
   TimeStep step = fit_timestep_to_frames(
       std::min(kAutoTimestepSafety * critical, bar_constraint_step_cap(model)), fps, requested,
       where);
@@ -185,8 +186,10 @@ const StepperKind kBarConstraints = {
     .key = "xpbd",
     .choose_timestep = constrained_timestep,
     // Relaxation steps the bars as springs (StepOptions::bars_as_springs), which bound its step.
-    .settling_step = [](const Model& model,
-                        double) { return kAutoTimestepSafety * critical_timestep(model, BarsIn::kSprings); },
+    .settling_step =
+        [](const Model& model, double) {
+          return kAutoTimestepSafety * critical_timestep(model, BarsIn::kSprings);
+        },
     .finish_start = start_leapfrog,
     .make_stepper = [](const Model& model, const TimeStep& timestep) -> std::unique_ptr<Stepper> {
       return std::make_unique<CentralDifferenceStepper>(model, timestep);

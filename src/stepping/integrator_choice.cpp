@@ -51,15 +51,16 @@ std::string xpbd_unfit(const Model& model, double fps, bool free_to_land) {
       const double inverse_masses = model.node_inv_mass[model.bar_nodes[2 * b]] +
                                     model.node_inv_mass[model.bar_nodes[2 * b + 1]];
       if (model.bar_axial_stiffness[b] > 0.0 && inverse_masses > 0.0) {
-        slowest = std::min(slowest, model.bar_rest_length[b] *
-                                        std::sqrt(0.5 * model.bar_axial_stiffness[b] *
-                                                  inverse_masses));
+        slowest =
+            std::min(slowest, model.bar_rest_length[b] *
+                                  std::sqrt(0.5 * model.bar_axial_stiffness[b] * inverse_masses));
       }
     }
     if (object.node_count > 0 && (high - low).norm() / slowest > kStretchCrossingShare / fps) {
-      return fmt::format("object '{}' stretches visibly: its bars' stretch waves take {:.3g} ms to "
-                         "cross it, over a quarter frame",
-                         object.name, 1e3 * (high - low).norm() / slowest);
+      return fmt::format(
+          "object '{}' stretches visibly: its bars' stretch waves take {:.3g} ms to "
+          "cross it, over a quarter frame",
+          object.name, 1e3 * (high - low).norm() / slowest);
     }
   }
   return {};

@@ -139,10 +139,9 @@ void refuse_if_too_long(const SceneDescription& scene, const Model& model, const
   const IntegratorChoice choice = compare_integrators(scene, model, estimate.step.threads, false);
   std::string other;
   if (choice.recommended != &stepper_kind(model)) {
-    const RunEstimate& recommended =
-        choice.recommends_xpbd() ? choice.xpbd
-        : choice.recommends_implicit() ? choice.implicit
-                                       : choice.central_difference;
+    const RunEstimate& recommended = choice.recommends_xpbd()       ? choice.xpbd
+                                     : choice.recommends_implicit() ? choice.implicit
+                                                                    : choice.central_difference;
     other = fmt::format("use 'integrator: {}' (about {}: {}), ", recommended_key(choice),
                         duration_text(recommended.seconds), recommendation_reason(choice));
   }

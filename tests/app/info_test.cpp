@@ -88,8 +88,8 @@ objects:
 )";
   const test::CommandResult info = test::run_dinam({"info", scene.string()});
   EXPECT_EQ(info.exit_code, 2) << info.output;
-  test::expect_contains(info.output, {"heap.yaml:3:13: error: 'integrator: xpbd'",
-                                      "contact within an object"});
+  test::expect_contains(info.output,
+                        {"heap.yaml:3:13: error: 'integrator: xpbd'", "contact within an object"});
 }
 
 // The paper's ball thrown into the trampoline's net, contact between objects: the implicit

@@ -146,6 +146,26 @@ TEST(ModelArrays, StateEstimateIsWhatTheMadeStateHolds) {
   }
 }
 
+// And with the bars held as constraints (`integrator: xpbd`: each bar's multiplier and record),
+// on the same scene without contact within an object, which they refuse.
+TEST(ModelArrays, StateEstimateIsWhatTheMadeStateHoldsWithTheBarsAsConstraints) {
+  const Model model = build_model(test::scene_from_yaml(test::replaced(
+      test::replaced(kEveryArrayScene, "contact: {self: true}", "contact: {objects: true}"),
+      "version: 1\n", "version: 1\nintegrator: xpbd\n")));
+  ASSERT_TRUE(model.bars_are_constraints());
+  for (const bool energy : {false, true}) {
+    const State state = make_state(model, energy);
+    std::uint64_t held = 0;
+    for_each_state_array(
+        [&](std::string_view, StateArrayRole, const auto& array) {
+          using Element = typename std::decay_t<decltype(array)>::value_type;
+          held += array.capacity() * sizeof(Element);
+        },
+        state);
+    EXPECT_EQ(made_state_bytes(model, energy), held) << (energy ? "with" : "without") << " energy";
+  }
+}
+
 // The implicit schemes step a copy of the model with the ground softened (ImplicitOptions): the
 // estimate counts the model twice for them, once without a ground to soften or under central
 // differences.

@@ -24,7 +24,8 @@ namespace {
 Model hanging_bar(double length, const Vec3& direction, const std::string& material,
                   const std::string& scene_keys = "") {
   const Vec3 end = Vec3(0, 0, 2) + length * direction;
-  return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+  return build_model(
+      test::scene_from_yaml(fmt::format(R"(version: 1
 duration: 10
 integrator: xpbd
 ground: {{contact: false}}
@@ -36,8 +37,7 @@ objects:
     pinned: {{indices: [0]}}
     torsion: false
 )",
-                                                       scene_keys, end.x(), end.y(), end.z(),
-                                                       material)));
+                                        scene_keys, end.x(), end.y(), end.z(), material)));
 }
 
 double bar_length(const Model& model, const State& state) {
@@ -48,9 +48,9 @@ double bar_length(const Model& model, const State& state) {
 // global friction, the mass comes to rest at the spring's static stretch m g / k = 0.4905 mm: the
 // projection's fixed point is C = −α̃ λ, λ = m g h² a step, whatever the step.
 TEST(BarConstraints, ACompliantBarHangsAMassAtItsSpringsStaticStretch) {
-  const Model model = hanging_bar(1.0, Vec3(0, 0, -1),
-                                  "{density: 1000, youngs_modulus: 1.0e7, area: 1.0e-4}",
-                                  "damping: {global: 20}");
+  const Model model =
+      hanging_bar(1.0, Vec3(0, 0, -1), "{density: 1000, youngs_modulus: 1.0e7, area: 1.0e-4}",
+                  "damping: {global: 20}");
   ASSERT_TRUE(model.bars_are_constraints());
   const double dt = choose_timestep(model, std::nullopt, 24.0, {}).dt;
   State state = initial_state(model, dt);
@@ -66,9 +66,8 @@ TEST(BarConstraints, ACompliantBarHangsAMassAtItsSpringsStaticStretch) {
 // (the step's error is (ω h)² ≈ 1e-5; the small-angle series' next term is 1e-5).
 TEST(BarConstraints, AStiffBarSwingsAsThePendulum) {
   const double angle = 5.0 * std::numbers::pi / 180.0;
-  const Model model =
-      hanging_bar(1.0, Vec3(std::sin(angle), 0, -std::cos(angle)),
-                  "{density: 7850, youngs_modulus: 2.0e11, area: 1.0e-4}");
+  const Model model = hanging_bar(1.0, Vec3(std::sin(angle), 0, -std::cos(angle)),
+                                  "{density: 7850, youngs_modulus: 2.0e11, area: 1.0e-4}");
   const double dt = 1e-4;
   State state = initial_state(model, dt);
   double previous_x = state.x[1].x();
@@ -82,8 +81,8 @@ TEST(BarConstraints, AStiffBarSwingsAsThePendulum) {
     previous_x = x;
   }
   ASSERT_GE(crossings.size(), 2u);
-  const double period = (crossings.back() - crossings.front()) /
-                        static_cast<double>(crossings.size() - 1);
+  const double period =
+      (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
   const double expected =
       2.0 * std::numbers::pi * std::sqrt(1.0 / 9.81) * (1.0 + angle * angle / 16.0);
   EXPECT_NEAR(period, expected, 3e-3 * expected);
@@ -148,8 +147,8 @@ objects:
 // the bound), its damper no damping rate; the same model as central differences sees it is
 // bounded by the bar.
 TEST(BarConstraints, TheBarsBoundNoStep) {
-  const Model model = hanging_bar(1.0, Vec3(0, 0, -1),
-                                  "{density: 7850, youngs_modulus: 2.0e11, radius: 0.005}");
+  const Model model =
+      hanging_bar(1.0, Vec3(0, 0, -1), "{density: 7850, youngs_modulus: 2.0e11, radius: 0.005}");
   EXPECT_EQ(max_frequency_squared_bound(model), 0.0);  // one bar, no other spring
   EXPECT_GT(max_frequency_squared_bound(model, true, BarsIn::kSprings), 1e7);  // k / m, 5e7
 }

@@ -69,9 +69,11 @@ long allocations_in_steps(const Model& model, bool track_energy, int steps) {
 // Every kind of force at once: fields, wind on faces and bars, yielding axial, bending and
 // torsion springs, dampers, global damping and the ground; small (serial loops) and large
 // (parallel loops), with and without the energy report.
-Model every_force(int cells) {
+// `integrator` a top-level line ("integrator: xpbd").
+Model every_force(int cells, const std::string& integrator = "") {
   return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
 duration: 1
+{1}
 damping: {{global: 0.1}}
 wind: {{velocity: [3, 0, 0], turbulence: {{amplitude: 1}}}}
 ground: {{height: 0.5}}
@@ -92,7 +94,7 @@ objects:
     material: {{density: 1200, youngs_modulus: 2.0e7, radius: 0.002}}
     pinned: {{indices: [0]}}
 )",
-                                                       cells)));
+                                                       cells, integrator)));
 }
 
 TEST(StepAllocation, AStepAllocatesNothing) {
@@ -101,6 +103,18 @@ TEST(StepAllocation, AStepAllocatesNothing) {
   EXPECT_EQ(allocations_in_steps(small, true, 50), 0);
   const Model large = every_force(80);
   ASSERT_GE(large.bend_count(), kMinParallelItems);  // its spring loops run in parallel
+  EXPECT_EQ(allocations_in_steps(large, false, 5), 0);
+  EXPECT_EQ(allocations_in_steps(large, true, 5), 0);
+}
+
+// The same with the bars held as constraints: the projection's records are made with the state
+// and filled in place, its sweeps and the energy its work is booked as allocate nothing.
+TEST(StepAllocation, AStepWithTheBarsAsConstraintsAllocatesNothing) {
+  const Model small = every_force(10, "integrator: xpbd");
+  ASSERT_TRUE(small.bars_are_constraints());
+  EXPECT_EQ(allocations_in_steps(small, false, 50), 0);
+  EXPECT_EQ(allocations_in_steps(small, true, 50), 0);
+  const Model large = every_force(80, "integrator: xpbd");
   EXPECT_EQ(allocations_in_steps(large, false, 5), 0);
   EXPECT_EQ(allocations_in_steps(large, true, 5), 0);
 }

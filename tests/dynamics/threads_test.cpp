@@ -83,10 +83,10 @@ objects:
 
 // The element types of the state's arrays that same_value_bits compares.
 template <class T>
-constexpr bool kComparable = std::is_arithmetic_v<T> ||
-                             std::is_base_of_v<Eigen::MatrixBase<T>, T> || std::is_same_v<T, Box> ||
-                             std::is_same_v<T, ContactCandidate> ||
-                             std::is_same_v<T, ContactPoint> || std::is_same_v<T, BarProjection>;
+constexpr bool kComparable =
+    std::is_arithmetic_v<T> || std::is_base_of_v<Eigen::MatrixBase<T>, T> ||
+    std::is_same_v<T, Box> || std::is_same_v<T, ContactCandidate> ||
+    std::is_same_v<T, ContactPoint> || std::is_same_v<T, BarProjection>;
 
 // Two values with the same bits, member by member for the structures the state holds (whose
 // padding must not be read), doubles by their bits.
