@@ -15,6 +15,7 @@
 #include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
+#include "core/counted.hpp"
 #include "core/thread_team.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
@@ -62,6 +63,11 @@ nlohmann::ordered_json json_vec3(const Vec3& v) {
   return {v.x(), v.y(), v.z()};
 }
 
+// A step measured now this many times longer than the model's estimate says the machine is busy:
+// the estimate is an idle machine's (step_cost.hpp), and a step timed on an idle one has come
+// within a quarter of it.
+constexpr double kBusyShare = 1.5;
+
 // What `info` says about the run's time: the estimate from the model and what a step measures
 // on this machine now.
 struct RunFigures {
@@ -79,7 +85,7 @@ void print_integrator_choice(const IntegratorChoice& choice) {
       "implicit: {} steps ({}), about {} "
       "at {:g} Newton iterations, {:g} iterations of their solves "
       "and {:g} factorisations a step, as {} ({:.3g} ms a factorisation, of a factor of {:.3g} "
-      "nonzeros for {:.0f} unknowns; bench/notes/implicit-integrator.md, \"Which integrator\")\n",
+      "nonzeros for {:.0f} unknowns; docs/scene-format.md, \"integrator\")\n",
       choice.central_difference.steps,
       choice.central_difference_unscaled
           ? " (without the mass scaling that would lengthen them: no memory for its model)"
@@ -157,6 +163,7 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"seconds_per_step", run.estimate.step.seconds},
       {"estimated_run_s", run.estimate.seconds},
       {"measured_seconds_per_step", run.measured.seconds_per_step},
+      {"measured_run_s", run.measured.seconds_per_step * static_cast<double>(run.estimate.steps)},
       {"central_difference_steps", run.choice.central_difference.steps},
       {"central_difference_estimated_run_s", run.choice.central_difference.seconds},
       {"xpbd_steps", run.choice.xpbd.steps},
@@ -283,7 +290,20 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
              cost.threads < run.threads.threads
                  ? std::string("; this model's steps run on 1, too small to share")
                  : std::string());
-  fmt::print("run time         {}\n", stepper_kind(model).run_time_note(model, run.estimate));
+  // On a busy machine a step takes longer than the model's counts say (they are an idle
+  // machine's): the headline is then what the step measured now makes of the run.
+  const bool busy = run.measured.steps > 0 &&
+                    run.measured.seconds_per_step > kBusyShare * run.estimate.step.seconds;
+  if (busy) {
+    fmt::print(
+        "run time         about {} to simulate now, at the {:.3g} ms a step measured on this "
+        "machine as busy as it is; on an idle one, {}\n",
+        duration_text(run.measured.seconds_per_step * static_cast<double>(run.estimate.steps)),
+        1e3 * run.measured.seconds_per_step,
+        stepper_kind(model).run_time_note(model, run.estimate));
+  } else {
+    fmt::print("run time         {}\n", stepper_kind(model).run_time_note(model, run.estimate));
+  }
   if (stepper_kind(model).step_can_be_timed) {
     if (run.measured.steps > 0) {
       fmt::print(

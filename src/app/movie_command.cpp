@@ -7,6 +7,7 @@
 #include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
+#include "core/counted.hpp"
 #include "core/error.hpp"
 #include "io/movie_encoder.hpp"
 #include "io/png_file.hpp"
@@ -78,8 +79,8 @@ int run_movie(const MovieOptions& options) {
   progress.finish();
   movie->finish();
   if (!options.quiet) {
-    fmt::print("dinam: movie {} from {} frames ({:.1f} s)\n", movie_path.string(), info.frame_count,
-               seconds_since(start));
+    fmt::print("dinam: movie {} from {} ({:.1f} s)\n", movie_path.string(),
+               counted(info.frame_count, "frame"), seconds_since(start));
   }
   return kExitOk;
 }

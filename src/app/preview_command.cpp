@@ -11,6 +11,7 @@
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "app/render_input.hpp"
+#include "core/counted.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 #include "io/movie_encoder.hpp"
@@ -139,8 +140,9 @@ int run_preview(const RenderOptions& options) {
                "apt-get install ffmpeg\n");
   }
   if (!options.quiet) {
-    fmt::print("dinam: preview of {} frames ({}) in {} ({:.1f} s)\n", pictures.size(),
-               every_nth(every), made, seconds_since(start));
+    fmt::print("dinam: preview of {} ({}) in {} ({:.1f} s)\n",
+               counted(static_cast<long long>(pictures.size()), "frame"), every_nth(every), made,
+               seconds_since(start));
   }
   return movie ? kExitOk : kExitFailure;
 }

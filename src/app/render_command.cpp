@@ -13,6 +13,7 @@
 #include "app/command_support.hpp"
 #include "app/render_input.hpp"
 #include "cache/motion_cache.hpp"
+#include "core/counted.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 #include "core/thread_team.hpp"
@@ -162,8 +163,8 @@ int run_render(const RenderOptions& options) {
         !settled.empty()) {
       fmt::print("dinam: {}\n", settled);
     }
-    fmt::print("dinam: {} frames in {}{} ({:.1f} s: {} {:.2f} s, draw and write {:.2f} s)\n",
-               range.count(), folder.string(), movie_note, seconds_since(start),
+    fmt::print("dinam: {} in {}{} ({:.1f} s: {} {:.2f} s, draw and write {:.2f} s)\n",
+               counted(range.count(), "frame"), folder.string(), movie_note, seconds_since(start),
                cache ? "read the cache" : "simulate", frames.seconds, draw_seconds);
   }
   return exit_code;

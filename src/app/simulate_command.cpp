@@ -11,6 +11,7 @@
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "cache/motion_cache_writer.hpp"
+#include "core/counted.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 #include "core/thread_team.hpp"
@@ -200,8 +201,9 @@ int run_simulate(const SimulateOptions& options) {
         formats.emplace_back(name);
       }
     }
-    fmt::print("dinam: motion cache of {} frames in {} ({} objects, {}; {:.2f} s)\n",
-               request.frame_count, request.folder.string(), model.objects.size(),
+    fmt::print("dinam: motion cache of {} in {} ({}, {}; {:.2f} s)\n",
+               counted(request.frame_count, "frame"), request.folder.string(),
+               counted(static_cast<long long>(model.objects.size()), "object"),
                fmt::join(formats, ", "), seconds_since(start));
   }
   return kExitOk;

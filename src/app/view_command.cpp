@@ -20,6 +20,7 @@
 #include "app/viewer_page.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/base64.hpp"
+#include "core/counted.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 
@@ -291,9 +292,9 @@ int run_view(const ViewOptions& options) {
   replace_once(page, "/*DINAM_THREE*/", deflated_base64(three.data(), three.size()));
   write_output_file(output, page, "the viewer page");
   if (!options.quiet) {
-    fmt::print("dinam: {} frames of {} in {} ({:.1f} MB); open it in a web browser\n",
-               frames.size(), options.cache.string(), output.string(),
-               static_cast<double>(page.size()) / 1e6);
+    fmt::print("dinam: {} of {} in {} ({:.1f} MB); open it in a web browser\n",
+               counted(static_cast<long long>(frames.size()), "frame"), options.cache.string(),
+               output.string(), static_cast<double>(page.size()) / 1e6);
   }
   return kExitOk;
 }

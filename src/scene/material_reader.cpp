@@ -46,9 +46,10 @@ class MaterialKeys {
           names.emplace_back(preset.name);
         }
         throw_user_error(map_.loc("preset"),
-                         "'{}': no material preset is called '{}'; the presets are {} "
+                         "'{}': no material preset is called '{}'{}; the presets are {} "
                          "(docs/materials.md gives their values)",
-                         map_.path("preset"), name, fmt::join(names, ", "));
+                         map_.path("preset"), name, did_you_mean(name, names),
+                         fmt::join(names, ", "));
       }
     }
   }

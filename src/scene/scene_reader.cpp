@@ -451,6 +451,16 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
       }
     }
   }
+  // A colour is each object's own: at the top level it would colour nothing. (Looked for in the
+  // node itself: the map's own lookup would list it among the scene's keys.)
+  for (const char* key : {"color", "colour"}) {
+    if (const YAML::Node misplaced = root[key]; misplaced.IsDefined()) {
+      throw_user_error(loc_of(misplaced, file),
+                       "'{}' is not a key of the scene: each object has its own colour, as "
+                       "'color: [r, g, b]' in its entry under 'objects' (sRGB, 0 to 1)",
+                       key);
+    }
+  }
   map.finish();
   return scene;
 }

@@ -1,6 +1,7 @@
 #include "scene/yaml_map.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -65,7 +66,27 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+std::string lowered(std::string text) {
+  for (char& c : text) {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return text;
+}
+
 }  // namespace
+
+std::string did_you_mean(const std::string& given, const std::vector<std::string>& candidates) {
+  std::string hint;
+  std::size_t best = 3;  // within two edits
+  for (const std::string& candidate : candidates) {
+    const std::size_t d = edit_distance(lowered(given), lowered(candidate));
+    if (d < best) {
+      best = d;
+      hint = fmt::format(" (did you mean '{}'?)", candidate);
+    }
+  }
+  return hint;
+}
 
 FileLoc loc_of(const YAML::Node& node, const std::string& file) {
   const YAML::Mark mark = node.IsDefined() ? node.Mark() : YAML::Mark::null_mark();
@@ -338,15 +359,8 @@ void YamlMap::finish() const {
     if (asked_.contains(key)) {
       continue;
     }
-    std::string hint;
-    std::size_t best = 3;  // suggest only keys within two edits
-    for (const std::string& known : asked_) {
-      const std::size_t d = edit_distance(key, known);
-      if (d < best) {
-        best = d;
-        hint = fmt::format(" (did you mean '{}'?)", known);
-      }
-    }
+    const std::string hint =
+        did_you_mean(key, std::vector<std::string>(asked_.begin(), asked_.end()));
     std::string known_list;
     for (const std::string& known : asked_) {
       known_list += (known_list.empty() ? "" : ", ") + known;

@@ -16,6 +16,10 @@ namespace dinam {
 
 FileLoc loc_of(const YAML::Node& node, const std::string& file);
 
+// " (did you mean 'x'?)" for the candidate nearest `given` (within two edits, letters compared
+// whatever their case), or "" where none is that near.
+std::string did_you_mean(const std::string& given, const std::vector<std::string>& candidates);
+
 // The YAML document in `text`, read from `source`; throws UserError at the line and column of a
 // syntax error, naming a tab that indents a line where there is one.
 YAML::Node parse_yaml(const std::string& text, const std::filesystem::path& source);

@@ -108,8 +108,8 @@ bool StepMinimiser::quasi_newton(const Model& model, State& state, StepProblem& 
       .add_new_touches = add_new_touches,
   };
   QuasiNewtonCounts counts;
-  const bool done = minimise_quasi_newton(state.x, problem.dofs, problem.mass, scheme.hs, bar,
-                                          step, counts, quasi_);
+  const bool done = minimise_quasi_newton(state.x, problem.dofs, problem.mass, scheme.hs, bar, step,
+                                          counts, quasi_);
   stats.iterations += counts.iterations;
   stats.solve_iterations += counts.energies;
   return done;

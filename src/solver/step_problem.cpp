@@ -66,9 +66,9 @@ void StepProblem::start_contact(const Model& model, State& state, const StepSche
   friction.start_step(model, state);
   objects.start_step(model, state);
   if (state.energy_workspace.enabled) {
-    potential_at_start_ = potential_energy(model, state, potential.switches, scheme.x_start,
-                                           SpringEnergy::kWithFlow)
-                              .energy;
+    potential_at_start_ =
+        potential_energy(model, state, potential.switches, scheme.x_start, SpringEnergy::kWithFlow)
+            .energy;
   }
 }
 

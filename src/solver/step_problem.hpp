@@ -29,9 +29,9 @@ struct StepProblem {
   StepProblem(const Model& model, const StepScheme& scheme);
 
   FreeDofs dofs;
-  Eigen::VectorXd mass;    // (dofs)
-  double envelope = 0.0;   // m, the most a node of contact between objects may move in a step
-  bool any_yield = false;  // some spring can flow
+  Eigen::VectorXd mass;         // (dofs)
+  double envelope = 0.0;        // m, the most a node of contact between objects may move in a step
+  bool any_yield = false;       // some spring can flow
   std::vector<Vec3> loads;      // (n_nodes) N, F_e: the forces outside the potential
   std::vector<Vec3> predicted;  // (n_nodes) m, x̂
   // The parts of `loads`, load by load in the order of kForceKinds (empty for the other kinds),
@@ -84,8 +84,7 @@ struct StepProblem {
   // friction springs the step ended with, at x_{n+1} and at x_n (start_contact's share and the
   // friction's, from x_n kept: the state stays at x_{n+1}), and its forces at x_{n+1}. Null
   // while the energy is not tracked.
-  const ImplicitStepEnds* measure_ends(const Model& model, State& state,
-                                       const StepScheme& scheme);
+  const ImplicitStepEnds* measure_ends(const Model& model, State& state, const StepScheme& scheme);
 
   // 7. Whether contact began or ended within the step: a node met or left the ground, or a pair
   // of primitives touched or parted (contact_changed).
