@@ -41,17 +41,18 @@ bool StepMinimiser::factor(const Model& model, State& state, StepProblem& proble
   return factored_;
 }
 
-bool StepMinimiser::newton(const Model& model, State& state, StepProblem& problem,
-                           const StepScheme& scheme, double bar, ImplicitStats& stats) {
-  if (factored_h_ != scheme.hs) {  // the kept Hessian, and the region in its norm, are of another h
-    factored_ = false;
-    trust_radius_ = 0.0;
-  }
+namespace {
+
+// Runs `minimise` on the StepPotential of `problem` at state.x, with these factorisation and
+// solve: the step's gradient, energy and the friction of nodes that land, one set of callbacks
+// for either method.
+template <class Factor, class Precondition, class Minimise>
+bool with_step_potential(const Model& model, State& state, StepProblem& problem,
+                         const StepScheme& scheme, Factor& factor, Precondition& precondition,
+                         const Minimise& minimise) {
   IncrementalPotential& potential = problem.potential;
   auto gradient = [&](Vector& g) { potential.gradient(g); };
   auto energy = [&] { return potential.energy(); };
-  auto factor_here = [&] { return factor(model, state, problem, scheme.hs); };
-  auto precondition = [&](const Vector& r, Vector& solved) { solver_.solve(r, solved); };
   auto join_new_touches = [&] {
     return problem.friction.join_new_touches(model, scheme.x_start, state.x);
   };
@@ -61,14 +62,30 @@ bool StepMinimiser::newton(const Model& model, State& state, StepProblem& proble
   const StepPotential step{
       .gradient = gradient,
       .energy = energy,
-      .factor = factor_here,
+      .factor = factor,
       .precondition = precondition,
       .join_new_touches = join_new_touches,
       .add_new_touches = add_new_touches,
   };
+  return minimise(step);
+}
+
+}  // namespace
+
+bool StepMinimiser::newton(const Model& model, State& state, StepProblem& problem,
+                           const StepScheme& scheme, double bar, ImplicitStats& stats) {
+  if (factored_h_ != scheme.hs) {  // the kept Hessian, and the region in its norm, are of another h
+    factored_ = false;
+    trust_radius_ = 0.0;
+  }
+  auto factor_here = [&] { return factor(model, state, problem, scheme.hs); };
+  auto precondition = [&](const Vector& r, Vector& solved) { solver_.solve(r, solved); };
   NewtonCounts counts;
-  const bool done = minimise_step(state.x, problem.dofs, problem.mass, scheme.hs, bar, step,
-                                  factored_, trust_radius_, counts, newton_);
+  const bool done = with_step_potential(
+      model, state, problem, scheme, factor_here, precondition, [&](const StepPotential& step) {
+        return minimise_step(state.x, problem.dofs, problem.mass, scheme.hs, bar, step, factored_,
+                             trust_radius_, counts, newton_);
+      });
   stats.iterations += counts.iterations;
   stats.solve_iterations += counts.solve_iterations;
   stats.factorizations += counts.factorizations;
@@ -89,27 +106,14 @@ bool StepMinimiser::quasi_newton(const Model& model, State& state, StepProblem& 
     quasi_.forget();
     stats.factorizations += 1;
   }
-  auto gradient = [&](Vector& g) { potential.gradient(g); };
-  auto energy = [&] { return potential.energy(); };
   auto no_factor = [] { return false; };
   auto precondition = [&](const Vector& r, Vector& solved) { constant_.solve(r, solved); };
-  auto join_new_touches = [&] {
-    return problem.friction.join_new_touches(model, scheme.x_start, state.x);
-  };
-  auto add_new_touches = [&] {
-    return problem.friction.add_new_touches(model, scheme.x_start, state.x);
-  };
-  const StepPotential step{
-      .gradient = gradient,
-      .energy = energy,
-      .factor = no_factor,
-      .precondition = precondition,
-      .join_new_touches = join_new_touches,
-      .add_new_touches = add_new_touches,
-  };
   QuasiNewtonCounts counts;
-  const bool done = minimise_quasi_newton(state.x, problem.dofs, problem.mass, scheme.hs, bar, step,
-                                          counts, quasi_);
+  const bool done = with_step_potential(
+      model, state, problem, scheme, no_factor, precondition, [&](const StepPotential& step) {
+        return minimise_quasi_newton(state.x, problem.dofs, problem.mass, scheme.hs, bar, step,
+                                     counts, quasi_);
+      });
   stats.iterations += counts.iterations;
   stats.solve_iterations += counts.energies;
   return done;
