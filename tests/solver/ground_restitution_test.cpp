@@ -99,7 +99,10 @@ objects:
 // velocities, which the integrator takes where its energy is lower). Where it starts changes not
 // where it ends: the wire comes to rest lying flat, every node sunk into the ground by its weight
 // over the softened penalty, g/ω_c² with ω_c h = kImplicitGroundFrequency (15.3 µm), to a
-// micrometre. Bounds: half again the iterations measured, and twice the splits.
+// micrometre. Bounds: half again the iterations first measured (352), and under the 11 splits
+// of the slowed start: where a step splits hangs on the factorisations' last bits (CHOLMOD's
+// kernels differ from CPU to CPU): 409 iterations and 6 splits in the release build, 453 and 9
+// under the sanitizers, on the same machine.
 TEST(GroundRestitution, AStiffWireLandingCornerFirstIsNotSlowedByItsNodesRebounds) {
   const Model model = build_model(test::scene_from_yaml(R"(version: 1
 duration: 1
@@ -118,7 +121,7 @@ objects:
   std::printf("stiff wire landing corner first: %lld Newton iterations, %lld splits over 1 s\n",
               static_cast<long long>(stats.iterations), static_cast<long long>(stats.splits));
   EXPECT_LE(stats.iterations, 530);
-  EXPECT_LE(stats.splits, 6);
+  EXPECT_LE(stats.splits, 10);
   const double omega = kImplicitGroundFrequency / h;
   const double resting = 0.004 - 9.81 / (omega * omega);
   double lowest = 1.0;
