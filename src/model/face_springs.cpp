@@ -256,11 +256,12 @@ MaterialDesc sheet_bar(const MaterialDesc& material, const SheetEdge& edge) {
 }
 
 // The warnings of a sheet its mesh cannot show: folds under two bars wide, and triangles that
-// shear as a lattice does rather than as the cloth.
+// shear as a lattice does rather than as the cloth. None for an object pinned whole (an obstacle,
+// a collider following its track): it never bends or shears, whatever its mesh.
 void warn_of_sheet_mesh(const ObjectDesc& object, std::vector<double> lengths,
                         Index lattice_triangles, std::vector<std::string>& warnings) {
   const MaterialDesc& material = object.material;
-  if (lengths.empty() || !material.sheet) {
+  if (lengths.empty() || !material.sheet || object.pins.all) {
     return;
   }
   const SheetDesc& s = *material.sheet;

@@ -170,6 +170,11 @@ TEST(MaterialReader, ASheetTooSupplyForItsMeshIsWarned) {
   const Model fine = build_model(
       scene_with("{grid: {width: 0.1, height: 0.1, columns: 10, rows: 10}}", "{preset: silk}"));
   EXPECT_TRUE(fine.warnings.empty()) << fine.warnings.front();
+  // Pinned whole (an obstacle, the Blender add-on's collider) it never bends: nothing to warn of.
+  SceneDescription obstacle = scene_with(kGrid, "{preset: silk}");
+  obstacle.objects[0].pins.all = true;
+  const Model still = build_model(obstacle);
+  EXPECT_TRUE(still.warnings.empty()) << still.warnings.front();
 }
 
 }  // namespace
