@@ -2,6 +2,7 @@
 // tolerance kept beside them (snapshot/tolerance_file.hpp; goldens depend on the exact Mesa/LLVM
 // build, so never byte for byte), with a JUnit XML and an HTML report for CI.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +26,7 @@
 #include "run/frame_range.hpp"
 #include "run/frame_source.hpp"
 #include "scene/scene_description.hpp"
+#include "snapshot/look_probe.hpp"
 #include "snapshot/region_weights.hpp"
 #include "snapshot/snapshot_report.hpp"
 #include "snapshot/tolerance_file.hpp"
@@ -75,6 +77,124 @@ ImageTolerance with_command_line(ImageTolerance limits, const SnapshotOptions& o
   return limits;
 }
 
+// `frame` drawn with `list` and with `changed` (the subject's look changed,
+// snapshot/look_probe.hpp) by `renderer`, the two compared under `limits` and the frame's regions;
+// `drawn` is the first where the caller has it.
+ImageComparison look_change_comparison(Renderer& renderer, const DrawList& list,
+                                       const DrawList& changed, const Shot& shot,
+                                       const SimulatedFrames& frames, int frame,
+                                       const FrameTolerance& tolerance,
+                                       const ImageTolerance& limits, Image drawn = {}) {
+  if (drawn.rgba.empty()) {
+    draw_frames(renderer, list, frames, shot.cameras, frame, frame,
+                [&](int, const Image& image) { drawn = image; });
+  }
+  Image probe;
+  draw_frames(renderer, changed, frames, shot.cameras, frame, frame,
+              [&](int, const Image& image) { probe = image; });
+  const std::vector<float> weights =
+      region_weights(tolerance.regions, drawn.width, drawn.height,
+                     shot.cameras.frames[static_cast<std::size_t>(frame - 1)]);
+  return compare_images(probe, drawn, limits, weights);
+}
+
+// One object of a scene probed at --update: its points, the list with its look changed, and the
+// frames whose goldens would pass that change.
+struct ObjectProbe {
+  std::string name;
+  std::vector<std::uint8_t> chosen;  // its points among a frame's
+  DrawList changed;
+  std::vector<int> blind_frames;
+  double most_differing = 0.0;   // the largest share of differing pixels the change made there
+  double least_differing = 1.0;  // and the smallest
+  ImageTolerance limits;         // of the first blind frame
+  FrameTolerance tolerance;      // of the first blind frame
+};
+
+std::vector<ObjectProbe> object_probes(const Model& model, const DrawList& list) {
+  std::vector<ObjectProbe> probes;
+  for (const ModelObject& object : model.objects) {
+    ObjectProbe probe;
+    probe.name = object.name;
+    probe.chosen.assign(static_cast<std::size_t>(model.node_count()), 0);
+    std::fill_n(probe.chosen.begin() + object.first_node, object.node_count, std::uint8_t{1});
+    probe.changed = with_changed_look(list, probe.chosen);
+    probes.push_back(std::move(probe));
+  }
+  return probes;
+}
+
+// What would see an object's look change that `probe` found the goldens blind to, tried now on
+// its first blind frame: a lower threshold where no pixel differed by more than it; else a larger
+// --size (up to 4×), else a lower max_differing.
+std::string what_sees_it(const SceneDescription& scene, const Shot& shot,
+                         const SimulatedFrames& frames, const ObjectProbe& probe) {
+  const int first = probe.blind_frames.front();
+  const auto compare_at = [&](int scale, const ImageTolerance& limits) {
+    SceneDescription sized = scene;
+    sized.image_width *= scale;
+    sized.image_height *= scale;
+    OsmesaRenderer renderer(render_settings(sized));
+    return look_change_comparison(renderer, shot.draw_list, probe.changed, shot, frames, first,
+                                  probe.tolerance, limits);
+  };
+  if (probe.least_differing == 0.0) {
+    for (const int threshold : {16, 12, 8}) {
+      ImageTolerance lower = probe.limits;
+      lower.threshold = threshold;
+      if (!compare_at(1, lower).matches(lower)) {
+        return fmt::format(
+            "in frame {} no pixel differs by more than the threshold ({}); threshold: {} for the "
+            "scene in the tolerance file sees it",
+            first, probe.limits.threshold, threshold);
+      }
+    }
+    return fmt::format(
+        "in frame {} no pixel differs by more than the threshold ({}), nor by more than 8: the "
+        "object's colour hardly shows in the picture (a metal, a shadowed or hidden part)",
+        first, probe.limits.threshold);
+  }
+  for (int scale = 2; scale <= 4; ++scale) {
+    const ImageComparison comparison = compare_at(scale, probe.limits);
+    if (!comparison.matches(probe.limits)) {
+      return fmt::format(
+          "--size {}x{} sees it (the change fails frame {} there, {:.2f} % of the pixels "
+          "differing); give that size both when updating and when comparing",
+          scale * scene.image_width, scale * scene.image_height, first,
+          100.0 * comparison.differing_fraction);
+    }
+  }
+  // A thin wire covers the same share of the picture at any size: then the share allowed must
+  // fall below what the change makes (half of it, so that the margin is the change's own).
+  return fmt::format(
+      "no --size up to {}x{} sees it; max_differing: {:.2g} for the scene in the tolerance file "
+      "does (half the {:.2f} % the change makes at least), or weigh a box around the object there",
+      4 * scene.image_width, 4 * scene.image_height, 0.5 * probe.least_differing,
+      100.0 * probe.least_differing);
+}
+
+// At --update, where the goldens would not see an object's look change: a warning that says how
+// thin the object is drawn and what would see it.
+void warn_of_blind_goldens(const SceneDescription& scene, const Shot& shot,
+                           const SimulatedFrames& frames, const ObjectProbe& probe) {
+  const int first = probe.blind_frames.front();
+  const float wire =
+      median_wire_width(shot.draw_list, frames.at(first),
+                        shot.cameras.frames[static_cast<std::size_t>(first - 1)], probe.chosen);
+  const std::string thin = wire > 0.0f ? fmt::format("; its wires are drawn about {:.1f} px wide",
+                                                     wire * static_cast<float>(scene.image_height))
+                                       : "";
+  fmt::print(stderr,
+             "snapshot {}: warning: these goldens would not see object '{}' change: the green of "
+             "its colours moved by {:g} passes in {} {} at {}x{} ({:.2f} % of the pixels differ "
+             "at most, {:g} % allowed){}. {} (docs/snapshots.md, \"Thin subjects\")\n",
+             scene.name, probe.name, kLookChange,
+             probe.blind_frames.size() == 1 ? "frame" : "frames",
+             fmt::join(probe.blind_frames, ", "), scene.image_width, scene.image_height,
+             100.0 * probe.most_differing, 100.0 * probe.limits.max_differing_fraction, thin,
+             what_sees_it(scene, shot, frames, probe));
+}
+
 // Draws the chosen frames of one scene and compares (or, with --update, writes) each. Returns the
 // scene's name.
 std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tolerances,
@@ -103,6 +223,9 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
   // frame by frame (`chosen` ascends), as draw_frames does.
   DrawList torn;
   std::size_t tears_hidden = 0;
+  // For --update: each object's look changed, and the frames whose goldens would pass it.
+  std::vector<ObjectProbe> probes =
+      options.update ? object_probes(model, draw_list) : std::vector<ObjectProbe>{};
   if (options.framing && !frames.tears.empty()) {
     torn = draw_list;
   }
@@ -132,19 +255,33 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
     const std::filesystem::path golden = options.golden / (result.name + ".png");
     std::error_code ec;
     const bool have_golden = std::filesystem::is_regular_file(golden, ec);
+    const FrameTolerance tolerance = tolerances.for_frame(ImageTolerance{}, scene.name, frame);
+    result.limits = with_command_line(tolerance.limits, options);
     if (options.update) {
       create_folder(options.golden);
       write_png(golden, result.actual, PngOptions{9, true});  // goldens are kept: make them small
       result.outcome = FrameOutcome::kUpdated;
       result.detail = fmt::format("{} {}", have_golden ? "updated" : "created", golden.string());
+      for (ObjectProbe& probe : probes) {
+        const ImageComparison comparison =
+            look_change_comparison(renderer, draw_list, probe.changed, shot, frames, frame,
+                                   tolerance, result.limits, result.actual);
+        if (comparison.matches(result.limits)) {
+          if (probe.blind_frames.empty()) {
+            probe.limits = result.limits;
+            probe.tolerance = tolerance;
+          }
+          probe.blind_frames.push_back(frame);
+          probe.most_differing = std::max(probe.most_differing, comparison.differing_fraction);
+          probe.least_differing = std::min(probe.least_differing, comparison.differing_fraction);
+        }
+      }
     } else if (!have_golden) {
       result.outcome = FrameOutcome::kNoGolden;
       result.detail =
           fmt::format("no golden image {}; run with --update to create it", golden.string());
     } else {
       result.expected = read_png(golden);
-      const FrameTolerance tolerance = tolerances.for_frame(ImageTolerance{}, scene.name, frame);
-      result.limits = with_command_line(tolerance.limits, options);
       result.has_regions = !tolerance.regions.empty();
       const std::vector<float> weights =
           region_weights(tolerance.regions, result.actual.width, result.actual.height,
@@ -202,6 +339,11 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
                  result.name, 100.0f * result.subject_width, 100.0f * result.subject_height);
     }
     results.push_back(std::move(result));
+  }
+  for (const ObjectProbe& probe : probes) {
+    if (!probe.blind_frames.empty()) {
+      warn_of_blind_goldens(scene, shot, frames, probe);
+    }
   }
   return scene.name;
 }

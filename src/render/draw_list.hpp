@@ -2,6 +2,8 @@
 // What the renderer draws, in its own terms: segments between points, spheres at points, surfaces
 // over points, a ground and a light. render/ never sees springs or materials; app/ fills this from
 // the model once, and each frame only the point positions (and the camera) change.
+#include <atomic>
+#include <cstdint>
 #include <vector>
 
 #include "core/image.hpp"
@@ -9,6 +11,14 @@
 #include "core/types.hpp"
 
 namespace dinam {
+
+// A number no draw list's contents have had before in this process. A renderer keeps what it
+// uploaded of a list by this number alone, so two lists never pass for one: copies made in turn
+// at one address (a tear's, a snapshot probe's) each get their own.
+inline std::uint64_t new_draw_list_revision() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
 
 struct RenderCamera {
   Vec3f position{4.0f, -6.0f, 3.0f};
@@ -50,9 +60,10 @@ struct DrawList {
   std::vector<Eigen::Vector2f> point_uv;  // (n_points) texture coordinates of surface points
   std::vector<SurfaceBatch> surfaces;
   std::vector<Image> textures;  // sRGB-encoded RGBA, as read from PNG files
-  // Bumped whenever the points' colours, the surfaces or the textures change after the list was
-  // first drawn (a tear hides triangles), so that the renderer uploads them again.
-  int revision = 0;
+  // Its contents' number: a new one (new_draw_list_revision) whenever the points' colours, the
+  // surfaces or the textures change after the list was made (a tear hides triangles), so that a
+  // renderer uploads them again. A copy shares it while its contents are the same.
+  std::uint64_t revision = new_draw_list_revision();
 
   bool ground_visible = true;
   bool ground_checker = true;            // a checkerboard, else one plain colour

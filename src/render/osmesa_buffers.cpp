@@ -159,10 +159,9 @@ void OsmesaRenderer::upload_backdrop(const DrawList& list) {
 }
 
 void OsmesaRenderer::upload_static(const DrawList& list) {
-  if (static_list_ == &list && static_revision_ == list.revision) {
+  if (static_revision_ == list.revision) {
     return;
   }
-  static_list_ = &list;
   static_revision_ = list.revision;
   // Colour, texture coordinates and finish of every point, for the surfaces.
   std::vector<float> attributes_data;

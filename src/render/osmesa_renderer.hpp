@@ -96,9 +96,9 @@ class OsmesaRenderer final : public Renderer {
   std::vector<float> backdrop_shape_;  // centre, normal, radius, curve, height it was made for
   int sphere_index_count_ = 0;
 
-  // What upload_static last saw, so a list is uploaded once and a new one replaces it.
-  const DrawList* static_list_ = nullptr;
-  int static_revision_ = 0;
+  // The revision upload_static last uploaded, so a list is uploaded once and a new one (or new
+  // contents) replaces it; 0 is no list's.
+  std::uint64_t static_revision_ = 0;
   std::vector<unsigned> batch_ebos_;     // (n_batches)
   std::vector<int> batch_index_counts_;  // (n_batches)
   std::vector<unsigned> texture_ids_;    // (n_textures)

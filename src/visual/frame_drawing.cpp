@@ -24,7 +24,9 @@ void draw_frames(Renderer& renderer, const DrawList& list, const SimulatedFrames
     while (shown < frames.tears.size() && frames.tears[shown].frame <= frame) {
       hide_torn_bar(frames.tears[shown++], torn);
     }
-    torn.revision += shown > before ? 1 : 0;
+    if (shown > before) {
+      torn.revision = new_draw_list_revision();
+    }
     const auto held = static_cast<std::size_t>(frame - frames.first_frame);
     samples.clear();
     if (frames.instants.empty()) {

@@ -21,6 +21,12 @@ class PictureProjection {
     tan_half_ = std::tan(0.5f * camera.fov_degrees * 3.14159265f / 180.0f);
   }
 
+  // How much of the picture's height a length across the view at `p` spans; 0 behind the eye.
+  float height_fraction(const Vec3f& p, float length) const {
+    const float depth = (p - eye_).dot(forward_);
+    return depth > 0.0f ? 0.5f * length / (depth * tan_half_) : 0.0f;
+  }
+
   // Adds a sphere of `radius` at `p` to `extent`.
   void add(const Vec3f& p, float radius, PictureExtent& extent) const {
     const Vec3f d = p - eye_;
@@ -97,6 +103,30 @@ PictureExtent picture_extent(const DrawList& list, const std::vector<Vec3f>& pos
     }
   }
   return extent;
+}
+
+float median_wire_width(const DrawList& list, const std::vector<Vec3f>& positions,
+                        const RenderCamera& camera, const std::vector<std::uint8_t>& chosen) {
+  const PictureProjection projection(camera, 1.0f);
+  std::vector<float> widths;
+  widths.reserve(list.segment_radius.size());
+  for (std::size_t s = 0; s < list.segment_radius.size(); ++s) {
+    const float radius = std::abs(list.segment_radius[s]);
+    const auto first = static_cast<std::size_t>(list.segment_points[2 * s]);
+    if (radius == 0.0f || (!chosen.empty() && chosen[first] == 0)) {  // torn, or not chosen
+      continue;
+    }
+    const Vec3f middle =
+        0.5f *
+        (positions[first] + positions[static_cast<std::size_t>(list.segment_points[2 * s + 1])]);
+    widths.push_back(projection.height_fraction(middle, 2.0f * radius));
+  }
+  if (widths.empty()) {
+    return 0.0f;
+  }
+  const auto middle = widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2);
+  std::nth_element(widths.begin(), middle, widths.end());
+  return *middle;
 }
 
 std::string framing_problem(const PictureExtent& extent, float min_fill, float slack) {

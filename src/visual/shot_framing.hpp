@@ -2,6 +2,7 @@
 // How a frame shows what it draws: where the drawn subject (every wire, joint and surface; not
 // the ground) lies in the picture, and whether that makes a shot — the whole subject inside the
 // frame, large enough to read. `dinam snapshot --framing` checks it on the frames it compares.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,13 @@ struct PictureExtent {
 // visual/torn_drawing.hpp) do not count.
 PictureExtent picture_extent(const DrawList& list, const std::vector<Vec3f>& positions,
                              const RenderCamera& camera, float aspect);
+
+// How thick wires show: the drawn diameter of the median wire of `list` at `positions` (of those
+// whose first point `chosen` marks, where it is not empty), as a fraction of the picture's height;
+// 0 where it draws no such wire. A snapshot uses it to say why a thin object escapes its
+// comparison (snapshot/look_probe.hpp).
+float median_wire_width(const DrawList& list, const std::vector<Vec3f>& positions,
+                        const RenderCamera& camera, const std::vector<std::uint8_t>& chosen = {});
 
 // What is wrong with the shot, in words ("" when nothing): a side where the frame cuts the
 // subject (by more than `slack` of the picture, which the anti-aliased edge of a wire grazing it

@@ -23,7 +23,7 @@ struct TornBar {
 void record_tears(const Model& model, const State& state, int frame, std::vector<TornBar>& tears);
 
 // Hides the bar in `list`: its segment gets radius 0 and every triangle with it as an edge
-// collapses to a point (a quad's other triangle stays). The caller bumps list.revision.
+// collapses to a point (a quad's other triangle stays). The caller gives the list a new revision.
 void hide_torn_bar(const TornBar& bar, DrawList& list);
 
 }  // namespace dinam

@@ -54,7 +54,8 @@ def block(page, first):
 
 def run_block(run, text):
     """Runs a shell block's commands as written, from the run's folder: `build/dinam` and `dinam`
-    are the program under test, `scenes/` the shipped ones."""
+    are the program under test, `scenes/` the shipped ones. Gives what each command printed."""
+    printed = []
     commands = text.replace("\\\n", " ")
     for line in commands.splitlines():
         line = line.split("#")[0].strip() if not line.strip().startswith("#") else ""
@@ -66,6 +67,8 @@ def run_block(run, text):
         finished = run.dinam(*arguments, ok=False)
         expect(finished.code in (0, 1) if words[1] == "snapshot" else finished.code == 0,
                f"`{line}` exited {finished.code}: {finished.tail()}")
+        printed.append(finished.output)
+    return printed
 
 
 @promise(70, "every docs example that runs dinam is run by a promise here or says why not")
@@ -133,9 +136,29 @@ def motion_cache_three_chunks(run):
                                 "build/dinam simulate scenes/flag.yaml -o out/flag/cache")
 
 
-@promise(70, "docs/snapshots.md: write the goldens, then compare with both reports")
+def same_warning(shown, printed):
+    """Whether the warning the page shows is the one printed: the words and the pixel widths as
+    shown, each percentage within 0.05 points (another Mesa build's rounding) and the suggested
+    max_differing within a fifth."""
+    measured = list(re.finditer(r"(\d+\.\d+)(?= %)|(?<=max_differing: )(\d+\.\d+)", shown))
+    pattern, start = "", 0
+    for number in measured:
+        pattern += re.escape(shown[start:number.start()]) + r"(\d+\.\d+)"
+        start = number.end()
+    found = re.search(pattern + re.escape(shown[start:]), printed)
+    if not found:
+        return False
+    return all(abs(float(p) - float(s.group())) <= (0.05 if s.group(1) else 0.2 * float(s.group()))
+               for s, p in zip(measured, found.groups()))
+
+
+@promise(70, "docs/snapshots.md: write the goldens (the rope warned of as the page shows), then "
+             "compare with both reports")
 def snapshots_page(run):
-    run_block(run, block("docs/snapshots.md", "# Once, and again whenever"))
+    update, _ = run_block(run, block("docs/snapshots.md", "# Once, and again whenever"))
+    shown = block("docs/snapshots.md", "snapshot rope: warning:").strip()
+    expect(same_warning(shown, update),
+           f"the page shows\n{shown}\n--update printed\n{update.strip()}")
     goldens = sorted(p.name for p in run.path("tests/golden").glob("*.png"))
     reports = [run.path(name) for name in ("snapshots.xml", "snapshots.html")]
     expect(len(goldens) == 6 and all(r.is_file() for r in reports),

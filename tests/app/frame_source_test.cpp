@@ -116,11 +116,17 @@ TEST(FrameSource, TornBarsLeaveTheDrawingFromTheirFrame) {
       image = Image(4, 4);
     }
     std::vector<int> collapsed_per_frame;
-    std::vector<int> revisions;
+    std::vector<std::uint64_t> revisions;
   } renderer;
   draw_frames(renderer, list, p.frames, p.cameras, 3, 7, [](int, const Image&) {});
   EXPECT_EQ(renderer.collapsed_per_frame, (std::vector<int>{0, 0, 2, 2, 2}));
   EXPECT_LT(renderer.revisions[1], renderer.revisions[2]);
+  EXPECT_EQ(renderer.revisions[2], renderer.revisions[3]);  // nothing newly torn: drawn as it was
+  // Drawn again, the torn copy is made afresh at the same place: a new revision all the same, so
+  // a renderer never takes it for the last call's copy with its tears.
+  const std::uint64_t before = renderer.revisions.back();
+  draw_frames(renderer, list, p.frames, p.cameras, 5, 5, [](int, const Image&) {});
+  EXPECT_NE(renderer.revisions.back(), before);
 }
 
 TEST(FrameSource, AutoCameraKeepsStillAndSeesEveryPointOfEveryFrame) {

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "test_support.hpp"
@@ -25,6 +26,7 @@ struct Banner {
   double pole_x = 0.0;    // m
   const char* cloth_color = "[0.80, 0.25, 0.15]";
   const char* pole_color = "[0.55, 0.55, 0.58]";
+  double pole_radius = 0.02;  // m
 
   std::string yaml() const {
     return fmt::format(R"(version: 1
@@ -35,7 +37,7 @@ camera: {{position: [{0}, {4}, 1.3], look_at: [{0}, 0, 1.2], fov: 40}}
 objects:
   - name: pole
     mesh: {{polyline: {{points: [[{1}, 0, 0], [{1}, 0, 1.7]], segments: 4}}}}
-    material: {{density: 7850, youngs_modulus: 2.0e11, radius: 0.02}}
+    material: {{density: 7850, youngs_modulus: 2.0e11, radius: {5}}}
     pinned: {{all: true}}
     color: {3}
   - name: cloth
@@ -47,7 +49,7 @@ objects:
     pinned: {{box: {{min: [0, -0.1, 0.9], max: [0.05, 0.1, 1.7]}}}}
     color: {2}
 )",
-                       camera_x, pole_x, cloth_color, pole_color, -distance);
+                       camera_x, pole_x, cloth_color, pole_color, -distance, pole_radius);
   }
 };
 
@@ -115,6 +117,40 @@ TEST_F(Snapshot, AChangedColourAndAMovedPoleFail) {
   const CommandResult pole = snapshot(moved);
   EXPECT_EQ(pole.exit_code, 1) << pole.output;
   EXPECT_NE(pole.output.find("DIFFERS"), std::string::npos) << pole.output;
+}
+
+// A pole 1 cm thick is drawn under a pixel wide at 320 × 180 from 3.2 m: its colour could change
+// and its goldens pass. --update says so, naming the pole (not the cloth) and a max_differing that
+// sees it; under that, a change of the pole's green by 0.13 (0.55 → 0.42) fails, which under the
+// default limits passes.
+TEST_F(Snapshot, UpdateWarnsOfAnObjectTooThinForItsGoldensToSee) {
+  Banner thin;
+  thin.pole_radius = 0.005;
+  const CommandResult made = snapshot(thin, "--update");
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  EXPECT_NE(made.output.find("warning: these goldens would not see object 'pole' change"),
+            std::string::npos)
+      << made.output;
+  EXPECT_EQ(made.output.find("see object 'cloth'"), std::string::npos) << made.output;
+  std::smatch found;
+  ASSERT_TRUE(std::regex_search(made.output, found,
+                                std::regex(R"(max_differing: ([0-9.e-]+) for the scene)")))
+      << made.output;
+  Banner repainted = thin;
+  repainted.pole_color = "[0.55, 0.42, 0.58]";
+  const CommandResult unseen = snapshot(repainted);
+  EXPECT_EQ(unseen.exit_code, 0) << unseen.output;
+  write_tolerances(
+      fmt::format("version: 1\nscenes:\n  banner: {{max_differing: {}}}\n", found[1].str()));
+  const CommandResult seen = snapshot(repainted);
+  EXPECT_EQ(seen.exit_code, 1) << seen.output;
+  EXPECT_NE(seen.output.find("DIFFERS"), std::string::npos) << seen.output;
+  // And the goldens still pass the pole as it was, under the lower limit.
+  const CommandResult same = snapshot(thin, "--threads 1");
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+  // The goldens' own check: under the limit that sees it, --update warns no more.
+  const CommandResult again = snapshot(thin, "--update");
+  EXPECT_EQ(again.output.find("would not see"), std::string::npos) << again.output;
 }
 
 // --framing: the banner seen from 4 m passes (its 1.7 m pole spans 58 % of the height; from
