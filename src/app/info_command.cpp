@@ -16,7 +16,7 @@
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "core/counted.hpp"
-#include "core/thread_team.hpp"
+#include "core/thread_governor.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
@@ -159,6 +159,8 @@ void print_json(const SceneDescription& scene, const Model& model, const TimeSte
       {"estimated_steps", run.estimate.steps},
       {"threads", run.estimate.step.threads},
       {"threads_chosen", run.threads.threads},
+      {"threads_most", run.threads.most},
+      {"threads_adapt", run.threads.adapts},
       {"threads_reason", run.threads.reason},
       {"seconds_per_step", run.estimate.step.seconds},
       {"estimated_run_s", run.estimate.seconds},
@@ -287,7 +289,7 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
   const StepCost& cost = run.estimate.step;
   fmt::print("threads          {} ({}){}\n", run.threads.threads,
              run.threads.reason.empty() ? "set by the program" : run.threads.reason,
-             cost.threads < run.threads.threads
+             cost.threads < run.threads.most
                  ? std::string("; this model's steps run on 1, too small to share")
                  : std::string());
   // On a busy machine a step takes longer than the model's counts say (they are an idle
@@ -342,10 +344,10 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   // A step of the implicit integrator is a Newton solve, which the probe (central differences'
   // step) does not measure.
   const RunFigures run{
-      estimate_run(scene, model, timestep, thread_count()),
+      estimate_run(scene, model, timestep, thread_policy().most),
       !stepper_kind(model).step_can_be_timed || !room_for_a_run ? MeasuredStep{}
                                                                 : measure_step_now(model, timestep),
-      threads, compare_integrators(scene, model, thread_count(), room_for_another_model)};
+      threads, compare_integrators(scene, model, thread_policy().most, room_for_another_model)};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {
     pinned += model.pinned(i) ? 1 : 0;

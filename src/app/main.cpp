@@ -14,7 +14,7 @@
 #include "app/commands.hpp"
 #include "core/cpu_share.hpp"
 #include "core/error.hpp"
-#include "core/thread_team.hpp"
+#include "core/thread_governor.hpp"
 #include "core/version.hpp"
 
 namespace {
@@ -72,7 +72,7 @@ int run(int argc, char** argv) {
 
   try {
     const ThreadChoice thread_choice = choose_threads(threads);
-    set_thread_count(thread_choice.threads);
+    set_thread_policy(thread_choice);
     // OSMesa's llvmpipe draws on as many threads as the machine has CPUs unless told otherwise:
     // the same share as the simulation's, unless the user has set it.
     setenv("LP_NUM_THREADS", std::to_string(thread_choice.threads).c_str(), 0);

@@ -4,7 +4,7 @@
 
 #include "app/command_support.hpp"
 #include "core/error.hpp"
-#include "core/thread_team.hpp"
+#include "core/thread_governor.hpp"
 #include "run/energy_csv.hpp"
 #include "run/memory_estimate.hpp"
 #include "run/progress.hpp"
@@ -59,7 +59,8 @@ RenderInput read_render_input(const RenderOptions& options, void (*adjust)(Scene
                         available_memory(), options.force);
   if (input.timestep) {
     refuse_if_too_long(scene, model, *input.timestep,
-                       estimate_run(scene, model, *input.timestep, thread_count()), options.force);
+                       estimate_run(scene, model, *input.timestep, thread_policy().most),
+                       options.force);
   }
   input.textures = read_textures(scene);
   return input;

@@ -14,7 +14,7 @@
 #include "core/counted.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
-#include "core/thread_team.hpp"
+#include "core/thread_governor.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "run/energy_csv.hpp"
@@ -115,8 +115,8 @@ int run_simulate(const SimulateOptions& options) {
   refuse_if_over_budget(options.scene, scene.duration_loc,
                         estimate_memory(scene, model, {2, options.energy, 0, 0}),
                         available_memory(), options.force);
-  refuse_if_too_long(scene, model, timestep, estimate_run(scene, model, timestep, thread_count()),
-                     options.force);
+  refuse_if_too_long(scene, model, timestep,
+                     estimate_run(scene, model, timestep, thread_policy().most), options.force);
   const auto start = Clock::now();
   const StopOnSignals stop_on_signals;
   SettleOutcome settled;

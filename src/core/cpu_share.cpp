@@ -145,6 +145,25 @@ std::optional<double> cpu_max_quota(const std::string& text) {
   return static_cast<double>(*q) / static_cast<double>(*p);
 }
 
+std::optional<double> throttled_share(const std::string& cpu_stat) {
+  std::istringstream lines(cpu_stat);
+  std::string key;
+  long long value = 0;
+  std::optional<long long> periods;
+  std::optional<long long> throttled;
+  while (lines >> key >> value) {
+    if (key == "nr_periods") {
+      periods = value;
+    } else if (key == "nr_throttled") {
+      throttled = value;
+    }
+  }
+  if (!periods || !throttled || *periods <= 0 || *throttled < 0) {
+    return std::nullopt;
+  }
+  return std::min(1.0, static_cast<double>(*throttled) / static_cast<double>(*periods));
+}
+
 CpuShare read_cpu_share(const std::filesystem::path& cgroup_root,
                         const std::filesystem::path& proc_cgroup) {
   CpuShare share;
@@ -158,6 +177,12 @@ CpuShare read_cpu_share(const std::filesystem::path& cgroup_root,
   const Quota quota = read_quota(cgroup_root, proc_cgroup);
   share.quota_cpus = quota.cpus;
   share.quota_source = quota.source;
+  if (quota.cpus) {
+    // v2 and v1 alike keep nr_periods and nr_throttled in cpu.stat beside the quota.
+    const std::optional<std::string> stat =
+        read_text(std::filesystem::path(quota.source).parent_path() / "cpu.stat");
+    share.throttled_share = stat ? throttled_share(*stat) : std::nullopt;
+  }
   if (const char* slurm = std::getenv("SLURM_CPUS_PER_TASK")) {
     if (const std::optional<long long> cpus = positive_whole(slurm)) {
       share.slurm_cpus = static_cast<int>(std::min<long long>(*cpus, 1 << 20));
@@ -167,9 +192,10 @@ CpuShare read_cpu_share(const std::filesystem::path& cgroup_root,
 }
 
 ThreadChoice choose_threads(const CpuShare& share, std::optional<int> requested,
-                            const char* dinam_threads) {
+                            const char* dinam_threads, const std::optional<RunnableNow>& now) {
   if (requested) {
-    return {std::max(1, *requested), fmt::format("--threads {}", *requested)};
+    const int threads = std::max(1, *requested);
+    return {threads, threads, false, threads, fmt::format("--threads {}", *requested)};
   }
   if (dinam_threads != nullptr) {
     const std::optional<long long> threads = positive_whole(dinam_threads);
@@ -180,28 +206,54 @@ ThreadChoice choose_threads(const CpuShare& share, std::optional<int> requested,
                        "is given",
                        dinam_threads);
     }
-    return {static_cast<int>(*threads), fmt::format("DINAM_THREADS={}", *threads)};
+    const int fixed = static_cast<int>(*threads);
+    return {fixed, fixed, false, fixed, fmt::format("DINAM_THREADS={}", *threads)};
   }
-  int threads = share.affinity_cpus;
+  int most = share.affinity_cpus;
   std::string reason = fmt::format("{} of the machine's {} CPUs in the affinity mask",
                                    share.affinity_cpus, share.online_cpus);
   if (share.quota_cpus) {
-    const int quota = std::max(1, static_cast<int>(std::ceil(*share.quota_cpus - 1e-9)));
+    const bool throttled = share.throttled_share && *share.throttled_share > kThrottledShare;
+    const double cpus =
+        throttled ? std::floor(*share.quota_cpus + 1e-9) : std::ceil(*share.quota_cpus - 1e-9);
     reason +=
         fmt::format("; a cgroup quota of {:.3g} CPUs ({})", *share.quota_cpus, share.quota_source);
-    threads = std::min(threads, quota);
+    if (throttled) {
+      reason += fmt::format(", throttled in {:.0f} % of its periods", 100 * *share.throttled_share);
+    }
+    most = std::min(most, std::max(1, static_cast<int>(cpus)));
   } else {
     reason += "; no cgroup CPU quota";
   }
   if (share.slurm_cpus) {
     reason += fmt::format("; SLURM_CPUS_PER_TASK={}", *share.slurm_cpus);
-    threads = std::min(threads, *share.slurm_cpus);
+    most = std::min(most, *share.slurm_cpus);
   }
-  return {std::max(1, threads), reason};
+  most = std::max(1, most);
+  int threads = most;
+  if (now) {
+    // The runnable tasks are the whole machine's; those on this process's CPUs are their share.
+    const double others = now->others * static_cast<double>(share.affinity_cpus) /
+                          static_cast<double>(std::max(share.online_cpus, share.affinity_cpus));
+    const double free = static_cast<double>(share.affinity_cpus) - others;
+    threads = std::clamp(static_cast<int>(std::floor(free + 0.5)), 1, most);
+    reason += fmt::format(
+        "; {} other task{} runnable now (load average {:.2f}), {}", now->others,
+        now->others == 1 ? "" : "s", now->load_average,
+        threads < most ? fmt::format("so {} of {}", threads, most) : std::string("room for all"));
+  }
+  if (most > 1) {
+    reason += "; the run changes it whenever another count is faster";
+  }
+  return {threads, most, true, share.affinity_cpus, reason};
 }
 
 ThreadChoice choose_threads(std::optional<int> requested) {
-  return choose_threads(read_cpu_share(), requested, std::getenv("DINAM_THREADS"));
+  const char* variable = std::getenv("DINAM_THREADS");
+  if (requested || variable != nullptr) {
+    return choose_threads(read_cpu_share(), requested, variable);
+  }
+  return choose_threads(read_cpu_share(), requested, variable, runnable_now());
 }
 
 }  // namespace dinam

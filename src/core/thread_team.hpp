@@ -9,11 +9,11 @@
 // once from the environment when the library loads (GOMP_SPINCOUNT, OMP_WAIT_POLICY) that the
 // program cannot change. On a machine that other work shares, the thread it waits for is often
 // not running, and the spinning one burns the time slice that thread needs: a step of 5 750 bars
-// on 2 threads went from 0.21 ms to 295 ms with one busy process per core (bench/notes/performance.md,
-// "Threads on a shared machine"). Here a waiting thread spins only for a few tens of
-// microseconds, long enough for the usual wait on an idle machine (where falling asleep and
-// waking cost more than the wait), then sleeps on a futex until it is released. OpenMP stays for
-// what it does well: `omp simd` in the kernels.
+// on 2 threads went from 0.21 ms to 295 ms with one busy process per core
+// (bench/notes/performance.md, "Threads on a shared machine"). Here a waiting thread spins only for
+// a few tens of microseconds, long enough for the usual wait on an idle machine (where falling
+// asleep and waking cost more than the wait), then sleeps on a futex until it is released. OpenMP
+// stays for what it does well: `omp simd` in the kernels.
 #include <atomic>
 #include <cstdint>
 #include <thread>

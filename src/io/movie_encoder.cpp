@@ -20,6 +20,7 @@
 
 #include "core/error.hpp"
 #include "core/output_file.hpp"
+#include "core/thread_team.hpp"
 
 extern char** environ;
 
@@ -112,11 +113,32 @@ std::vector<std::string> ffmpeg_arguments(const MovieRequest& request,
     // range (ffmpeg's default matrix is BT.601's) and the stream says so, so that players and
     // compositors turn them back with the same matrix rather than guess.
     arguments.insert(arguments.end(),
-                     {"-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv",
-                      "-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt",
-                      "yuv420p", "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc",
-                      "bt709", "-color_range", "tv", "-movflags", "+faststart", "-f", "mp4"});
+                     {"-vf",
+                      "pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv",
+                      "-c:v",
+                      "libx264",
+                      "-preset",
+                      "veryfast",
+                      "-crf",
+                      "18",
+                      "-pix_fmt",
+                      "yuv420p",
+                      "-colorspace",
+                      "bt709",
+                      "-color_primaries",
+                      "bt709",
+                      "-color_trc",
+                      "bt709",
+                      "-color_range",
+                      "tv",
+                      "-movflags",
+                      "+faststart",
+                      "-f",
+                      "mp4"});
   }
+  // ffmpeg would take every CPU of the machine; it gets the process's thread count, which
+  // follows the process's share and the machine's load (core/thread_governor.hpp).
+  arguments.insert(arguments.end(), {"-threads", std::to_string(thread_count())});
   // The output: a local file only (mp4's faststart reads it back, so "file" it is, not "pipe"),
   // named by an absolute path after "file:", which no name can turn into an option or a protocol.
   arguments.insert(arguments.end(),

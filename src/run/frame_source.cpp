@@ -9,6 +9,7 @@
 #include "cache/motion_cache.hpp"
 #include "core/stop_request.hpp"
 #include "core/subject_box.hpp"
+#include "core/thread_governor.hpp"
 #include "core/wall_clock.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
@@ -63,6 +64,8 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
   const std::unique_ptr<Stepper> stepper = stepper_kind(model).make_stepper(model, timestep);
   State state = stepper->start(track_energy);
   const std::int64_t steps_between_checks = steps_between_stop_checks(model);
+  // The thread count follows the machine between runs of steps (core/thread_governor.hpp).
+  ThreadGovernor governor;
   int frame = 1;
   std::size_t instant = 0;
   for (std::int64_t n = 0;;) {
@@ -87,7 +90,9 @@ void run_dynamics(const Model& model, const TimeStep& timestep, int last, bool t
       next = std::min(next, frame_step(frame));
     }
     stop_if_asked();
+    governor.before_run();
     stepper->advance(state, next - n);
+    governor.after_run(next - n);
     n = next;
   }
 }

@@ -4,6 +4,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "core/thread_governor.hpp"
+#include "core/thread_team.hpp"
+#include "dynamics/parallel_loops.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "render/camera.hpp"
@@ -70,6 +73,49 @@ Pipeline run_scene(const std::string& text) {
 
 Pipeline run_pipeline(const std::string& camera) {
   return run_scene(scene_text(camera));
+}
+
+// A run whose thread count follows the machine (core/thread_governor.hpp) draws the frames of a
+// run on one thread, bit for bit, however often the count changes: here a made-up load that
+// comes and goes every other run of steps moves a cloth large enough to share between 1, 2 and 3.
+TEST(FrameSource, AThreadCountThatFollowsTheLoadLeavesEveryFrameTheSame) {
+  const std::string scene = R"(version: 1
+duration: 0.06
+fps: 100
+wind: {velocity: [3, 0, 0], turbulence: {amplitude: 1, scale: 0.3}}
+objects:
+  - name: cloth
+    mesh: {grid: {width: 1, height: 1, columns: 60, rows: 60, diagonals: one}, rotation: [90, 0, 0], translation: [0, 0, 1.2]}
+    material: {density: 1200, youngs_modulus: 2e7, radius: 0.001, breaking: {force: 0.5}}
+    pinned: {box: {min: [-0.01, -1, 0], max: [0.01, 1, 2]}}
+)";
+  const Model model = build_model(test::scene_from_yaml(scene));
+  ASSERT_GE(model.bar_count() + model.bend_count(), kMinParallelItems);
+  const TimeStep timestep = choose_timestep(model, std::nullopt, 100, {});
+  set_thread_policy({1, 1, false, 1, "--threads 1"});
+  const SimulatedFrames one = simulate_frames(model, timestep, 7, false);
+
+  std::vector<int> counts_run;
+  int reading = 0;
+  set_thread_policy(
+      {2, 3, true, 3, "own choice"},
+      [&] {
+        counts_run.push_back(thread_count());
+        return std::optional<double>(reading++ / 2 % 2 == 0 ? 2.0 : 0.0);
+      },
+      0.0);
+  const SimulatedFrames following = simulate_frames(model, timestep, 7, false);
+  set_thread_policy({1, 1, false, 1, "--threads 1"});
+
+  // It did change: every count was run, the ones a load of 2 or of 0 on 3 CPUs leaves room for.
+  for (const int count : {1, 2, 3}) {
+    EXPECT_NE(std::count(counts_run.begin(), counts_run.end(), count), 0) << count;
+  }
+  ASSERT_EQ(following.positions.size(), one.positions.size());
+  for (std::size_t f = 0; f < one.positions.size(); ++f) {
+    EXPECT_TRUE(one.positions[f] == following.positions[f]) << "frame " << f + 1;
+  }
+  EXPECT_EQ(following.tears.size(), one.tears.size());
 }
 
 TEST(FrameSource, DrawsEachChosenFrameOnceWithItsPositions) {

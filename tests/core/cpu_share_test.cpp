@@ -40,8 +40,12 @@ TEST(CpuShare, TheTightestQuotaOfTheCgroupAndItsParentsCounts) {
   EXPECT_EQ(share.quota_source, (root / "machine.slice/cpu.max").string());
 
   write(root / "machine.slice/job.scope/cpu.max", "50000 100000\n");
+  write(root / "machine.slice/job.scope/cpu.stat", "nr_periods 40\nnr_throttled 10\n");
   share = read_cpu_share(root, folder.path() / "self_cgroup");
   EXPECT_EQ(*share.quota_cpus, 0.5);
+  // How often the quota's group is throttled, read beside the quota.
+  ASSERT_TRUE(share.throttled_share.has_value());
+  EXPECT_EQ(*share.throttled_share, 0.25);
 
   // No quota anywhere, or no such files: none.
   write(folder.path() / "self_cgroup", "0::/elsewhere\n");
@@ -84,6 +88,55 @@ TEST(CpuShare, TheLeastOfAffinityQuotaAndSlurmIsChosenAndSaidWhy) {
 
   share.quota_cpus = 0.2;  // a fifth of a CPU still runs one thread
   EXPECT_EQ(choose_threads(share, std::nullopt, nullptr).threads, 1);
+}
+
+// The start looks at the machine: the tasks runnable now take their share of this process's CPUs
+// (all of them where the mask is the machine, a part where it is part), and what they leave is
+// the count to start on, within the share; a run may then go back up to the share.
+TEST(CpuShare, TheTasksRunnableNowLeaveTheCountToStartOn) {
+  CpuShare share;
+  share.online_cpus = 2;
+  share.affinity_cpus = 2;
+  const ThreadChoice idle = choose_threads(share, std::nullopt, nullptr, RunnableNow{0, 0.3});
+  EXPECT_EQ(idle.threads, 2);
+  EXPECT_EQ(idle.most, 2);
+  EXPECT_TRUE(idle.adapts);
+  EXPECT_NE(idle.reason.find("0 other tasks runnable now (load average 0.30), room for all"),
+            std::string::npos)
+      << idle.reason;
+  for (const int others : {1, 2, 4}) {
+    const ThreadChoice busy = choose_threads(share, std::nullopt, nullptr, RunnableNow{others, 2});
+    EXPECT_EQ(busy.threads, 1) << others;
+    EXPECT_EQ(busy.most, 2);
+    EXPECT_NE(busy.reason.find("so 1 of 2"), std::string::npos) << busy.reason;
+  }
+  // 4 CPUs of a machine of 16, with 8 tasks runnable on it: 2 of them on ours, 2 left.
+  share.online_cpus = 16;
+  share.affinity_cpus = 4;
+  EXPECT_EQ(choose_threads(share, std::nullopt, nullptr, RunnableNow{8, 8}).threads, 2);
+  // The option and the variable are fixed, whatever the load.
+  const ThreadChoice fixed = choose_threads(share, 3, nullptr, RunnableNow{8, 8});
+  EXPECT_EQ(fixed.threads, 3);
+  EXPECT_FALSE(fixed.adapts);
+}
+
+// A quota the group hits in many of its periods counts its whole CPUs only.
+TEST(CpuShare, AThrottledQuotaCountsItsWholeCpus) {
+  EXPECT_DOUBLE_EQ(*throttled_share("nr_periods 200\nnr_throttled 50\nthrottled_usec 9\n"), 0.25);
+  EXPECT_FALSE(throttled_share("nr_periods 0\nnr_throttled 0\n"));
+  EXPECT_FALSE(throttled_share("usage_usec 10\n"));
+  CpuShare share;
+  share.online_cpus = 8;
+  share.affinity_cpus = 8;
+  share.quota_cpus = 2.5;
+  share.quota_source = "/sys/fs/cgroup/job/cpu.max";
+  share.throttled_share = 0.05;
+  EXPECT_EQ(choose_threads(share, std::nullopt, nullptr).threads, 3);
+  share.throttled_share = 0.4;
+  const ThreadChoice throttled = choose_threads(share, std::nullopt, nullptr);
+  EXPECT_EQ(throttled.threads, 2);
+  EXPECT_NE(throttled.reason.find("throttled in 40 % of its periods"), std::string::npos)
+      << throttled.reason;
 }
 
 TEST(CpuShare, TheOptionThenTheVariableOverrideTheShare) {

@@ -48,9 +48,8 @@ State run_on_threads(const Model& model, int threads, int steps) {
 // on its faces and on a rope's bars, global damping and ground contact (it falls 5 mm onto the
 // ground in the first 30 steps or so).
 // `integrator` is a top-level line to add ("integrator: xpbd").
-State run_cloth(int threads, int steps, const std::string& breaking = "",
-                const std::string& integrator = "") {
-  const Model model = build_model(test::scene_from_yaml(std::string(R"(version: 1
+Model falling_cloth(const std::string& breaking = "", const std::string& integrator = "") {
+  Model model = build_model(test::scene_from_yaml(std::string(R"(version: 1
 duration: 1
 )") + integrator + R"(
 wind: {velocity: [3, 0, 0], gust: {amplitude: 1}, turbulence: {amplitude: 1, scale: 0.3}}
@@ -62,7 +61,7 @@ objects:
       grid: {width: 1.2, height: 1.2, columns: 120, rows: 120, diagonals: one}
       translation: [0, 0, 0.6]
     material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.001, yield_stress: 2.0e5)" +
-                                                        breaking + R"(}
+                                                  breaking + R"(}
     pinned: {box: {min: [-1, -1, 0], max: [0.001, 2, 1]}}
     damping: {axial_ratio: 0.05}
     initial_velocity: [0, 0, -3]
@@ -70,7 +69,7 @@ objects:
     mesh:
       polyline: {points: [[0, 0, 1.5], [1, 0, 1.5]], segments: 10}
     material: {density: 1200, youngs_modulus: 2.0e7, radius: 0.002)" +
-                                                        breaking + R"(}
+                                                  breaking + R"(}
     pinned: {indices: [0]}
 )"));
   EXPECT_GE(model.bar_count(), kMinParallelItems);
@@ -78,7 +77,12 @@ objects:
   EXPECT_EQ(model.wind.bars.size(), 10u);
   EXPECT_GE(model.bend_count(), kMinParallelItems);
   EXPECT_GE(model.torsion_count(), kMinParallelItems);
-  return run_on_threads(model, threads, steps);
+  return model;
+}
+
+State run_cloth(int threads, int steps, const std::string& breaking = "",
+                const std::string& integrator = "") {
+  return run_on_threads(falling_cloth(breaking, integrator), threads, steps);
 }
 
 // The element types of the state's arrays that same_value_bits compares.
@@ -186,6 +190,29 @@ TEST(Threads, TheBarsAsConstraintsAreTheSameForAnyThreadCount) {
   EXPECT_GT(one.energy.plastic_dissipation, 0.0);
   EXPECT_NE(one.energy.numerical_dissipation, 0.0);  // the projection's share, booked
   expect_same_state(one, two);
+}
+
+// A run's thread count may change between any two runs of steps (core/thread_governor.hpp, as
+// the machine's load comes and goes): the state is the one of a single thread throughout, with
+// tearing, and with the bars held as constraints.
+TEST(Threads, ACountChangedBetweenRunsOfStepsLeavesTheSameState) {
+  for (const std::string integrator : {"", "integrator: xpbd\n"}) {
+    const Model model = falling_cloth(", breaking: {force: 0.3}", integrator);
+    const State one = run_on_threads(model, 1, 60);
+    EXPECT_GT(one.broken_bars.size(), 10u) << integrator;  // it tore
+    const int before = thread_count();
+    const double dt = 0.8 * critical_timestep(model);
+    State changing = initial_state(model, dt, {}, true);
+    const int counts[] = {2, 3, 1, 2, 1, 3};
+    const int steps[] = {7, 13, 1, 20, 4, 15};  // 60 in all
+    for (int run = 0; run < 6; ++run) {
+      set_thread_count(counts[run]);
+      advance_steps(model, dt, {}, changing, steps[run]);
+    }
+    set_thread_count(before);
+    EXPECT_EQ(changing.step, 60);
+    expect_same_state(one, changing);
+  }
 }
 
 // Every kind that a worker evaluates for its own nodes only: clamps at a clamped support, a field

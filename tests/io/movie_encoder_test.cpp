@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/thread_team.hpp"
 #include "io/png_file.hpp"
 #include "test_support.hpp"
 
@@ -35,6 +36,10 @@ TEST(MovieEncoder, AsksForH264InYuv420pAtTheSceneRateFromRawFramesOnItsInput) {
   EXPECT_TRUE(has(arguments, "-i", "pipe:0"));
   EXPECT_TRUE(has(arguments, "-c:v", "libx264"));
   EXPECT_TRUE(has(arguments, "-pix_fmt", "yuv420p"));
+  // The process's thread count, not every CPU of the machine.
+  set_thread_count(3);
+  EXPECT_TRUE(has(ffmpeg_arguments(request, "/work/out/demo.mp4.part"), "-threads", "3"));
+  set_thread_count(1);
 }
 
 // Whatever the name, ffmpeg reads it as a local file: absolute and after "file:", so a leading
