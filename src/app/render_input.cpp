@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <optional>
+#include <string>
+
 #include "app/command_support.hpp"
 #include "core/error.hpp"
 #include "core/thread_governor.hpp"
@@ -38,7 +41,10 @@ RenderInput read_render_input(const RenderOptions& options, void (*adjust)(Scene
     }
     input.cache.emplace(*options.cache);
     input.cache->check_scene(scene);
-    input.cache->check_motion_blur(scene);
+    if (const std::optional<std::string> shortfall = input.cache->motion_blur_shortfall(scene)) {
+      fmt::print(stderr, "{}: warning: {}\n", scene.source.string(), *shortfall);
+      scene.quality.motion_blur = MotionBlurDesc{};
+    }
   }
   input.model = build_model_telling_warnings(scene);
   const Model& model = input.model;

@@ -112,22 +112,21 @@ void MotionCache::check_scene(const SceneDescription& scene) const {
                                    folder_.string(), manifest_.created, difference, again));
 }
 
-void MotionCache::check_motion_blur(const SceneDescription& scene) const {
+std::optional<std::string> MotionCache::motion_blur_shortfall(const SceneDescription& scene) const {
   const MotionBlurDesc& blur = scene.quality.motion_blur;
   const CacheInstants& cached = manifest_.instants;
   if (!blur.enabled() || (cached.per_frame == blur.samples && cached.shutter == blur.shutter)) {
-    return;
+    return std::nullopt;
   }
   const std::string held = cached.per_frame == 0
                                ? "holds no instants between frames"
                                : fmt::format("holds {} instants a frame over a shutter of {:g}",
                                              cached.per_frame, cached.shutter);
-  throw UserError(FileLoc{scene.source.string()},
-                  fmt::format("the scene asks for motion blur of {} instants over a shutter of "
-                              "{:g}, and the cache {} {}; simulate again with this scene "
-                              "(dinam simulate {} -o {}), or set image.motion_blur to match",
-                              blur.samples, blur.shutter, folder_.string(), held,
-                              scene.source.string(), folder_.string()));
+  return fmt::format(
+      "the scene asks for motion blur of {} instants over a shutter of {:g}, and the cache {} {}, "
+      "so its frames are drawn without motion blur; for the blur, simulate again with this scene "
+      "(dinam simulate {} -o {}), which keeps the instants it asks for",
+      blur.samples, blur.shutter, folder_.string(), held, scene.source.string(), folder_.string());
 }
 
 void MotionCache::check_model(const Model& model) const {

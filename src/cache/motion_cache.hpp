@@ -3,6 +3,8 @@
 // complete and that it holds the motion of the scene at hand, then reads any range of frames
 // without simulating anything.
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "cache/manifest.hpp"
@@ -29,9 +31,11 @@ class MotionCache {
   // Throws UserError when the model's objects are not the cached ones, node for node.
   void check_model(const Model& model) const;
 
-  // Throws UserError when the scene asks for motion blur that the cache's instants do not give
-  // (none, another count or another shutter), saying how to make a cache that does.
-  void check_motion_blur(const SceneDescription& scene) const;
+  // Where the scene asks for motion blur that the cache's instants do not give (none, another
+  // count or another shutter): what the cache holds and how to make one that gives it; none where
+  // they match. The camera, light and image never invalidate a cache: such frames are drawn
+  // without blur (render_input.cpp).
+  std::optional<std::string> motion_blur_shortfall(const SceneDescription& scene) const;
 
   // Every node's position in frames first … last (1-based, inclusive), as drawn.
   std::vector<std::vector<Vec3f>> read_frames(int first, int last) const;

@@ -47,7 +47,7 @@ SimulatedFrames simulate_frames(const Model& model, const TimeStep& timestep, in
 std::string settle_summary(const SettleOutcome& settled, double dt);
 
 // Frames first … last from a cache, with the bounds of its whole motion, and their instants when
-// `blur` asks for them (MotionCache::check_motion_blur has checked that the cache holds them).
+// `blur` asks for them (render_input.cpp has drawn without blur where the cache lacks them).
 SimulatedFrames cached_frames(const MotionCache& cache, int first, int last,
                               const MotionBlurDesc* blur = nullptr);
 

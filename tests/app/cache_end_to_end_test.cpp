@@ -129,9 +129,9 @@ TEST_F(CacheEndToEnd, AStaleCacheIsRefusedWithTheChangedKeyAndTheCommandThatMend
 }
 
 // A blurred scene's cache holds the instants its frames average, so frames drawn from it are the
-// whole run's; a cache without them (made before the scene asked for blur) is refused with the
-// command that makes one.
-TEST_F(CacheEndToEnd, BlurredFramesFromTheCacheAreTheWholeRunsAndACacheWithoutInstantsIsRefused) {
+// whole run's; a cache without them (made before the scene asked for blur) draws them unblurred,
+// with the command that makes one that blurs.
+TEST_F(CacheEndToEnd, BlurredFramesFromTheCacheAreTheWholeRunsAndACacheWithoutInstantsDrawsSharp) {
   std::ofstream(path("flag.yaml")) << file_text(kFlag);
   ASSERT_EQ(run_command(dinam_command("simulate " + shell_quoted(path("flag.yaml")) + " -o " +
                                       shell_quoted(path("plain_cache")) + " -q"))
@@ -159,14 +159,33 @@ TEST_F(CacheEndToEnd, BlurredFramesFromTheCacheAreTheWholeRunsAndACacheWithoutIn
     EXPECT_EQ(file_text(path("chunk") / name), expected) << name << " differs";
   }
 
-  const CommandResult refused = run_command(dinam_command(
-      "render " + shell_quoted(path("flag.yaml")) + " --cache " +
-      shell_quoted(path("plain_cache")) + " -o " + shell_quoted(path("refused")) + size));
-  EXPECT_EQ(refused.exit_code, 2) << refused.output;
-  EXPECT_NE(refused.output.find("holds no instants between frames"), std::string::npos)
-      << refused.output;
-  EXPECT_NE(refused.output.find("dinam simulate"), std::string::npos) << refused.output;
-  EXPECT_FALSE(std::filesystem::exists(path("refused")));
+  // A cache made without instants still serves the blurred scene: its frames are drawn without
+  // blur, the same as the scene without it draws them from that cache, and a warning says how to
+  // have the blur.
+  const CommandResult unblurred =
+      run_command(dinam_command("render " + shell_quoted(path("flag.yaml")) + " --cache " +
+                                shell_quoted(path("plain_cache")) + " -o " +
+                                shell_quoted(path("unblurred")) + " --frames 30-31" + size));
+  EXPECT_EQ(unblurred.exit_code, 0) << unblurred.output;
+  EXPECT_NE(unblurred.output.find("holds no instants between frames, so its frames are drawn "
+                                  "without motion blur"),
+            std::string::npos)
+      << unblurred.output;
+  EXPECT_NE(unblurred.output.find("dinam simulate"), std::string::npos) << unblurred.output;
+  std::ofstream(path("flag.yaml")) << file_text(kFlag);
+  const CommandResult plain =
+      run_command(dinam_command("render " + shell_quoted(path("flag.yaml")) + " --cache " +
+                                shell_quoted(path("plain_cache")) + " -o " +
+                                shell_quoted(path("plain")) + " --frames 30-31" + size));
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_EQ(plain.output.find("warning"), std::string::npos) << plain.output;
+  for (const char* name : {"frame_0030.png", "frame_0031.png"}) {
+    const std::string expected = file_text(path("plain") / name);
+    ASSERT_FALSE(expected.empty()) << name;
+    EXPECT_EQ(file_text(path("unblurred") / name), expected) << name << " differs";
+    // and it is not the blurred frame
+    EXPECT_NE(file_text(path("whole") / name), expected) << name;
+  }
 }
 
 TEST_F(CacheEndToEnd, EnergyGoesIntoTheManifestAndBesideIt) {
