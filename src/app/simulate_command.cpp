@@ -55,12 +55,6 @@ void parse_formats(const std::string& text, CacheRequest& request) {
     }
     start = comma + 1;
   }
-  if (!request.pc2 && !request.mdd) {
-    throw_user_error({},
-                     "--format {} names no point cache: a cache holds pc2 or mdd (which 'dinam "
-                     "render --cache' reads) beside a USD stage; add pc2, as in pc2,usd",
-                     text);
-  }
 }
 
 // How the scene draws each object, for the manifest and the USD stage (the radii come at the end,

@@ -303,9 +303,10 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
       require_file_name(loc, entry.pc2, entry.name, "pc2", true);
       require_file_name(loc, entry.mdd, entry.name, "mdd", true);
       require_file_name(loc, entry.look.texture.string(), entry.name, "texture", true);
-      if (entry.pc2.empty() && entry.mdd.empty()) {
-        throw UserError(loc,
-                        fmt::format("object '{}' names no point cache (pc2 or mdd)", entry.name));
+      if (entry.pc2.empty() && entry.mdd.empty() && m.usd.empty()) {
+        throw UserError(loc, fmt::format("object '{}' names no point cache (pc2 or mdd), and the "
+                                         "cache no USD stage",
+                                         entry.name));
       }
       if (entry.first_node != next_node || entry.node_count < 1 ||
           entry.first_node + entry.node_count > m.node_count) {

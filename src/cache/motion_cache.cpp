@@ -60,6 +60,13 @@ MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folde
   }
   manifest_ = read_manifest(folder_ / "manifest.json");
   for (const CacheObjectEntry& entry : manifest_.objects) {
+    if (entry.pc2.empty() && entry.mdd.empty()) {
+      throw_user_error(FileLoc{folder_.string()},
+                       "the cache holds its motion as a USD stage alone ({}, made with --format "
+                       "usd), and dinam draws from point caches; simulate again with --format "
+                       "pc2,usd to have both",
+                       manifest_.usd);
+    }
     const bool pc2 = !entry.pc2.empty();
     ObjectCache cache;
     cache.path = folder_ / (pc2 ? entry.pc2 : entry.mdd);

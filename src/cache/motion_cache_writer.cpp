@@ -168,7 +168,7 @@ std::string cache_file_stem(const std::string& object_name) {
 
 MotionCacheWriter::MotionCacheWriter(const CacheRequest& request, const Model& model)
     : request_(request), node_count_(model.node_count()) {
-  DINAM_CHECK(request_.pc2 || request_.mdd);
+  DINAM_CHECK(request_.pc2 || request_.mdd || request_.usd);
   check_replaceable(request_.folder);
   std::error_code ec;
   if (!request_.folder.parent_path().empty()) {
