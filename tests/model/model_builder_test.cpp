@@ -1,7 +1,12 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "dynamics/integrator.hpp"
 #include "model/model.hpp"
@@ -308,6 +313,46 @@ objects:
   // 840 bars of 0.05 m and 400 diagonals of 0.07 m, each π·1²·L·1000 kg: 221 t.
   EXPECT_GT(slip.total_mass(), 1e5);
   EXPECT_TRUE(with_radius("0.001").warnings.empty());
+}
+
+// A mesh file modelled in centimetres and read as metres: a cloth 100 times too large (the banner,
+// 1 m across, `scale: 100`) or a rope (1 m, `scale: 2000`) is warned of at its mesh with its
+// size, its mass and `units`; the same at a size things are made, or a generated grid that large
+// (metres by construction), is not.
+TEST(ModelBuilder, AMeshFileFarLargerThanItsKindIsMadeSuggestsUnits) {
+  auto scene_of = [](const std::string& mesh, const std::string& material) {
+    return build_model(test::scene_from_yaml(fmt::format(R"(version: 1
+duration: 1
+objects:
+  - name: thing
+    mesh: {}
+    material: {}
+)",
+                                                         mesh, material)));
+  };
+  // Of the warnings (a coarse cotton mesh gets others), the one on its size.
+  auto size_warnings = [](const Model& model) {
+    std::vector<std::string> found;
+    std::copy_if(model.warnings.begin(), model.warnings.end(), std::back_inserter(found),
+                 [](const std::string& w) { return w.find("is made (") != std::string::npos; });
+    return found;
+  };
+  const std::string cotton = "{preset: cotton}";
+  const std::vector<std::string> curtain =
+      size_warnings(scene_of("{file: textured_quad.obj, scale: 100}", cotton));
+  ASSERT_EQ(curtain.size(), 1U);
+  test::expect_contains(curtain[0], {":5:11: warning: object 'thing'", "m across and weighs",
+                                     "larger than any cloth is made (50 m)", "'units: cm'"});
+  EXPECT_TRUE(size_warnings(scene_of("{file: textured_quad.obj}", cotton)).empty());
+  EXPECT_TRUE(
+      size_warnings(scene_of("{grid: {width: 80, height: 80, columns: 4, rows: 4}}", cotton))
+          .empty());
+  const std::string hemp = "{density: 1000, youngs_modulus: 1.0e9, radius: 0.008}";
+  const std::vector<std::string> rope =
+      size_warnings(scene_of("{file: rope.obj, scale: 2000}", hemp));
+  ASSERT_EQ(rope.size(), 1U);
+  test::expect_contains(rope[0], {"2000 m across", "any rope or cable", "'units: cm'"});
+  EXPECT_TRUE(size_warnings(scene_of("{file: rope.obj, scale: 900}", hemp)).empty());
 }
 
 // A mesh of three pieces that share no vertex (a square, a triangle beside its corner, a loose
