@@ -134,10 +134,33 @@ void read_weld(YamlMap& map, ObjectDesc& object) {
                    "(a fraction of the median bar length)");
 }
 
+// Whether a mesh looks y-up: read so, it stands on the floor (nothing below y = 0, something
+// above it), and read z-up it would not (part of it below z = 0, or all of it flat in the floor
+// plane z = 0, where a y-up export puts an upright sheet or a horizontal rope). A z-up mesh of a
+// thing on the floor has its depth on both sides of y = 0 and its height above z = 0.
+bool mesh_suggests_y_up(const RawMesh& mesh) {
+  if (mesh.vertices.empty()) {
+    return false;
+  }
+  Vec3 low = mesh.vertices.front();
+  Vec3 high = low;
+  for (const Vec3& v : mesh.vertices) {
+    low = low.cwiseMin(v);
+    high = high.cwiseMax(v);
+  }
+  const double tolerance = 0.02 * (high - low).maxCoeff();
+  const bool stands_on_y = low.y() >= -tolerance && high.y() > tolerance;
+  const bool under_z = low.z() < -tolerance;
+  const bool flat_on_z0 = high.z() - low.z() <= tolerance && std::abs(low.z()) <= tolerance;
+  return stands_on_y && (under_z || flat_on_z0);
+}
+
 // Why a mesh file's geometry is probably y-up as dinam receives it, or "" when nothing says so:
 // glTF is y-up by its specification, assimp turns a Collada file y-up whatever its <up_axis>, and
-// Blender writes OBJ files y-up unless told otherwise (Up Axis: Y is its exporter's default).
-std::string y_up_hint(const std::filesystem::path& file) {
+// Blender writes OBJ files y-up unless told otherwise (Up Axis: Y is its exporter's default): an
+// OBJ that Blender wrote only where the mesh looks y-up too, since a correct Up Z export (the
+// add-on's) is as common.
+std::string y_up_hint(const std::filesystem::path& file, const RawMesh& mesh) {
   const std::string extension = lower_extension(file);
   if (extension == ".gltf" || extension == ".glb") {
     return "glTF files are y-up by their specification (Blender's glTF export turns z-up into "
@@ -150,9 +173,9 @@ std::string y_up_hint(const std::filesystem::path& file) {
     std::ifstream in(file);
     std::string line;
     for (int k = 0; k < 5 && std::getline(in, line); ++k) {
-      if (line.rfind("# Blender", 0) == 0) {
+      if (line.rfind("# Blender", 0) == 0 && mesh_suggests_y_up(mesh)) {
         return "Blender wrote this OBJ file, and its OBJ export is y-up unless its Up Axis is set "
-               "to Z";
+               "to Z: this mesh stands on y = 0 and lies flat or below z = 0, as a y-up one does";
       }
     }
   }
@@ -166,7 +189,7 @@ void read_up_axis(YamlMap& map, const std::filesystem::path& file, const std::st
                   RawMesh& mesh, Placement& placement, std::vector<std::string>& warnings) {
   if (!map.has("up_axis")) {
     map.get("up_axis");  // known, absent
-    if (const std::string why = file.empty() ? "" : y_up_hint(file); !why.empty()) {
+    if (const std::string why = file.empty() ? "" : y_up_hint(file, mesh); !why.empty()) {
       warnings.push_back(fmt::format(
           "{}: warning: object '{}': {}; if it lies on its side, add 'up_axis: y' to its mesh, "
           "or 'up_axis: z' if it is z-up already",

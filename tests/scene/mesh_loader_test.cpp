@@ -94,7 +94,8 @@ objects:
 }
 
 // A file that is probably y-up as dinam receives it gets a warning naming the key that turns it,
-// and a z-up file none.
+// and a z-up file none; an OBJ that Blender wrote only where its mesh looks y-up (an upright
+// square exported Up Y stands on y = 0, flat in z = 0), not the same square exported Up Z.
 TEST(MeshLoader, AFileThatIsProbablyYUpIsWarnedOf) {
   const auto warnings_of = [](const std::string& file) {
     return test::scene_from_yaml(fmt::format(R"(version: 1
@@ -113,6 +114,7 @@ objects:
   ASSERT_EQ(blender.size(), 1u);
   test::expect_contains(blender[0], {"Blender wrote this OBJ", "up_axis: y"});
   EXPECT_TRUE(warnings_of("cube.obj").empty());
+  EXPECT_TRUE(warnings_of("blender_z_up.obj").empty());
 }
 
 // The nodes of an OBJ file are numbered as its `v` lines, whatever order its faces meet them in,
