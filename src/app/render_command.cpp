@@ -52,14 +52,18 @@ int run_render(const RenderOptions& options) {
   create_folder(folder);
   // Every name the run will write, refused now if one is a link or a special file, rather than
   // after minutes of simulation (core/output_file.hpp checks each again as it is written).
-  for (int frame = range.first; frame <= range.last; ++frame) {
+  const std::vector<int>& chosen = input.frames;
+  for (const int frame : chosen) {
     check_output_name(folder / frame_file_name(frame, scene.frame_count()));
   }
+  // A movie is of frames one after another: none where --frames leaves gaps.
+  const bool one_run = static_cast<int>(chosen.size()) == range.count();
+  const MovieFormat movie_format = one_run ? scene.movie : MovieFormat::kNone;
   check_output_name(folder / kFrameFolderInfoName);
   if (options.energy_csv) {
     check_output_name(folder / "energy.csv");
   }
-  if (scene.movie != MovieFormat::kNone) {
+  if (movie_format != MovieFormat::kNone) {
     check_output_name(folder / movie_file_name(scene.name, scene.movie, range.first, range.last,
                                                scene.frame_count()));
   }
@@ -87,7 +91,7 @@ int run_render(const RenderOptions& options) {
   std::string movie_note;
   std::unique_ptr<MovieEncoder> movie;
   std::filesystem::path movie_path;
-  if (scene.movie != MovieFormat::kNone) {
+  if (movie_format != MovieFormat::kNone) {
     const bool gif = scene.movie == MovieFormat::kGif;
     movie_path = folder / movie_file_name(scene.name, scene.movie, range.first, range.last,
                                           scene.frame_count());
@@ -101,19 +105,31 @@ int run_render(const RenderOptions& options) {
       exit_code = kExitFailure;
     }
   }
-  Progress progress(range.count(), !options.quiet, "draw");
+  if (!one_run) {
+    movie_note = ", no movie (the frames chosen are not one run)";
+  }
+  const int frame_count = static_cast<int>(chosen.size());
+  Progress progress(frame_count, !options.quiet, "draw");
   const auto draw_start = Clock::now();
   {
     FrameWriter writer(folder, frame_number_digits(scene.frame_count()), movie.get());
     try {
-      draw_frames(renderer, draw_list, frames, cameras, range.first, range.last,
-                  [&](int frame, const Image& image) {
-                    stop_if_asked();
-                    writer.write(frame, image);
-                    progress.update(
-                        frame - range.first + 1,
-                        fmt::format("draw and write {:.1f} s", seconds_since(draw_start)));
-                  });
+      int drawn = 0;
+      // Each run of consecutive frames in one call: a frame's drawing may follow the one before.
+      for (std::size_t k = 0; k < chosen.size();) {
+        std::size_t end = k + 1;
+        while (end < chosen.size() && chosen[end] == chosen[end - 1] + 1) {
+          ++end;
+        }
+        draw_frames(renderer, draw_list, frames, cameras, chosen[k], chosen[end - 1],
+                    [&](int frame, const Image& image) {
+                      stop_if_asked();
+                      writer.write(frame, image);
+                      progress.update(++drawn, fmt::format("draw and write {:.1f} s",
+                                                           seconds_since(draw_start)));
+                    });
+        k = end;
+      }
       writer.finish();
     } catch (const Interrupted& e) {
       // The frames drawn so far are written whole; ffmpeg is stopped and its partial movie
@@ -123,7 +139,7 @@ int run_render(const RenderOptions& options) {
       throw Interrupted(e.signal(),
                         fmt::format("{} of the {} frames were written to {} and are kept; no "
                                     "movie was made",
-                                    writer.frames_written(), range.count(), folder.string()));
+                                    writer.frames_written(), frame_count, folder.string()));
     } catch (const RuntimeError& e) {
       // A frame that could not be written (a full disk), a run that diverged, an ffmpeg that
       // stalled: say what is left, as for a stop.
@@ -131,7 +147,7 @@ int run_render(const RenderOptions& options) {
       const bool write_failed = dynamic_cast<const WriteError*>(&e) != nullptr;
       throw RuntimeError(fmt::format(
           "{}; {} of the {} frames were written to {} and are kept, no movie was made{}", e.what(),
-          writer.frames_written(), range.count(), folder.string(),
+          writer.frames_written(), frame_count, folder.string(),
           write_failed ? ". Free some space there or render to another folder (-o)" : ""));
     }
   }
@@ -164,7 +180,7 @@ int run_render(const RenderOptions& options) {
       fmt::print("dinam: {}\n", settled);
     }
     fmt::print("dinam: {} in {}{} ({:.1f} s: {} {:.2f} s, draw and write {:.2f} s)\n",
-               counted(range.count(), "frame"), folder.string(), movie_note, seconds_since(start),
+               counted(frame_count, "frame"), folder.string(), movie_note, seconds_since(start),
                cache ? "read the cache" : "simulate", frames.seconds, draw_seconds);
   }
   return exit_code;
@@ -182,8 +198,10 @@ Command add_render_command(CLI::App& app, std::optional<int>& threads) {
   add_optional_option(*render_command, "-o,--output", parsed->options.output,
                       "Output folder (default: the scene's 'output', else out/<name>)");
   render_command->add_option("--frames", parsed->options.frames,
-                             "Frames to write, A-B (1-based, inclusive); each is the frame of the "
-                             "whole movie (the whole motion is simulated, or read with --cache)");
+                             "Frames to write: A, A-B or a list, 1,5,10-20 (1-based, inclusive; "
+                             "'middle' and 'last' too); each is the frame of the whole movie (the "
+                             "whole motion is simulated, or read with --cache); a list with gaps "
+                             "makes no movie");
   render_command->add_option("--size", parsed->options.size, "Image size WxH, e.g. 640x360");
   render_command->add_option("--movie", parsed->options.movie,
                              "Movie format: mp4 (H.264), gif, or none (default: the scene's "

@@ -31,8 +31,14 @@ RenderInput read_render_input(const RenderOptions& options, void (*adjust)(Scene
   if (options.movie) {
     scene.movie = parse_movie_format(*options.movie);
   }
-  input.range = options.frames ? parse_frame_range(*options.frames, scene.frame_count())
-                               : FrameRange{1, scene.frame_count()};
+  if (options.frames) {
+    input.frames = parse_frame_list(*options.frames, scene.frame_count());
+  } else {
+    for (int frame = 1; frame <= scene.frame_count(); ++frame) {
+      input.frames.push_back(frame);
+    }
+  }
+  input.range = {input.frames.front(), input.frames.back()};
   if (options.cache) {
     if (options.energy_csv) {
       throw_user_error({},

@@ -21,8 +21,9 @@ class EnergyCsv;
 struct RenderInput {
   SceneDescription scene;                       // with --size and --movie applied
   MovieFormat scene_movie = MovieFormat::kMp4;  // the scene's own, for `dinam movie` later
-  FrameRange range;                             // the frames to draw
-  std::optional<MotionCache> cache;             // --cache: the motion is read, not simulated
+  std::vector<int> frames;  // the frames to draw, ascending (--frames 1,5,10-20, or every one)
+  FrameRange range;         // from the first of them to the last
+  std::optional<MotionCache> cache;  // --cache: the motion is read, not simulated
   Model model;
   std::optional<TimeStep> timestep;  // when simulating
   std::vector<Image> textures;       // every object's, read (a damaged PNG is a scene error)

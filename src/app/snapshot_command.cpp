@@ -8,7 +8,6 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
-#include <set>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -40,32 +39,6 @@
 
 namespace dinam {
 namespace {
-
-// "1,5-7,12" → {1, 5, 6, 7, 12}, each within 1..frame_count; "middle" and "last" stand for
-// those frames (as the default takes them), so a list need not know the scene's length.
-std::vector<int> parse_frame_list(const std::string& text, int frame_count) {
-  std::set<int> frames;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    std::string item =
-        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (item == "middle") {
-      item = std::to_string((frame_count + 1) / 2);
-    } else if (item == "last") {
-      item = std::to_string(frame_count);
-    }
-    const FrameRange range = parse_frame_range(item, frame_count);
-    for (int f = range.first; f <= range.last; ++f) {
-      frames.insert(f);
-    }
-    if (comma == std::string::npos) {
-      break;
-    }
-    start = comma + 1;
-  }
-  return {frames.begin(), frames.end()};
-}
 
 // The command line's limits over the frame's.
 ImageTolerance with_command_line(ImageTolerance limits, const SnapshotOptions& options) {

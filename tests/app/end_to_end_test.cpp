@@ -14,6 +14,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "app/output_checks.hpp"
 #include "io/png_file.hpp"
 #include "render/digit_label.hpp"
 #include "test_support.hpp"
@@ -110,6 +111,38 @@ TEST_F(EndToEnd, FrameRangeWritesOnlyThoseFrames) {
   EXPECT_TRUE(std::filesystem::exists(out() / "frame_0002.png"));
   EXPECT_TRUE(std::filesystem::exists(out() / "frame_0003.png"));
   EXPECT_FALSE(std::filesystem::exists(out() / "tiny.mp4"));
+}
+
+// A list of frames and ranges writes those frames, each the whole render's, and no movie where
+// they leave gaps (a movie is of frames one after another).
+TEST_F(EndToEnd, AFrameListWritesThoseFramesAndNoMovieAcrossItsGaps) {
+  const auto scene = write_scene("tiny.yaml", kTinyScene);
+  ASSERT_EQ(
+      run_command(dinam_command("render '" + scene.string() + "' -o '" +
+                                (out() / "whole").string() + "' --size 64x48 --movie none --quiet"))
+          .exit_code,
+      0);
+  const CommandResult result =
+      run_command(dinam_command("render '" + scene.string() + "' -o '" + out().string() +
+                                "' --size 64x48 --frames 1,3-3,last"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("no movie (the frames chosen are not one run)"), std::string::npos)
+      << result.output;
+  std::vector<std::string> written;
+  for (const auto& entry : std::filesystem::directory_iterator(out())) {
+    if (entry.path().extension() == ".png" || entry.path().extension() == ".mp4") {
+      written.push_back(entry.path().filename().string());
+    }
+  }
+  std::sort(written.begin(), written.end());
+  // The tiny scene has 3 frames: 'last' is the 3 already named, written once.
+  const std::vector<std::string> expected = {"frame_0001.png", "frame_0003.png"};
+  EXPECT_EQ(written, expected);
+  for (const std::string& name : expected) {
+    EXPECT_EQ(test::read_text(out() / name), test::read_text(out() / "whole" / name)) << name;
+  }
+  EXPECT_EQ(run_command(dinam_command("render '" + scene.string() + "' --frames 1,,3")).exit_code,
+            2);
 }
 
 // A part of the frames makes a movie of that part, named for it: never a short movie under the
