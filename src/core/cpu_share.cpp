@@ -8,24 +8,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/text_file.hpp"
 
 namespace dinam {
 namespace {
-
-std::optional<std::string> read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) {
-    return std::nullopt;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A whole number from 1 up that is the whole of `text` (surrounding blanks aside).
 std::optional<long long> positive_whole(std::string text) {
@@ -45,8 +35,8 @@ std::optional<long long> positive_whole(std::string text) {
 
 // v1: the quota over the period, where a quota is set (-1 is none).
 std::optional<double> cfs_quota(const std::filesystem::path& folder) {
-  const std::optional<std::string> quota = read_text(folder / "cpu.cfs_quota_us");
-  const std::optional<std::string> period = read_text(folder / "cpu.cfs_period_us");
+  const std::optional<std::string> quota = read_text_file(folder / "cpu.cfs_quota_us");
+  const std::optional<std::string> period = read_text_file(folder / "cpu.cfs_period_us");
   if (!quota || !period) {
     return std::nullopt;
   }
@@ -88,7 +78,7 @@ void tighten(Quota& quota, std::optional<double> cpus, const std::filesystem::pa
 // The tightest quota of the process's cgroups (v2, and v1's cpu controller).
 Quota read_quota(const std::filesystem::path& root, const std::filesystem::path& proc_cgroup) {
   Quota quota;
-  const std::optional<std::string> listing = read_text(proc_cgroup);
+  const std::optional<std::string> listing = read_text_file(proc_cgroup);
   if (!listing) {
     return quota;
   }
@@ -105,7 +95,7 @@ Quota read_quota(const std::filesystem::path& root, const std::filesystem::path&
     const std::string path = line.substr(second + 1);
     if (controllers.empty()) {
       for (const std::filesystem::path& folder : cgroup_and_parents(root, path)) {
-        const std::optional<std::string> text = read_text(folder / "cpu.max");
+        const std::optional<std::string> text = read_text_file(folder / "cpu.max");
         tighten(quota, text ? cpu_max_quota(*text) : std::nullopt, folder / "cpu.max");
       }
       continue;
@@ -180,7 +170,7 @@ CpuShare read_cpu_share(const std::filesystem::path& cgroup_root,
   if (quota.cpus) {
     // v2 and v1 alike keep nr_periods and nr_throttled in cpu.stat beside the quota.
     const std::optional<std::string> stat =
-        read_text(std::filesystem::path(quota.source).parent_path() / "cpu.stat");
+        read_text_file(std::filesystem::path(quota.source).parent_path() / "cpu.stat");
     share.throttled_share = stat ? throttled_share(*stat) : std::nullopt;
   }
   if (const char* slurm = std::getenv("SLURM_CPUS_PER_TASK")) {
@@ -189,6 +179,11 @@ CpuShare read_cpu_share(const std::filesystem::path& cgroup_root,
     }
   }
   return share;
+}
+
+int threads_with_room(double others_busy, int cpus, int most) {
+  const double free = static_cast<double>(cpus) - others_busy;
+  return std::clamp(static_cast<int>(std::floor(free + 0.5)), 1, std::max(1, most));
 }
 
 ThreadChoice choose_threads(const CpuShare& share, std::optional<int> requested,
@@ -235,8 +230,7 @@ ThreadChoice choose_threads(const CpuShare& share, std::optional<int> requested,
     // The runnable tasks are the whole machine's; those on this process's CPUs are their share.
     const double others = now->others * static_cast<double>(share.affinity_cpus) /
                           static_cast<double>(std::max(share.online_cpus, share.affinity_cpus));
-    const double free = static_cast<double>(share.affinity_cpus) - others;
-    threads = std::clamp(static_cast<int>(std::floor(free + 0.5)), 1, most);
+    threads = threads_with_room(others, share.affinity_cpus, most);
     reason += fmt::format(
         "; {} other task{} runnable now (load average {:.2f}), {}", now->others,
         now->others == 1 ? "" : "s", now->load_average,

@@ -49,6 +49,11 @@ struct ThreadChoice {
 // CPUs only (1.5 CPUs run 1 thread): the group is already using all of it.
 inline constexpr double kThrottledShare = 0.2;
 
+// The threads the load leaves room for on `cpus` CPUs of which others keep `others_busy` busy:
+// the CPUs left free, rounded, within [1, most]. The start and the run (core/thread_governor.hpp)
+// both count so.
+int threads_with_room(double others_busy, int cpus, int most);
+
 // The thread count: `requested` (--threads) if given, else DINAM_THREADS if set (`dinam_threads`,
 // the variable's text; null when unset), both fixed for the run; else the share — the least of
 // the affinity mask, the cgroup quota (rounded up: 1.5 CPUs run 2 threads, unless the group is

@@ -7,18 +7,12 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <fstream>
-#include <sstream>
+#include <chrono>
+
+#include "core/text_file.hpp"
 
 namespace dinam {
 namespace {
-
-std::string read_small_file(const char* path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<int> affinity_cpus() {
   std::vector<int> cpus;
@@ -99,15 +93,16 @@ std::optional<CpuTicks> cpu_ticks(std::string_view proc_stat, const std::vector<
 LoadSample sample_load() {
   static const std::vector<int> cpus = affinity_cpus();
   LoadSample sample;
-  sample.wall = std::chrono::steady_clock::now();
+  sample.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   sample.own_cpu_seconds = process_cpu_seconds();
-  sample.cpus = cpu_ticks(read_small_file("/proc/stat"), cpus);
+  sample.cpus = cpu_ticks(read_text_file("/proc/stat").value_or(""), cpus);
   return sample;
 }
 
 std::optional<double> others_busy_cpus(const LoadSample& before, const LoadSample& after,
                                        long ticks_per_second) {
-  const double wall = std::chrono::duration<double>(after.wall - before.wall).count();
+  const double wall = after.wall_seconds - before.wall_seconds;
   if (!before.cpus || !after.cpus || ticks_per_second <= 0 || wall <= 0.0 ||
       after.cpus->total <= before.cpus->total || after.cpus->busy < before.cpus->busy) {
     return std::nullopt;
@@ -158,7 +153,8 @@ std::optional<RunnableNow> runnable_now() {
       while (std::chrono::steady_clock::now() < until) {
       }
     }
-    const std::optional<LoadAverage> load = parse_load_average(read_small_file("/proc/loadavg"));
+    const std::optional<LoadAverage> load =
+        parse_load_average(read_text_file("/proc/loadavg").value_or(""));
     if (!load) {
       return std::nullopt;
     }

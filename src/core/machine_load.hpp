@@ -11,7 +11,6 @@
 //   once, where the load average lags a minute behind a process that has just started;
 // - during a run, the busy time of the CPUs in this process's affinity mask (/proc/stat, steal
 //   included) less this process's own CPU time, over the stretch: the CPUs the others took.
-#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -32,7 +31,7 @@ std::optional<CpuTicks> cpu_ticks(std::string_view proc_stat, const std::vector<
 
 // One reading of the load, to be set against a later one.
 struct LoadSample {
-  std::chrono::steady_clock::time_point wall;
+  double wall_seconds = 0.0;     // on the steady clock
   double own_cpu_seconds = 0.0;  // this process's CPU time, all its threads
   std::optional<CpuTicks> cpus;  // those of the affinity mask
 };
@@ -53,8 +52,9 @@ struct LoadAverage {
 std::optional<LoadAverage> parse_load_average(std::string_view text);
 
 // The tasks other than this process that are runnable now, on the whole machine: the median of
-// a few readings of /proc/loadavg half a millisecond apart (one reading may fall in a busy process's
-// brief sleep), less this process's reading thread. With the one-minute average beside it.
+// a few readings of /proc/loadavg half a millisecond apart (one reading may fall in a busy
+// process's brief sleep), less this process's reading thread. With the one-minute average beside
+// it.
 struct RunnableNow {
   int others = 0;
   double load_average = 0.0;

@@ -30,12 +30,6 @@ std::int64_t now_ns() {
       .count();
 }
 
-// The count the load leaves room for: the CPUs it leaves free, rounded, within [1, most].
-int room_for(double others_busy, int cpus, int most) {
-  const double free = static_cast<double>(cpus) - others_busy;
-  return std::clamp(static_cast<int>(std::floor(free + 0.5)), 1, most);
-}
-
 }  // namespace
 
 LoadMeter machine_load_meter() {
@@ -80,7 +74,7 @@ int ThreadCountPolicy::next(const Stretch& stretch) {
     }
     way->wait = std::max(0, way->wait - 1);
   }
-  const int room = room_for(others, cpus_, most_);
+  const int room = threads_with_room(others, cpus_, most_);
   if ((room < settled_ && down_.wait == 0) || (room > settled_ && up_.wait == 0)) {
     trial_ = room;
     return room;

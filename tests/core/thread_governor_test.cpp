@@ -1,5 +1,5 @@
 // The thread count that follows the machine: the decisions, stretch by stretch, from figures a
-// test makes up (the clock and the kernel's counts are the run's; here they are the script's),
+// test makes up (the step times and the kernel's counts are the run's; here the script's),
 // and the readings of the kernel's files they rest on.
 #include "core/thread_governor.hpp"
 
@@ -153,11 +153,11 @@ TEST(MachineLoad, ProcStatIsReadForTheCpusOfTheMask) {
 
 TEST(MachineLoad, OthersAreTheBusyTimeLessThisProcesssOwn) {
   LoadSample before;
-  before.wall = std::chrono::steady_clock::time_point(std::chrono::seconds(10));
+  before.wall_seconds = 10.0;
   before.own_cpu_seconds = 1.0;
   before.cpus = CpuTicks{1000, 5000};
   LoadSample after = before;
-  after.wall += std::chrono::milliseconds(500);
+  after.wall_seconds += 0.5;
   after.own_cpu_seconds = 1.4;        // 0.4 s of ours in half a second
   after.cpus = CpuTicks{1150, 5100};  // 1.5 s busy of 2 CPUs' 1 s, at 100 ticks a second
   const std::optional<double> others = others_busy_cpus(before, after, 100);
