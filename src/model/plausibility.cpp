@@ -39,12 +39,14 @@ void note_implausible_size(const SceneDescription& scene, const Model& model, st
   if (across <= largest) {
     return;
   }
+  // An object pinned whole (a collider) has no mass that matters: its size alone tells the slip.
+  const std::string weight = desc.pins.all ? "" : fmt::format(" and weighs {:.4g} kg", mass);
   warnings.push_back(fmt::format(
-      "{}: warning: object '{}': its {} is {:.4g} m across and weighs {:.4g} kg, larger than {} "
-      "is made ({:g} m); a mesh file is read in metres: if it was modelled in centimetres or "
-      "millimetres, give its mesh 'units: cm' (or mm), or 'fit: {{size: …}}' for the size wanted",
+      "{}: warning: object '{}': its {} is {:.4g} m across{}, larger than {} is made ({:g} m); a "
+      "mesh file is read in metres: if it was modelled in centimetres or millimetres, give its "
+      "mesh 'units: cm' (or mm), or 'fit: {{size: …}}' for the size wanted",
       desc.mesh_loc.known() ? desc.mesh_loc.to_string() : "dinam", object.name, desc.mesh_source,
-      across, mass, sheet ? "any cloth" : "any rope or cable", largest));
+      across, weight, sheet ? "any cloth" : "any rope or cable", largest));
 }
 
 }  // namespace
@@ -53,8 +55,8 @@ void note_implausible_values(const SceneDescription& scene, Model& model) {
   for (std::size_t o = 0; o < model.objects.size(); ++o) {
     note_implausible_size(scene, model, o, model.warnings);
     const ModelObject& object = model.objects[o];
-    if (object.wire_radius <= 0.0 || object.bar_count == 0) {
-      continue;  // a section given by its area: no radius to compare
+    if (object.wire_radius <= 0.0 || object.bar_count == 0 || scene.objects[o].pins.all) {
+      continue;  // a section given by its area, or pinned whole: no radius that matters
     }
     // A bar is a slender rod: one thicker than it is long has a radius in the wrong unit.
     std::vector<double> lengths(

@@ -36,6 +36,38 @@ BoxDesc read_box(YamlMap map) {
   return box;
 }
 
+// Whether `pins` holds every vertex of the mesh: an object pinned whole (an obstacle), whose
+// material then decides nothing of the motion.
+bool selects_every_vertex(const NodeSelection& pins, const RawMesh& mesh) {
+  std::vector<char> held(mesh.vertices.size(), 0);
+  for (const Index v : pins.vertex_ids) {
+    held[static_cast<std::size_t>(v)] = 1;
+  }
+  for (std::size_t v = 0; v < held.size(); ++v) {
+    for (const BoxDesc& box : pins.boxes) {
+      const Vec3& x = mesh.vertices[v];
+      if ((x.array() >= box.min.array()).all() && (x.array() <= box.max.array()).all()) {
+        held[v] = 1;
+      }
+    }
+  }
+  return !held.empty() && std::all_of(held.begin(), held.end(), [](char h) { return h != 0; });
+}
+
+// A collider's material where the scene gives none: a wire of its shell's radius, which is what
+// its contact and its drawing read of it; its stiffness and mass act on no free node.
+MaterialDesc collider_material(double shell) {
+  MaterialDesc material;
+  material.density = 1000.0;
+  material.youngs_modulus = 1.0e9;
+  material.shear_modulus = material.youngs_modulus / 2.6;
+  material.wire_radius = shell;
+  material.area = std::numbers::pi * shell * shell;
+  material.area_moment = 0.25 * std::numbers::pi * std::pow(shell, 4);
+  material.polar_moment = 2.0 * material.area_moment;
+  return material;
+}
+
 }  // namespace
 
 // A colour as artists pick it: [r, g, b] in sRGB (Blender's colour picker, Houdini, Photoshop,
@@ -135,11 +167,32 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   object.mesh_loc = map.loc("mesh");
   read_mesh(YamlMap(map.required("mesh"), map.file(), map.path("mesh")), scene_folder, object,
             warnings);
-  object.material =
-      read_material(YamlMap(map.required("material"), map.file(), map.path("material")));
-  if (map.has("pinned")) {
+  const std::string role = map.string("role", "flexible");
+  if (role != "flexible" && role != "collider") {
+    throw_user_error(
+        map.loc("role"),
+        "'{}' must be flexible (the default: it moves by its material) or collider (an "
+        "obstacle held whole, moved only by 'pin_motion'); got '{}'",
+        map.path("role"), role);
+  }
+  object.collider = role == "collider";
+  if (object.collider && map.has("pinned")) {
+    throw_user_error(map.loc("pinned"),
+                     "'{}': object '{}' is a collider, held whole (every node pinned); leave "
+                     "'pinned' out, or make it 'role: flexible' to pin some of its nodes",
+                     map.path("pinned"), object.name);
+  }
+  if (map.has("material") || !object.collider) {
+    object.material =
+        read_material(YamlMap(map.required("material"), map.file(), map.path("material")));
+  }
+  if (object.collider) {
+    object.pins.all = true;
+    object.pins.loc = map.loc("role");
+  } else if (map.has("pinned")) {
     object.pins = read_nodes(YamlMap(map.get("pinned"), map.file(), map.path("pinned")),
                              object.mesh, &object.pins_clamped);
+    object.pins.all = object.pins.all || selects_every_vertex(object.pins, object.mesh);
   }
   if (map.has("pin_motion")) {
     YamlMap motion(map.get("pin_motion"), map.file(), map.path("pin_motion"));
@@ -227,6 +280,10 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   if (map.has("contact")) {
     object.contact =
         read_object_contact(YamlMap(map.get("contact"), map.file(), map.path("contact")));
+  }
+  if (object.collider && !map.has("material")) {
+    object.material = collider_material(object.contact.radius.value_or(kColliderShell));
+    object.material.loc = map.loc("role");
   }
   if (map.has("damping")) {
     YamlMap damping(map.get("damping"), map.file(), map.path("damping"));

@@ -380,5 +380,44 @@ objects:
   EXPECT_TRUE(with_pins("    pinned: {indices: [0, 4, 7]}\n").warnings.empty());
 }
 
+// A collider (`role: collider`) needs no material and is held whole; an object pinned whole gets
+// no material's warnings: the same coarse triangle mesh with a 1 m wire radius, as a cotton sheet
+// free to move, is warned of twice (its lattice triangles, its radius); as a collider, or pinned
+// by a box around all of it, not at all. `pinned` beside a collider and an unknown role are
+// refused at their lines.
+TEST(ModelBuilder, AColliderNeedsNoMaterialAndIsWarnedOfNothingAMaterialDecides) {
+  auto model_of = [](const std::string& object) {
+    return build_model(test::scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - name: body
+    mesh: {grid: {width: 1, height: 1, columns: 3, rows: 3}}
+)" + object));
+  };
+  const Model free = model_of("    material: {preset: cotton}\n    pinned: {indices: [0]}\n");
+  EXPECT_GE(free.warnings.size(), 1U);
+  const Model collider = model_of("    role: collider\n");
+  EXPECT_TRUE(collider.warnings.empty()) << collider.warnings[0];
+  for (Index i = 0; i < collider.node_count(); ++i) {
+    EXPECT_TRUE(collider.pinned(i)) << i;
+  }
+  // Its shell is its contact radius, else 5 mm.
+  EXPECT_DOUBLE_EQ(collider.objects[0].wire_radius, kColliderShell);
+  EXPECT_DOUBLE_EQ(
+      model_of("    role: collider\n    contact: {radius: 0.02}\n").objects[0].wire_radius, 0.02);
+  const Model wide = model_of("    material: {density: 1000, youngs_modulus: 1e6, radius: 1}\n");
+  ASSERT_EQ(wide.warnings.size(), 1U);
+  EXPECT_TRUE(model_of("    material: {density: 1000, youngs_modulus: 1e6, radius: 1}\n"
+                       "    pinned: {box: {min: [-1, -1, -1], max: [2, 2, 1]}}\n")
+                  .warnings.empty());
+  EXPECT_TRUE(
+      model_of("    material: {preset: cotton}\n    pinned: {all: true}\n").warnings.empty());
+  test::expect_user_error([&] { model_of("    role: collider\n    pinned: {all: true}\n"); }, 7,
+                          {"object 'body' is a collider, held whole", "leave 'pinned' out"});
+  test::expect_user_error([&] { model_of("    role: obstacle\n"); }, 6,
+                          {"must be flexible", "or collider", "got 'obstacle'"});
+  test::expect_user_error([&] { model_of("    pinned: {all: true}\n"); }, 4, {"material"});
+}
+
 }  // namespace
 }  // namespace dinam
