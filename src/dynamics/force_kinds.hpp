@@ -22,6 +22,7 @@ extern const ForceKind kGlobalDamping;  // global_damping.cpp
 extern const ForceKind kAxialDampers;   // axial_spring.cpp
 extern const ForceKind kGroundContact;  // ground_contact.cpp
 extern const ForceKind kObjectContact;  // object_contact.cpp
+extern const ForceKind kTies;           // tie_springs.cpp
 
 // A spring kind (spring_kind.hpp) as a force kind: a potential, its plastic sets held.
 // kHeld: whether `integrator: xpbd` holds it as a constraint (its SpringKind's constraint.held,
@@ -80,7 +81,7 @@ inline constexpr ForceKind kSpringForces{
                        }},
 };
 
-inline constexpr std::array<const ForceKind*, 11> kForceKinds{
+inline constexpr std::array<const ForceKind*, 12> kForceKinds{
     &kGravity,
     &kFields,
     &kWind,
@@ -89,6 +90,7 @@ inline constexpr std::array<const ForceKind*, 11> kForceKinds{
     &kSpringForces<kBendingSprings, &ForceSwitches::bending>,
     &kSpringForces<kClampSprings, &ForceSwitches::clamps>,
     &kSpringForces<kTorsionSprings, &ForceSwitches::torsion>,
+    &kTies,
     &kAxialDampers,
     // The ground after every other kind on the team's nodes: its damper acts on the velocity at
     // t_n that every other force on the node brings about (ground_contact.hpp).

@@ -18,10 +18,11 @@ struct ForceSwitches {
   bool wind = true;
   bool ground = true;
   bool object_contact = true;  // between objects and within one
+  bool ties = true;            // attachments (`attach`)
 
   // Every kind off: a start from which to switch on one or two.
   static ForceSwitches none() {
-    return {false, false, false, false, false, false, false, false, false, false, false};
+    return {false, false, false, false, false, false, false, false, false, false, false, false};
   }
 };
 

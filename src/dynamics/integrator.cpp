@@ -16,6 +16,7 @@
 #include "dynamics/pin_motion.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/tearing.hpp"
+#include "dynamics/tie_springs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -477,8 +478,11 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& given, St
       state.dt = dt;
       thread_team().run(
           [&](const TeamMember& member) {
-            if (model.can_tear()) {
-              on_leader(member, [&] { break_overloaded_bars(model, state); });
+            if (model.can_tear() || model.ties.can_break) {
+              on_leader(member, [&] {
+                break_overloaded_bars(model, state);
+                break_overloaded_ties(model, state);
+              });
             }
             add_forces({member, split}, model, switches, options, state, true, state.time);
           },
@@ -501,8 +505,11 @@ void advance_steps(const Model& model, double dt, const ForceSwitches& given, St
           const Worker worker{member, split};
           for (std::int64_t s = 0; s < steps; ++s) {
             // 0. Bars strained past their breaking limit at x_n break, with what stands on them.
-            if (model.can_tear()) {
-              on_leader(member, [&] { break_overloaded_bars(model, state); });
+            if (model.can_tear() || model.ties.can_break) {
+              on_leader(member, [&] {
+                break_overloaded_bars(model, state);
+                break_overloaded_ties(model, state);
+              });
             }
             // 1. Forces at (x_n, v_{n−½}, t_n); plastic sets and contact anchors move on.
             add_forces(worker, model, switches, options, state, true, state.time);

@@ -157,6 +157,11 @@ struct State {
   std::vector<std::uint8_t> clamp_broken;    // (n_clamps)
   std::vector<std::uint8_t> face_broken;     // (n_faces) faces with a broken edge
   std::vector<Index> broken_bars;            // in the order they broke
+  // Ties (`attach`, dynamics/tie_springs.hpp): 1 for a broken one (empty unless some can break);
+  // under `integrator: xpbd` each one's multiplier in the step (N·s²) and its last tension (N).
+  std::vector<std::uint8_t> tie_broken;  // (n_ties)
+  std::vector<double> tie_lambda;        // (n_ties)
+  std::vector<double> tie_tension;       // (n_ties)
 
   // Ground contact history (empty without a ground): where each node's stick spring is anchored
   // on the plane, and whether it is sliding (kinetic friction) or sticking (static).

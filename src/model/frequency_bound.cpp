@@ -46,6 +46,17 @@ NodeFrequencyRows node_frequency_rows(const Model& model, bool include_contact, 
   for (const ModelSpringKind* kind : kModelSpringKinds) {
     kind->add_frequency_terms(model, sums);  // in the list's order: the bound's bits
   }
+  // Ties (`attach`): a spring along the line from the node to its point, whose length's gradient
+  // is the unit direction at the node and −w of it at the point's nodes. Held as constraints
+  // with the bars (`integrator: xpbd`), they bound no step.
+  if (!sums.bars_held) {
+    const Ties& ties = model.ties;
+    for (Index t = 0; t < ties.count(); ++t) {
+      const double* w = &ties.weights[3 * static_cast<std::size_t>(t)];
+      const double norms[4] = {1.0, w[0], w[1], w[2]};
+      sums.add(model, ties.stiffness[t], &ties.nodes[4 * static_cast<std::size_t>(t)], norms, 4);
+    }
+  }
   // Contact: the normal and stick penalties act on each node alone.
   if (include_contact && model.ground.enabled) {
     for (Index i = 0; i < n; ++i) {

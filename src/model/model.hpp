@@ -155,6 +155,21 @@ inline double plastic_set_of(const std::vector<double>& plastic_set, Index i) {
   return plastic_set.empty() ? 0.0 : plastic_set[i];
 }
 
+// Attachments (`attach`): each tie holds a free node at its start distance from a point of another
+// object, a fixed mix of up to three of that object's nodes (a bar's two ends or a triangle's
+// corners, the point nearest the node at the start: model/tie_builder.hpp).
+struct Ties {
+  std::vector<Index> nodes;         // (n_ties × 4) the tied node, then the point's three nodes
+  std::vector<double> weights;      // (n_ties × 3) the point's weights of its nodes, summing to 1
+  std::vector<double> rest_length;  // (n_ties) m, the node's distance from the point at the start
+  std::vector<double> stiffness;    // (n_ties) N/m, a rigid tie's as stiff as the step allows
+  std::vector<std::uint8_t> rigid;  // (n_ties) 1: rigid (a constraint under `integrator: xpbd`)
+  std::vector<double> break_force;  // (n_ties) N, or kNoYield
+  bool can_break = false;           // some tie has a break_force
+
+  Index count() const { return static_cast<Index>(rest_length.size()); }
+};
+
 struct Model {
   // What building it found worth telling the user, who may want to fix the input (a mesh's
   // degenerate faces, dropped): one line each, "file:line:column: warning: …" as errors read.
@@ -249,6 +264,7 @@ struct Model {
   WindLoad wind;
   GroundContact ground;
   ObjectContact contact;
+  Ties ties;
 
   Index node_count() const { return static_cast<Index>(node_mass.size()); }
   Index bar_count() const { return static_cast<Index>(bar_rest_length.size()); }

@@ -91,6 +91,13 @@ void for_each_model_array(ModelType& model, Visit&& visit) {
   visit(std::string_view("contact.triangle_radius"), model.contact.triangle_radius);
   visit(std::string_view("contact.neighbour_offsets"), model.contact.neighbour_offsets);
   visit(std::string_view("contact.neighbours"), model.contact.neighbours);
+
+  visit(std::string_view("ties.nodes"), model.ties.nodes);
+  visit(std::string_view("ties.weights"), model.ties.weights);
+  visit(std::string_view("ties.rest_length"), model.ties.rest_length);
+  visit(std::string_view("ties.stiffness"), model.ties.stiffness);
+  visit(std::string_view("ties.rigid"), model.ties.rigid);
+  visit(std::string_view("ties.break_force"), model.ties.break_force);
 }
 
 }  // namespace dinam

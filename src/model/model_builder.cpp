@@ -25,6 +25,7 @@
 #include "model/plausibility.hpp"
 #include "model/spring_builders.hpp"
 #include "model/step_aiming.hpp"
+#include "model/tie_builder.hpp"
 #include "model/vertex_welding.hpp"
 #include "model/wind_load.hpp"
 #include "scene/scene_description.hpp"
@@ -529,6 +530,17 @@ void add_fields(const SceneDescription& scene, const std::vector<ObjectNodes>& o
   }
 }
 
+// Every object's attachments, their nodes resolved.
+std::vector<TieRequest> tie_requests(const std::vector<ObjectNodes>& objects, const Model& model) {
+  std::vector<TieRequest> requests;
+  for (const ObjectNodes& object : objects) {
+    for (const AttachmentDesc& attachment : object.desc->attachments) {
+      requests.push_back({object.desc, &attachment, select_nodes(attachment.nodes, object, model)});
+    }
+  }
+  return requests;
+}
+
 // The arrays grew by push_back, to up to twice their length: give the spare capacity back, since
 // a model lives as long as its run.
 void release_spare_capacity(Model& model) {
@@ -581,6 +593,7 @@ Model build_model_once(const SceneDescription& scene, const ShortBarPlan& plan) 
   }
   add_tearing(bar_materials, model);
   add_fields(scene, objects, model);
+  add_ties(scene, tie_requests(objects, model), model);  // before the contacts, which bound by them
   add_wind(scene, model);
   add_ground_contact(scene, model);
   add_object_contact(scene, model);

@@ -57,6 +57,9 @@ void read_friction(YamlMap map, double& static_friction, double& kinetic_frictio
 ContactDesc read_contact(YamlMap map);
 ObjectContactDesc read_object_contact(YamlMap map);
 
+// An object's `attach` list (attachment_reader.cpp): its nodes tied to other objects.
+std::vector<AttachmentDesc> read_attachments(YamlMap& object_map, const ObjectDesc& object);
+
 // The scene's `camera` (a map, or `auto`); what is allowed but implausible goes to `warnings`.
 CameraDesc read_camera(const YAML::Node& node, const std::string& file,
                        std::vector<std::string>& warnings);

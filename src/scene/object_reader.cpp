@@ -213,6 +213,7 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
                        map.path("pin_motion"), object.name);
     }
   }
+  object.attachments = read_attachments(map, object);
   object.initial_velocity = map.vec3("initial_velocity", object.initial_velocity);
   if (const YAML::Node groups = map.get("velocity_groups"); groups) {
     if (!groups.IsSequence()) {

@@ -141,6 +141,19 @@ struct ObjectContactDesc {
                                  // of cords has holes between them)
 };
 
+// Nodes of one object tied to another (`attach`): each to its nearest point, at the start, on the
+// target's bars and faces, which then moves with the target; held there at the distance it starts
+// at by a spring of `stiffness`, or rigidly (empty: as stiff as the step allows, or a constraint
+// under `integrator: xpbd`); broken for good once it pulls harder than `break_force`.
+struct AttachmentDesc {
+  NodeSelection nodes;  // of the object that holds the attachment
+  std::string target;   // another object's name
+  FileLoc target_loc;
+  std::optional<double> stiffness;  // N/m; empty: rigid
+  double break_force = kNoYield;    // N
+  FileLoc loc;
+};
+
 // What an object's faces are to its motion (`faces`): cloth, whose faces resist in-plane shear
 // (and carry a sheet material's mass and stiffness); or a net, whose faces are the openings
 // between wires, so that only the bars act.
@@ -180,7 +193,8 @@ struct ObjectDesc {
   PinDesc pins;
   bool pins_clamped = false;  // the pinned nodes hold the direction of their bars as well
   PinMotionDesc pin_motion;   // none by default: pinned nodes stay where they are
-  Vec3 initial_velocity = Vec3::Zero();  // m/s
+  std::vector<AttachmentDesc> attachments;  // its nodes tied to other objects
+  Vec3 initial_velocity = Vec3::Zero();     // m/s
   std::vector<VelocityGroupDesc> velocity_groups;
   BendingPairs bending_pairs = BendingPairs::kAuto;
   FaceRole faces = FaceRole::kSheet;

@@ -34,12 +34,17 @@ std::string why_not_static(const Model& model) {
   if (model.contact.enabled) {
     return "contact between objects: where a body rests on another depends on how it slid there";
   }
-  // Under gravity, an object with no pinned node and no ground below it has no equilibrium.
+  // Under gravity, an object with no pinned node, no tie to another and no ground below it has no
+  // equilibrium.
   if (model.gravity.norm() > 0.0 && !model.ground.enabled) {
+    std::vector<char> tied(static_cast<std::size_t>(model.node_count()), 0);
+    for (Index t = 0; t < model.ties.count(); ++t) {
+      tied[static_cast<std::size_t>(model.ties.nodes[4 * static_cast<std::size_t>(t)])] = 1;
+    }
     for (const ModelObject& object : model.objects) {
       bool held = false;
       for (Index i = object.first_node; i < object.first_node + object.node_count && !held; ++i) {
-        held = model.pinned(i);
+        held = model.pinned(i) || tied[static_cast<std::size_t>(i)] != 0;
       }
       if (!held) {
         return fmt::format(

@@ -8,6 +8,7 @@
 #include "dynamics/energy.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/tearing.hpp"
+#include "dynamics/tie_springs.hpp"
 #include "model/model.hpp"
 #include "solver/potential.hpp"
 #include "solver/step_scheme.hpp"
@@ -38,6 +39,7 @@ void StepProblem::break_bars(const Model& model, State& state) const {
   if (model.can_tear()) {
     break_overloaded_bars(model, state);
   }
+  break_overloaded_ties(model, state);
 }
 
 void StepProblem::take_loads(const Model& model, State& state, double t_next) {

@@ -34,7 +34,7 @@ std::set<std::size_t> switched_on(const ForceSwitches& switches) {
 // Every switch belongs to one kind, and every kind has one: switching a kind off leaves exactly
 // it out of every loop, and no force acts that no switch controls.
 TEST(ForceKinds, EverySwitchBelongsToExactlyOneKind) {
-  static_assert(sizeof(ForceSwitches) == 11 * sizeof(bool), "a switch was added: list its kind");
+  static_assert(sizeof(ForceSwitches) == 12 * sizeof(bool), "a switch was added: list its kind");
   EXPECT_TRUE(switched_on(ForceSwitches::none()).empty());
   std::set<std::size_t> seen;
   for (const ForceKind* kind : kForceKinds) {
@@ -138,7 +138,7 @@ TEST(ForceKinds, EveryPotentialsForceIsMinusItsGradient) {
     }
     ++checked;
   }
-  EXPECT_EQ(checked, 6);  // gravity, four kinds of spring and the ground
+  EXPECT_EQ(checked, 7);  // gravity, four kinds of spring, the ties and the ground
 }
 
 }  // namespace

@@ -15,13 +15,14 @@ inline ForceSwitches nothing_on() {
   ForceSwitches switches;
   switches.gravity = switches.fields = switches.axial_springs = switches.axial_dampers = false;
   switches.bending = switches.torsion = switches.clamps = switches.global_damping = false;
-  switches.wind = switches.ground = switches.object_contact = false;
+  switches.wind = switches.ground = switches.object_contact = switches.ties = false;
   return switches;
 }
 
 // A wire lattice of 5 × 5 cells of 0.2 m hanging from a clamped edge (so clamps exist beside
-// axial, bending and torsion springs), every free node moved by up to 3 mm at random and 4 mm
-// down, so that its lowest row, 2 mm above the ground, dips into it. `material_extra` ends the
+// axial, bending and torsion springs), and a cord 5 cm beside it tied to it (ties), every free
+// node moved by up to 3 mm at random and 4 mm down, so that its lowest row, 2 mm above the
+// ground, dips into it. `material_extra` ends the
 // material's map (", yield_stress: 1.0e6").
 struct PerturbedLattice {
   Model model;
@@ -41,6 +42,10 @@ objects:
     material: {density: 7850, youngs_modulus: 2.0e9, radius: 0.002)" +
                                                  material_extra + R"(}
     pinned: {box: {min: [-1, -1, 0.701], max: [1, 1, 0.703]}, clamped: true}
+  - name: cord
+    mesh: {polyline: {points: [[0.1, 0.05, 0.1], [0.9, 0.05, 0.1]], segments: 4}}
+    material: {density: 1000, youngs_modulus: 1.0e7, radius: 0.002}
+    attach: [{nodes: {all: true}, to: lattice, stiffness: 500}]
 )")),
                      {}};
   p.state = make_state(p.model, false);

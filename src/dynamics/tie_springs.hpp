@@ -1,0 +1,30 @@
+#pragma once
+// Ties (`attach`, model.hpp's Ties): each holds a node at its start distance L from a point of
+// another object, p = Σ w_k x_k over up to three of its nodes, by a spring of stiffness k along
+// the line between them (energy ½ k (|x − p| − L)², its force on the point's nodes shared by
+// their weights), so that a rope's end follows its hook and a flag's ties their pole. Under
+// `integrator: xpbd` they are held as constraints with the bars: C = |x − p| − L of compliance
+// 1/k, 0 for a rigid tie. A tie that pulls harder than its break_force breaks for good at the
+// start of a step, serially in tie order (the same for any thread count).
+#include "dynamics/force_kind.hpp"
+
+namespace dinam {
+
+struct Model;
+struct State;
+
+// A tie's forces, serial: ns each on every thread (each thread takes every tie, adding to its own
+// nodes); only the run-time estimate reads it.
+inline constexpr double kNsPerTie = 15.0;
+
+// The tie's tension at the state's positions, N (≥ 0 in tension, < 0 pushed): k (|x − p| − L), or
+// under `integrator: xpbd` what its last projection held (the spring's before the first).
+double tie_tension(const Model& model, const State& state, Index tie);
+
+// Breaks every tie whose tension's magnitude exceeds its break_force; the energy it held is booked
+// as dissipated, as a torn bar's is (dynamics/tearing.hpp).
+void break_overloaded_ties(const Model& model, State& state);
+
+extern const ForceKind kTies;
+
+}  // namespace dinam
