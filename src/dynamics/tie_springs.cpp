@@ -28,8 +28,9 @@ std::array<Point<T>, 4> tie_forces(const Model& model, Index t, const std::array
   const double length = model.ties.rest_length[t];
   const double k = model.ties.stiffness[t];
   Point<T> d;
+  const Vec3& offset = model.ties.offset[t];
   for (int a = 0; a < 3; ++a) {
-    d[a] = at[0][a] - (T(w[0]) * at[1][a] + T(w[1]) * at[2][a] + T(w[2]) * at[3][a]);
+    d[a] = at[0][a] - (T(w[0]) * at[1][a] + T(w[1]) * at[2][a] + T(w[2]) * at[3][a]) - T(offset[a]);
   }
   T scale(-k);  // f_node = scale · d
   if (length > kOnThePoint) {
@@ -55,7 +56,7 @@ std::array<Vec3, 4> positions_of(const Model& model, const std::vector<Vec3>& x,
 double stretch(const Model& model, const std::vector<Vec3>& x, Index t) {
   const std::array<Vec3, 4> at = positions_of(model, x, t);
   const double* w = &model.ties.weights[3 * static_cast<std::size_t>(t)];
-  const Vec3 d = at[0] - (w[0] * at[1] + w[1] * at[2] + w[2] * at[3]);
+  const Vec3 d = at[0] - (w[0] * at[1] + w[1] * at[2] + w[2] * at[3]) - model.ties.offset[t];
   return d.norm() - model.ties.rest_length[t];
 }
 
@@ -110,7 +111,8 @@ void project_ties(const Model& model, double h, int sweep, State& state) {
     }
     const Index* nodes = &ties.nodes[4 * static_cast<std::size_t>(t)];
     const double* w = &ties.weights[3 * static_cast<std::size_t>(t)];
-    const Vec3 d = x[nodes[0]] - (w[0] * x[nodes[1]] + w[1] * x[nodes[2]] + w[2] * x[nodes[3]]);
+    const Vec3 d = x[nodes[0]] - (w[0] * x[nodes[1]] + w[1] * x[nodes[2]] + w[2] * x[nodes[3]]) -
+                   ties.offset[t];
     const double r = d.norm();
     if (!(r > 0.0)) {
       continue;

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "model/frequency_bound.hpp"
+#include "model/tied_contact.hpp"
 
 namespace dinam {
 
@@ -251,23 +252,14 @@ void add_object_contact(const SceneDescription& scene, Model& model) {
     joined[n0].push_back(n1);
     joined[n1].push_back(n0);
   }
-  // A tied node is joined to its point's nodes: the tied parts do not push each other apart where
-  // they are tied (a rope's end around a hook, a flag's ties around its pole).
-  const Ties& ties = model.ties;
-  for (Index t = 0; t < ties.count(); ++t) {
-    const Index* nodes = &ties.nodes[4 * static_cast<std::size_t>(t)];
-    for (int k = 1; k < 4; ++k) {
-      joined[nodes[0]].push_back(nodes[k]);
-      joined[nodes[k]].push_back(nodes[0]);
-    }
-  }
   contact.neighbour_offsets.assign(1, 0);
   for (std::vector<Index>& list : joined) {
     std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
     contact.neighbours.insert(contact.neighbours.end(), list.begin(), list.end());
     contact.neighbour_offsets.push_back(static_cast<Index>(contact.neighbours.size()));
   }
+
+  leave_out_pairs_tied_at_rest(model);
 
   // The skin of the candidate pairs: the largest radius. Wider, the pairs are found less often
   // but more of them are checked every step.

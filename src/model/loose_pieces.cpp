@@ -7,10 +7,12 @@
 
 #include "model/disjoint_sets.hpp"
 #include "model/model.hpp"
+#include "model/tie_builder.hpp"
 
 namespace dinam {
 
 void note_loose_pieces(const SceneDescription& scene, Model& model) {
+  const std::vector<std::uint8_t> tied = tied_nodes(model);
   for (std::size_t o = 0; o < model.objects.size(); ++o) {
     const ModelObject& object = model.objects[o];
     const Index first = object.first_node;
@@ -23,13 +25,14 @@ void note_loose_pieces(const SceneDescription& scene, Model& model) {
         pieces_of.join(std::max(a, c), std::min(a, c));
       }
     }
-    // Each piece's size and whether it holds a pinned node, by root.
+    // Each piece's size and whether it holds a pinned or tied node, by root.
     std::vector<Index> size(count, 0);
     std::vector<char> held(count, 0);
     for (Index i = 0; i < object.node_count; ++i) {
       const Index root = pieces_of.find(i);
       size[root] += 1;
-      held[root] = static_cast<char>(held[root] != 0 || model.pinned(first + i));
+      held[root] = static_cast<char>(held[root] != 0 || model.pinned(first + i) ||
+                                     tied[static_cast<std::size_t>(first + i)] != 0);
     }
     Index pieces = 0;
     Index free = 0;

@@ -5,6 +5,7 @@
 
 #include "model/disjoint_sets.hpp"
 #include "model/model.hpp"
+#include "model/tie_builder.hpp"
 
 namespace dinam {
 
@@ -19,10 +20,11 @@ MeshPieces mesh_pieces(const Model& model) {
     }
   }
   MeshPieces pieces{sets.roots(), std::vector<int>(n, 0), std::vector<std::uint8_t>(n, 0)};
+  const std::vector<std::uint8_t> tied = tied_nodes(model);
   for (Index i = 0; i < model.node_count(); ++i) {
     const Index piece = pieces.piece[i];
     pieces.size[piece] += 1;
-    pieces.held[piece] = pieces.held[piece] != 0 || model.pinned(i) ? 1 : 0;
+    pieces.held[piece] = pieces.held[piece] != 0 || model.pinned(i) || tied[i] != 0 ? 1 : 0;
   }
   return pieces;
 }

@@ -14,7 +14,7 @@ struct Model;
 struct MeshPieces {
   std::vector<Index> piece;        // (n_nodes) the piece of each node, named by one of its nodes
   std::vector<int> size;           // (n_nodes) by piece: its nodes; 0 for a node that names none
-  std::vector<std::uint8_t> held;  // (n_nodes) by piece: 1 where a pin holds it
+  std::vector<std::uint8_t> held;  // (n_nodes) by piece: 1 where a pin or a tie holds it
 };
 
 MeshPieces mesh_pieces(const Model& model);

@@ -114,7 +114,20 @@ struct ObjectContact {
   std::vector<Index> neighbour_offsets;  // (n_nodes + 1) into neighbours
   std::vector<Index> neighbours;
   double skin = 0.0;  // m: the candidate pairs are those within reach + 2 skin
+  // Pairs between objects tied to each other (`attach`) that touch at the start where a tied node
+  // is (a rope's end on its hook, a tie's loop around its pole): left out, as neighbours in a mesh
+  // are, sorted (model/tied_contact.hpp).
+  std::vector<std::array<Index, 2>> tied_bar_pairs;        // (bar, bar), the lower first
+  std::vector<std::array<Index, 2>> tied_point_triangles;  // (node, triangle)
 
+  bool tied_at_rest_bars(Index a, Index b) const {
+    return std::binary_search(tied_bar_pairs.begin(), tied_bar_pairs.end(),
+                              std::array<Index, 2>{std::min(a, b), std::max(a, b)});
+  }
+  bool tied_at_rest_point(Index node, Index triangle) const {
+    return std::binary_search(tied_point_triangles.begin(), tied_point_triangles.end(),
+                              std::array<Index, 2>{node, triangle});
+  }
   bool joined(Index u, Index v) const {
     const auto first = neighbours.begin() + neighbour_offsets[u];
     const auto last = neighbours.begin() + neighbour_offsets[u + 1];
@@ -155,13 +168,15 @@ inline double plastic_set_of(const std::vector<double>& plastic_set, Index i) {
   return plastic_set.empty() ? 0.0 : plastic_set[i];
 }
 
-// Attachments (`attach`): each tie holds a free node at its start distance from a point of another
+// Attachments (`attach`): each tie holds a free node at its start offset from a point of another
 // object, a fixed mix of up to three of that object's nodes (a bar's two ends or a triangle's
-// corners, the point nearest the node at the start: model/tie_builder.hpp).
+// corners, the point nearest the node at the start: model/tie_builder.hpp); a tie that swings, at
+// its start distance from the point instead (its offset then nil).
 struct Ties {
   std::vector<Index> nodes;         // (n_ties × 4) the tied node, then the point's three nodes
   std::vector<double> weights;      // (n_ties × 3) the point's weights of its nodes, summing to 1
-  std::vector<double> rest_length;  // (n_ties) m, the node's distance from the point at the start
+  std::vector<Vec3> offset;         // (n_ties) m, the node's from the point at the start, or 0
+  std::vector<double> rest_length;  // (n_ties) m, a swinging tie's distance at the start, or 0
   std::vector<double> stiffness;    // (n_ties) N/m, a rigid tie's as stiff as the step allows
   std::vector<std::uint8_t> rigid;  // (n_ties) 1: rigid (a constraint under `integrator: xpbd`)
   std::vector<double> break_force;  // (n_ties) N, or kNoYield

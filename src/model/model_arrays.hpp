@@ -91,9 +91,12 @@ void for_each_model_array(ModelType& model, Visit&& visit) {
   visit(std::string_view("contact.triangle_radius"), model.contact.triangle_radius);
   visit(std::string_view("contact.neighbour_offsets"), model.contact.neighbour_offsets);
   visit(std::string_view("contact.neighbours"), model.contact.neighbours);
+  visit(std::string_view("contact.tied_bar_pairs"), model.contact.tied_bar_pairs);
+  visit(std::string_view("contact.tied_point_triangles"), model.contact.tied_point_triangles);
 
   visit(std::string_view("ties.nodes"), model.ties.nodes);
   visit(std::string_view("ties.weights"), model.ties.weights);
+  visit(std::string_view("ties.offset"), model.ties.offset);
   visit(std::string_view("ties.rest_length"), model.ties.rest_length);
   visit(std::string_view("ties.stiffness"), model.ties.stiffness);
   visit(std::string_view("ties.rigid"), model.ties.rigid);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/closest_points.hpp"
 #include "core/error.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
@@ -19,6 +20,7 @@ namespace {
 struct NearestPoint {
   std::array<Index, 3> nodes{-1, -1, -1};
   std::array<double, 3> weights{0.0, 0.0, 0.0};
+  Vec3 position = Vec3::Zero();
   double distance = std::numeric_limits<double>::infinity();
 };
 
@@ -29,51 +31,6 @@ double nearest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return length_squared > 0.0 ? std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
 }
 
-// The point of triangle abc nearest p, as barycentric weights of a, b, c (Ericson, "Real-Time
-// Collision Detection", 5.1.5: the Voronoi regions of the corners, the sides, the inside).
-std::array<double, 3> nearest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b,
-                                          const Vec3& c) {
-  const Vec3 ab = b - a;
-  const Vec3 ac = c - a;
-  const Vec3 ap = p - a;
-  const double d1 = ab.dot(ap);
-  const double d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) {
-    return {1.0, 0.0, 0.0};
-  }
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp);
-  const double d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) {
-    return {0.0, 1.0, 0.0};
-  }
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-    const double v = d1 / (d1 - d3);
-    return {1.0 - v, v, 0.0};
-  }
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp);
-  const double d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) {
-    return {0.0, 0.0, 1.0};
-  }
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-    const double w = d2 / (d2 - d6);
-    return {1.0 - w, 0.0, w};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0.0, 1.0 - w, w};
-  }
-  const double denominator = 1.0 / (va + vb + vc);
-  const double v = vb * denominator;
-  const double w = vc * denominator;
-  return {1.0 - v - w, v, w};
-}
-
 void keep_if_nearer(const Model& model, const Vec3& p, const std::array<Index, 3>& nodes,
                     const std::array<double, 3>& weights, NearestPoint& best) {
   Vec3 point = Vec3::Zero();
@@ -82,7 +39,7 @@ void keep_if_nearer(const Model& model, const Vec3& p, const std::array<Index, 3
   }
   const double distance = (p - point).norm();
   if (distance < best.distance) {
-    best = {nodes, weights, distance};
+    best = {nodes, weights, point, distance};
   }
 }
 
@@ -105,11 +62,11 @@ NearestPoint nearest_point(const Model& model, Index target, const Vec3& p) {
     for (Index k = begin + 1; k + 1 < end; ++k) {
       const std::array<Index, 3> corners{model.face_nodes[begin], model.face_nodes[k],
                                          model.face_nodes[k + 1]};
-      keep_if_nearer(
-          model, p, corners,
-          nearest_on_triangle(p, model.node_initial_x[corners[0]], model.node_initial_x[corners[1]],
-                              model.node_initial_x[corners[2]]),
-          best);
+      keep_if_nearer(model, p, corners,
+                     closest_point_of_triangle(p, model.node_initial_x[corners[0]],
+                                               model.node_initial_x[corners[1]],
+                                               model.node_initial_x[corners[2]]),
+                     best);
     }
   }
   return best;
@@ -185,7 +142,9 @@ void add_ties(const SceneDescription& scene, const std::vector<TieRequest>& requ
       }
       ties.nodes.insert(ties.nodes.end(), {node, point.nodes[0], point.nodes[1], point.nodes[2]});
       ties.weights.insert(ties.weights.end(), point.weights.begin(), point.weights.end());
-      ties.rest_length.push_back(point.distance);
+      const Vec3 offset = model.node_initial_x[node] - point.position;
+      ties.offset.push_back(attachment.swings ? Vec3::Zero() : offset);
+      ties.rest_length.push_back(attachment.swings ? point.distance : 0.0);
       ties.stiffness.push_back(attachment.stiffness.value_or(0.0));
       ties.rigid.push_back(attachment.stiffness ? 0 : 1);
       ties.break_force.push_back(attachment.break_force);
@@ -193,6 +152,14 @@ void add_ties(const SceneDescription& scene, const std::vector<TieRequest>& requ
     }
   }
   stiffen_rigid_ties(model);
+}
+
+std::vector<std::uint8_t> tied_nodes(const Model& model) {
+  std::vector<std::uint8_t> tied(static_cast<std::size_t>(model.node_count()), 0);
+  for (Index t = 0; t < model.ties.count(); ++t) {
+    tied[static_cast<std::size_t>(model.ties.nodes[4 * static_cast<std::size_t>(t)])] = 1;
+  }
+  return tied;
 }
 
 }  // namespace dinam

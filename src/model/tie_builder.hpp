@@ -1,6 +1,7 @@
 #pragma once
 // Attachments (`attach`) made into ties (model.hpp's Ties): each selected node of one object tied
 // to the point of another object nearest it at the start, on a bar or a face.
+#include <cstdint>
 #include <vector>
 
 #include "core/types.hpp"
@@ -28,5 +29,8 @@ inline constexpr double kRigidTieFrequency = 0.5;
 // (masses scaled, every spring in place). Throws a UserError at the attachment for a target that
 // is no object, a tied node that is pinned, or a target with nothing to tie to.
 void add_ties(const SceneDescription& scene, const std::vector<TieRequest>& requests, Model& model);
+
+// 1 for each node a tie holds (`attach`), as a pin would: a piece of mesh so held is not free.
+std::vector<std::uint8_t> tied_nodes(const Model& model);
 
 }  // namespace dinam

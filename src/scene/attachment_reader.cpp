@@ -31,6 +31,7 @@ AttachmentDesc read_attachment(YamlMap map, const ObjectDesc& object) {
     attachment.stiffness = map.number("stiffness", 0.0);
     require_positive(*attachment.stiffness, map.loc("stiffness"), map.path("stiffness"), "N/m");
   }
+  attachment.swings = map.boolean("swing", false);
   if (map.has("break_force")) {
     attachment.break_force = map.number("break_force", 0.0);
     require_positive(attachment.break_force, map.loc("break_force"), map.path("break_force"), "N");
@@ -50,7 +51,7 @@ std::vector<AttachmentDesc> read_attachments(YamlMap& object_map, const ObjectDe
   if (!list.IsSequence()) {
     throw_user_error(object_map.loc("attach"),
                      "'{}' must be a list of {{nodes: ..., to: OBJECT, stiffness: rigid or N/m, "
-                     "break_force: N}}",
+                     "break_force: N, swing: true or false}}",
                      object_map.path("attach"));
   }
   for (std::size_t i = 0; i < list.size(); ++i) {

@@ -142,15 +142,17 @@ struct ObjectContactDesc {
 };
 
 // Nodes of one object tied to another (`attach`): each to its nearest point, at the start, on the
-// target's bars and faces, which then moves with the target; held there at the distance it starts
-// at by a spring of `stiffness`, or rigidly (empty: as stiff as the step allows, or a constraint
-// under `integrator: xpbd`); broken for good once it pulls harder than `break_force`.
+// target's bars and faces, which then moves with the target; held at its start offset from it
+// (or, with `swings`, at its start distance, free to swing around it) by a spring of `stiffness`,
+// or rigidly (empty: as stiff as the step allows, or a constraint under `integrator: xpbd`);
+// broken for good once it pulls harder than `break_force`.
 struct AttachmentDesc {
   NodeSelection nodes;  // of the object that holds the attachment
   std::string target;   // another object's name
   FileLoc target_loc;
   std::optional<double> stiffness;  // N/m; empty: rigid
   double break_force = kNoYield;    // N
+  bool swings = false;              // holds the distance alone (a loop on a pole, a ring on a hook)
   FileLoc loc;
 };
 

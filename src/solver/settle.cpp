@@ -8,12 +8,14 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/contact/ground_contact.hpp"
 #include "dynamics/relaxation.hpp"
 #include "dynamics/spring_kinds.hpp"
 #include "dynamics/state_arrays.hpp"
 #include "dynamics/tearing.hpp"
 #include "model/model.hpp"
+#include "model/tie_builder.hpp"
 #include "solver/equilibrium.hpp"
 
 namespace dinam {
@@ -31,16 +33,10 @@ constexpr const char* kSlopeReason =
 
 // Why the equilibrium cannot be found statically for this model at all (empty: it can).
 std::string why_not_static(const Model& model) {
-  if (model.contact.enabled) {
-    return "contact between objects: where a body rests on another depends on how it slid there";
-  }
   // Under gravity, an object with no pinned node, no tie to another and no ground below it has no
   // equilibrium.
   if (model.gravity.norm() > 0.0 && !model.ground.enabled) {
-    std::vector<char> tied(static_cast<std::size_t>(model.node_count()), 0);
-    for (Index t = 0; t < model.ties.count(); ++t) {
-      tied[static_cast<std::size_t>(model.ties.nodes[4 * static_cast<std::size_t>(t)])] = 1;
-    }
+    const std::vector<std::uint8_t> tied = tied_nodes(model);
     for (const ModelObject& object : model.objects) {
       bool held = false;
       for (Index i = object.first_node; i < object.first_node + object.node_count && !held; ++i) {
@@ -82,6 +78,17 @@ bool on_sloping_ground(const Model& model, const State& at) {
 std::string why_path_matters(const Model& model, const ForceSwitches& quiet, const State& settled) {
   if (on_sloping_ground(model, settled)) {
     return kSlopeReason;
+  }
+  // Newton's potential holds no contact between objects: its equilibrium stands where nothing
+  // touches (a flag hanging clear of its pole), not where a body rests on another, whose place
+  // depends on how it slid there.
+  if (model.contact.enabled) {
+    State probe = settled;
+    find_touching_pairs(model, probe);
+    if (!probe.object_contact.touching.empty()) {
+      return "contact between objects: where a body rests on another depends on how it slid "
+             "there";
+    }
   }
   bool can_yield = false;
   for (const SpringKind* kind : kSpringKinds) {

@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "app/shipped_scenes.hpp"
-#include "dynamics/contact/contact_geometry.hpp"
+#include "core/closest_points.hpp"
 #include "dynamics/contact/contact_grid.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"

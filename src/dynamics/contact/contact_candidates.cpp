@@ -130,8 +130,8 @@ double next_skin(const Model& model, const State& state) {
 // Every pair within reach + 2 skin at the current positions.
 void find_candidates(const Model& model, State& state) {
   const ObjectContact& contact = model.contact;
-  // Objects tied to each other (`attach`) are joined where they are tied: their pairs there are
-  // left out as a mesh's neighbours are.
+  // Objects tied to each other (`attach`): their pairs that touch at the start where they are tied
+  // are left out, as a mesh's neighbours are (model/tied_contact.hpp).
   const bool tied = model.ties.count() > 0;
   ObjectContactWorkspace& work = state.object_contact;
   const std::vector<Vec3>& x = state.x;
@@ -168,8 +168,9 @@ void find_candidates(const Model& model, State& state) {
                                         bars_look_for(model, object_a, object_b);
       if (!looked_for || a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1 ||
           (!a_free && model.pinned(b0) && model.pinned(b1)) ||
-          ((object_a == object_b || tied) && (contact.joined(a0, b0) || contact.joined(a0, b1) ||
-                                              contact.joined(a1, b0) || contact.joined(a1, b1)))) {
+          (object_a == object_b && (contact.joined(a0, b0) || contact.joined(a0, b1) ||
+                                    contact.joined(a1, b0) || contact.joined(a1, b1))) ||
+          (tied && object_a != object_b && contact.tied_at_rest_bars(a, b))) {
         return;
       }
       const ContactCandidate pair =
@@ -187,8 +188,9 @@ void find_candidates(const Model& model, State& state) {
       if (p == c[0] || p == c[1] || p == c[2] ||
           !objects_may_touch(contact, object_p, model.node_object[c[0]]) ||
           (model.pinned(p) && model.pinned(c[0]) && model.pinned(c[1]) && model.pinned(c[2])) ||
-          ((object_p == model.node_object[c[0]] || tied) &&
-           (contact.joined(p, c[0]) || contact.joined(p, c[1]) || contact.joined(p, c[2])))) {
+          (object_p == model.node_object[c[0]] &&
+           (contact.joined(p, c[0]) || contact.joined(p, c[1]) || contact.joined(p, c[2]))) ||
+          (tied && object_p != model.node_object[c[0]] && contact.tied_at_rest_point(p, t))) {
         return;
       }
       add_if_near(contact, skin, x, {pair_key(kPointTriangleContact, p, t), {p, c[0], c[1], c[2]}},

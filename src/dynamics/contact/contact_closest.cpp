@@ -1,6 +1,6 @@
 #include "dynamics/contact/contact_closest.hpp"
 
-#include "dynamics/contact/contact_geometry.hpp"
+#include "core/closest_points.hpp"
 
 namespace dinam {
 namespace {

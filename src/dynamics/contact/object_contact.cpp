@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/closest_points.hpp"
 #include "dynamics/contact/contact_candidates.hpp"
-#include "dynamics/contact/contact_geometry.hpp"
 #include "dynamics/contact/contact_grid.hpp"
 #include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/force_kinds.hpp"

@@ -5,9 +5,9 @@
 #include <limits>
 #include <numbers>
 
+#include "core/closest_points.hpp"
 #include "dynamics/contact/capped_stick_spring.hpp"
 #include "dynamics/contact/contact_closest.hpp"
-#include "dynamics/contact/contact_geometry.hpp"
 #include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/contact/ground_restitution.hpp"
 #include "dynamics/contact/object_contact.hpp"
