@@ -160,6 +160,55 @@ objects:
   }
 }
 
+// A short bob (a 1 cm bar, both nodes tied) 0.5 m below a pinned beam's node, 5° from the
+// vertical: tied with `swing: true` each node keeps its distance from its point and swings as the
+// simple pendulum, crossing under the pivot at T/4; tied as by default, each keeps its offset, and
+// the bob stays where it was (within the ties' give).
+TEST(Ties, ASwingingTieKeepsItsDistanceAndSwingsWhereTheDefaultHoldsItsPlace) {
+  const double length = 0.5;
+  const double angle = 5.0 * std::numbers::pi / 180.0;
+  const double x = length * std::sin(angle);
+  const double z = 2.0 - length * std::cos(angle);
+  for (const bool swings : {true, false}) {
+    SCOPED_TRACE(swings ? "swing" : "offset");
+    const Model model = tied_scene("central_difference", fmt::format(R"(duration: 2
+fps: 50
+objects:
+  - name: beam
+    mesh: {{polyline: {{points: [[0, -0.2, 2], [0, 0, 2], [0, 0.2, 2]]}}}}
+    role: collider
+  - name: bob
+    mesh: {{polyline: {{points: [[{}, -0.005, {}], [{}, 0.005, {}]]}}}}
+    material: {{density: 1000, youngs_modulus: 1.0e8, radius: 0.002}}
+    torsion: false
+    attach:
+      - {{nodes: {{all: true}}, to: beam, swing: {}}}
+)",
+                                                                     x, z, x, z, swings));
+    TiedRun run(model, 50.0, Settling::kSkip);
+    const double quarter = 0.5 * std::numbers::pi * std::sqrt(length / kGravity);
+    double farthest = 0.0;
+    double crossed = -1.0;
+    double previous = run.state.x[3].x();
+    while (run.state.time < 0.6) {
+      const double t0 = run.state.time;
+      run.stepper->advance(run.state, 1);
+      const double now = run.state.x[3].x();
+      if (crossed < 0.0 && previous > 0.0 && now <= 0.0) {
+        crossed = t0 + (run.state.time - t0) * previous / (previous - now);
+      }
+      previous = now;
+      farthest = std::max(farthest, (run.state.x[3] - Vec3(x, -0.005, z)).norm());
+    }
+    if (swings) {
+      EXPECT_NEAR(crossed, quarter, 0.01 * quarter);
+    } else {
+      EXPECT_LT(crossed, 0.0) << "it swung";
+      EXPECT_LT(farthest, 1e-3);
+    }
+  }
+}
+
 // A bar hanging from a tie at its upper node, settled at rest: the tie holds the bar's weight,
 // M g. With a break_force 10 % above that it holds; 10 % below, it breaks at the first step and
 // the bar falls freely, ½ g t² in 0.3 s (0.44 m).
