@@ -14,7 +14,7 @@ namespace {
 
 // Keys read only for drawing. Keep this list short and sure: each entry must be read by no stage
 // before render/ (scene_reader.cpp reads them into fields that model/ and dynamics/ never see).
-constexpr std::array<std::string_view, 20> kLookOnlyKeys = {
+constexpr std::array<std::string_view, 22> kLookOnlyKeys = {
     "name",            // the movie's file name
     "camera",          // the view
     "light",           // the sun's direction and size
@@ -33,6 +33,8 @@ constexpr std::array<std::string_view, 20> kLookOnlyKeys = {
     "objects[].style",
     "objects[].joints",
     "objects[].subdivide",
+    "objects[].shading",
+    "objects[].sharp_angle",
     "objects[].texture",
     "objects[].finish",
 };

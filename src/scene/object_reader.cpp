@@ -68,6 +68,39 @@ MaterialDesc collider_material(double shell) {
   return material;
 }
 
+// `shading` and `sharp_angle`: flat and auto surfaces are drawn as modelled, so a `subdivide`
+// beside them is refused.
+void read_shading(YamlMap& map, ObjectDesc& object) {
+  const std::string shading = map.string("shading", "smooth");
+  if (shading == "smooth") {
+    object.shading = Shading::kSmooth;
+  } else if (shading == "flat") {
+    object.shading = Shading::kFlat;
+  } else if (shading == "auto") {
+    object.shading = Shading::kAuto;
+  } else {
+    throw_user_error(map.loc("shading"),
+                     "'{}' must be smooth, flat or auto (smooth but for edges sharper than "
+                     "'sharp_angle'); got '{}'",
+                     map.path("shading"), shading);
+  }
+  if (map.has("sharp_angle")) {
+    object.sharp_angle = map.number("sharp_angle", kDefaultSharpAngle);
+    if (!(object.sharp_angle > 0.0 && object.sharp_angle < 180.0) ||
+        object.shading != Shading::kAuto) {
+      throw_user_error(map.loc("sharp_angle"),
+                       "'{}' must be between 0 and 180 degrees, beside 'shading: auto'",
+                       map.path("sharp_angle"));
+    }
+  }
+  if (object.shading != Shading::kSmooth && object.subdivide.value_or(0) > 0) {
+    throw_user_error(map.loc("subdivide"),
+                     "'{}': object '{}' is shaded {}, drawn as modelled; leave 'subdivide' out, "
+                     "or give it 'shading: smooth'",
+                     map.path("subdivide"), object.name, shading);
+  }
+}
+
 }  // namespace
 
 // A colour as artists pick it: [r, g, b] in sRGB (Blender's colour picker, Houdini, Photoshop,
@@ -342,6 +375,7 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
     }
     object.subdivide = levels;
   }
+  read_shading(map, object);
   if (!map.has("texture") && !object.mesh.texture.empty()) {
     object.texture = object.mesh.texture;  // the mesh file's own material
     object.texture_loc = object.mesh_loc;

@@ -164,6 +164,13 @@ enum class FaceRole { kSheet, kNet };
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
 enum class DrawStyle { kSurface, kWire, kBoth };
 
+// How a drawn surface takes the light across its edges (`shading`): smooth everywhere (normals
+// shared by the faces at each node, and the surface subdivided), flat (each face its own normal,
+// drawn as modelled), or smooth but for the edges whose faces meet at more than `sharp_angle`
+// (a cylinder's rim: Blender's Auto Smooth), drawn as modelled.
+enum class Shading { kSmooth, kFlat, kAuto };
+inline constexpr double kDefaultSharpAngle = 30.0;  // degrees, Blender's Auto Smooth default
+
 // The default `mesh: {weld}`: bars shorter than a tenth of the object's median bar are collapsed.
 // Such a bar, a sliver left by a modelling tool, would alone set a time step hundreds of times
 // shorter than the rest of the mesh needs: the bending and torsion springs at its ends vibrate as
@@ -208,9 +215,11 @@ struct ObjectDesc {
   DrawStyle style = DrawStyle::kWire;   // default: surface when the mesh has faces
   bool joints = true;                   // spheres at the nodes of wires, so bars meet smoothly
   std::optional<int> subdivide;         // levels its surface is smoothed by; default: by its size
-  std::filesystem::path texture;        // a PNG laid on the surface by the mesh uv; optional
-  FileLoc texture_loc;                  // the 'texture' key, or the mesh's for its own texture
-  Finish finish;                        // how its surface takes the light (core/look.hpp)
+  Shading shading = Shading::kSmooth;
+  double sharp_angle = kDefaultSharpAngle;  // degrees, for Shading::kAuto
+  std::filesystem::path texture;            // a PNG laid on the surface by the mesh uv; optional
+  FileLoc texture_loc;                      // the 'texture' key, or the mesh's for its own texture
+  Finish finish;                            // how its surface takes the light (core/look.hpp)
 };
 
 // A camera key of a path: where the eye is at a time, what it looks at, its field of view.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <numbers>
 #include <utility>
 
 #include "core/error.hpp"
@@ -10,6 +11,7 @@
 #include "model/model.hpp"
 #include "render/osmesa_renderer.hpp"
 #include "scene/scene_description.hpp"
+#include "visual/sharp_edges.hpp"
 #include "visual/surface_subdivision.hpp"
 
 namespace dinam {
@@ -57,7 +59,8 @@ constexpr std::uint64_t kWeightsPerDerivedPoint = 30;
 }  // namespace
 
 int subdivision_level(const ObjectDesc& object, Index triangles, bool can_tear) {
-  if (object.style == DrawStyle::kWire || triangles == 0 || can_tear) {
+  if (object.style == DrawStyle::kWire || triangles == 0 || can_tear ||
+      object.shading != Shading::kSmooth) {
     return 0;
   }
   if (object.subdivide) {
@@ -187,6 +190,7 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
     batch_of_object[o] = static_cast<int>(list.surfaces.size());
     list.surfaces.push_back(std::move(batch));
   }
+  std::vector<std::vector<Index>> triangle_face(list.surfaces.size());  // each batch's
   for (Index f = 0; f < model.face_count(); ++f) {
     const Index begin = model.face_offsets[f];
     const Index end = model.face_offsets[f + 1];
@@ -198,6 +202,7 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
     for (Index k = begin + 1; k + 1 < end; ++k) {
       triangles.insert(triangles.end(),
                        {model.face_nodes[begin], model.face_nodes[k], model.face_nodes[k + 1]});
+      triangle_face[static_cast<std::size_t>(batch)].push_back(f);
     }
   }
 
@@ -240,6 +245,32 @@ DrawList make_draw_list(const SceneDescription& scene, const Model& model, const
       list.point_finish.push_back(scene.objects[o].finish);
       if (uv) {
         list.point_uv.push_back(texture_point);
+      }
+    }
+  }
+
+  // Surfaces shaded flat or with sharp edges: drawn as modelled, their points split where faces
+  // should not blend (visual/sharp_edges.hpp).
+  for (std::size_t o = 0; o < model.objects.size(); ++o) {
+    const ObjectDesc& desc = scene.objects[o];
+    if (batch_of_object[o] < 0 || desc.shading == Shading::kSmooth) {
+      continue;
+    }
+    const auto b = static_cast<std::size_t>(batch_of_object[o]);
+    const double sharp =
+        desc.shading == Shading::kFlat ? -1.0 : desc.sharp_angle * std::numbers::pi / 180.0;
+    const Index first = model.node_count() + list.derived.size();
+    const std::vector<Index> sources = split_at_sharp_edges(
+        list.surfaces[b].triangles, triangle_face[b], model.node_initial_x, sharp, first);
+    for (const Index source : sources) {
+      list.derived.sources.push_back(source);
+      list.derived.weights.push_back(1.0f);
+      list.derived.offsets.push_back(static_cast<Index>(list.derived.sources.size()));
+      list.point_radius.push_back(0.0f);
+      list.point_color.push_back(list.point_color[source]);
+      list.point_finish.push_back(list.point_finish[source]);
+      if (!list.point_uv.empty()) {
+        list.point_uv.push_back(list.point_uv[source]);
       }
     }
   }

@@ -640,3 +640,36 @@ TEST(SceneReader, UnitsAndMisplacedKeysAreAnsweredWithTheFix) {
 
 }  // namespace
 }  // namespace dinam
+
+namespace dinam {
+namespace {
+
+// `shading`: smooth by default; flat and auto (with its sharp angle, 30° unless given) draw the
+// surface as modelled, so a `subdivide` beside them, or a sharp angle beside another shading, is
+// refused at its line.
+TEST(SceneReader, ShadingIsReadAndWhatContradictsItRefused) {
+  auto object = [](const std::string& keys) {
+    return test::scene_from_yaml(R"(version: 1
+duration: 1
+objects:
+  - name: box
+    mesh: {file: cube.obj}
+    role: collider
+)" + keys)
+        .objects[0];
+  };
+  EXPECT_EQ(object("").shading, Shading::kSmooth);
+  EXPECT_EQ(object("    shading: flat\n").shading, Shading::kFlat);
+  const ObjectDesc sharp = object("    shading: auto\n    sharp_angle: 40\n");
+  EXPECT_EQ(sharp.shading, Shading::kAuto);
+  EXPECT_DOUBLE_EQ(sharp.sharp_angle, 40.0);
+  EXPECT_DOUBLE_EQ(object("    shading: auto\n").sharp_angle, kDefaultSharpAngle);
+  test::expect_user_error([&] { object("    shading: flat\n    subdivide: 2\n"); }, 8,
+                          {"is shaded flat, drawn as modelled", "leave 'subdivide' out"});
+  test::expect_user_error([&] { object("    sharp_angle: 40\n"); }, 7, {"beside 'shading: auto'"});
+  test::expect_user_error([&] { object("    shading: faceted\n"); }, 7,
+                          {"must be smooth, flat or auto", "got 'faceted'"});
+}
+
+}  // namespace
+}  // namespace dinam
