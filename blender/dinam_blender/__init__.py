@@ -1,12 +1,15 @@
 """dinam in Blender: simulate the selected meshes as flexible structures and play the motion.
 
 The panel (3D View > Sidebar > dinam) takes the selected mesh objects, a material (a preset or its
-values), pins from a vertex group (each object may have its own material and pins, in the panel's
-"This object" box), gravity and wind; Estimate asks `dinam info` how long and how much memory a run
-would take; Simulate writes each object as OBJ and a scene file, says dinam's estimate, runs
-`dinam simulate` on them as a separate program (a progress bar and a Cancel button while it runs;
-Esc cancels too), and gives each object a Mesh Cache modifier on its point cache. The
-frames are the scene's: its frame range at its frame rate.
+values), pins from a vertex group (each object may have its own material and pins, and a vertex
+group tied to another object, in the panel's "This object" box), gravity and wind; Estimate asks
+`dinam info` how long and how much memory a run would take; Simulate writes each object as OBJ
+and a scene file named after the .blend (with each object's colour or texture and shading),
+says dinam's estimate, runs `dinam simulate` on them as a separate program (a progress bar and a
+Cancel button while it runs; Esc cancels too), and gives each object a Mesh Cache modifier on its
+point cache. The frames are the scene's: its frame range at its frame rate. Each .blend file's
+run has a folder of its own within the panel's folder (named after the file), and a folder that
+holds another file's run is refused, so that no file's cache plays another's motion.
 """
 import os
 
@@ -80,6 +83,63 @@ def pin_group_of(obj, settings):
     return obj.dinam_pin_group or settings.pin_group
 
 
+def blend_stem():
+    """The .blend file's name without its extension; "untitled" before it is saved."""
+    return os.path.splitext(os.path.basename(bpy.data.filepath))[0] if bpy.data.filepath \
+        else "untitled"
+
+
+# The file in a run's folder that names the .blend whose run it holds.
+OWNER_FILE = "blend_file.txt"
+
+
+def run_folder(settings):
+    """Where this .blend's run goes: the panel's folder, and within it a folder named after the
+    saved .blend; refused (ExportError) where it holds another file's run."""
+    folder = bpy.path.abspath(settings.folder)
+    if bpy.data.filepath:
+        folder = os.path.join(folder, scene_export.object_file_stem(blend_stem()))
+    owner = os.path.abspath(bpy.data.filepath) if bpy.data.filepath else "(unsaved)"
+    marker = os.path.join(folder, OWNER_FILE)
+    if os.path.exists(marker):
+        with open(marker) as f:
+            other = f.read().strip()
+        if other != owner:
+            raise scene_export.ExportError(
+                f"the folder '{folder}' holds the run of {other}, whose cache would then play "
+                f"this file's motion: choose another folder in the panel (for each .blend, "
+                f"dinam's files go into a folder named after it)")
+    os.makedirs(folder, exist_ok=True)
+    with open(marker, "w") as f:
+        f.write(owner + "\n")
+    return folder
+
+
+def attach_of(obj, exported):
+    """The object's tie to another (its Object properties' vertex group and target), as
+    (vertex indices, target's name), or None; ExportError where the target is not simulated."""
+    group, target = obj.dinam_attach_group, obj.dinam_attach_to
+    if not group and target is None:
+        return None
+    if not group or target is None:
+        raise scene_export.ExportError(
+            f"'{obj.name}' has a dinam tie without its {'target' if group else 'vertex group'}: "
+            "give both in its Object properties (Tie group, Tie to), or clear both")
+    if obj.vertex_groups.get(group) is None:
+        raise scene_export.ExportError(
+            f"'{obj.name}' has no vertex group '{group}' to tie (its groups: "
+            f"{', '.join(g.name for g in obj.vertex_groups) or 'none'})")
+    if target == obj or target not in exported:
+        raise scene_export.ExportError(
+            f"'{obj.name}' is tied to '{target.name}', which is not simulated: select it too, or "
+            "mark it as a dinam collider")
+    indices = scene_export.pinned_indices(obj, group)
+    if not indices:
+        raise scene_export.ExportError(
+            f"no vertex of '{obj.name}''s group '{group}' weighs above 0.5: nothing to tie")
+    return indices, target.name
+
+
 class Simulation:
     """One run: the files written, dinam running (its estimate first), and the objects to attach
     its motion to; with `simulate` False, the estimate alone."""
@@ -97,7 +157,7 @@ class Simulation:
             raise scene_export.ExportError(
                 f"the folder '{settings.folder}' is relative to the .blend file, which is not saved "
                 "yet: save the file first, or choose a folder for dinam's files in the panel")
-        folder = bpy.path.abspath(settings.folder)
+        folder = run_folder(settings)
         inputs = os.path.join(folder, "input")
         os.makedirs(inputs, exist_ok=True)
         described = []
@@ -124,15 +184,19 @@ class Simulation:
             stem = scene_export.object_file_stem(obj.name, stems)
             path = os.path.join(inputs, stem + ".obj")
             track = scene_export.collider_track(context, obj)
-            scene_export.write_obj(obj, path, track[0] if track else None)
+            look = scene_export.object_look(obj, inputs, stem)
+            scene_export.write_obj(obj, path, track[0] if track else None, "texture" in look)
             track_path = None
             if track:
                 track_path = os.path.join(inputs, stem + ".pc2")
                 scene_export.write_pc2(track_path, track)
-            colliders.append((obj.name, path, track_path))
+            colliders.append({"name": obj.name, "obj": path, "track": track_path, "look": look})
+        exported = set(self.objects) | set(self.colliders)
         for obj in self.objects:
-            path = os.path.join(inputs, scene_export.object_file_stem(obj.name, stems) + ".obj")
-            scene_export.write_obj(obj, path)
+            stem = scene_export.object_file_stem(obj.name, stems)
+            path = os.path.join(inputs, stem + ".obj")
+            look = scene_export.object_look(obj, inputs, stem)
+            scene_export.write_obj(obj, path, uvs="texture" in look)
             group = pin_group_of(obj, settings)
             pinned = scene_export.pinned_indices(obj, group)
             if not pinned:
@@ -142,13 +206,16 @@ class Simulation:
                        if group else " (no Pins group chosen)")
                     + ": it falls freely")
             preset = obj.dinam_preset if obj.dinam_preset in scene_export.PRESETS else None
-            described.append((obj.name, path, pinned, preset))
+            tie = attach_of(obj, exported)
+            described.append({"name": obj.name, "obj": path, "pins": pinned, "preset": preset,
+                              "look": look, "attach": [tie] if tie else []})
         scene = context.scene
         fps = scene.render.fps / scene.render.fps_base
         frames = scene.frame_end - scene.frame_start + 1
         scene_file = os.path.join(inputs, "scene.yaml")
         with open(scene_file, "w") as f:
-            f.write(scene_export.scene_text(settings, described, frames, fps, colliders))
+            f.write(scene_export.scene_text(settings, described, frames, fps, colliders,
+                                            blend_stem()))
         self.cache = os.path.join(folder, "cache")
         self.local = os.path.join(folder, "local")
         try:
@@ -360,6 +427,12 @@ class DINAM_PT_panel(bpy.types.Panel):
             row = box.row()
             row.enabled = not obj.dinam_collider
             row.prop_search(obj, "dinam_pin_group", obj, "vertex_groups")
+            row = box.row()
+            row.enabled = not obj.dinam_collider
+            row.prop_search(obj, "dinam_attach_group", obj, "vertex_groups")
+            row = box.row()
+            row.enabled = not obj.dinam_collider
+            row.prop(obj, "dinam_attach_to")
         if settings.last_report and not settings.running:
             box = layout.box()
             box.label(text="Last run:")
@@ -396,9 +469,19 @@ def register():
     bpy.types.Object.dinam_pin_group = bpy.props.StringProperty(
         name="dinam pins",
         description="This object's vertex group whose vertices never move; empty: the panel's Pins")
+    # Tied to another object (a cape's collar to a moving shoulder, a rope to a hook): the group's
+    # vertices move with the target's nearest point.
+    bpy.types.Object.dinam_attach_group = bpy.props.StringProperty(
+        name="Tie group",
+        description="This object's vertex group tied to the target object (weight above 0.5)")
+    bpy.types.Object.dinam_attach_to = bpy.props.PointerProperty(
+        name="Tie to", type=bpy.types.Object,
+        description="The object the tie group moves with: simulated too, or a dinam collider")
 
 
 def unregister():
+    del bpy.types.Object.dinam_attach_to
+    del bpy.types.Object.dinam_attach_group
     del bpy.types.Object.dinam_pin_group
     del bpy.types.Object.dinam_preset
     del bpy.types.Object.dinam_collider

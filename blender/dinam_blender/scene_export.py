@@ -2,14 +2,18 @@
 
 The OBJ holds the object's own vertices in its own order (one `v` line per vertex, in world
 coordinates, so that gravity points down whatever the object's transform), its faces and its loose
-edges as line elements. dinam numbers the nodes of an OBJ file in the order of its `v` lines, so
-point k of the cache dinam writes is the object's vertex k.
+edges as line elements, and, where its material has an image texture, its UVs. dinam numbers the
+nodes of an OBJ file in the order of its `v` lines, so point k of the cache dinam writes is the
+object's vertex k. The scene carries each object's look as Blender shows it: its material's base
+colour (or image texture) and its shading (flat, smooth, or smooth with sharp edges).
 """
 import hashlib
 import json
+import math
 import os
 import struct
 
+import bpy
 import mathutils
 
 # dinam's named materials (docs/materials.md; `material: {preset: NAME}` in a scene): the same
@@ -78,9 +82,10 @@ def check_mesh(obj):
             "not match the object vertex for vertex: delete them (Mesh > Clean Up > Delete Loose)")
 
 
-def write_obj(obj, path, positions=None):
+def write_obj(obj, path, positions=None, uvs=False):
     """Writes the object's mesh (without its modifiers) in world coordinates, or with its vertices
-    at `positions` (world coordinates, one per vertex in order) where given."""
+    at `positions` (world coordinates, one per vertex in order) where given; with `uvs`, its active
+    UV map too, a `vt` per face corner."""
     mesh = obj.data
     world = obj.matrix_world
     lines = [f"# {obj.name}: written by the dinam Blender add-on, one v per vertex in order",
@@ -88,13 +93,83 @@ def write_obj(obj, path, positions=None):
     for k, vertex in enumerate(mesh.vertices):
         p = world @ vertex.co if positions is None else mathutils.Vector(positions[k])
         lines.append(f"v {p.x!r} {p.y!r} {p.z!r}")
+    uv_layer = mesh.uv_layers.active if uvs else None
+    if uv_layer is not None:
+        lines += [f"vt {loop.uv[0]!r} {loop.uv[1]!r}" for loop in uv_layer.data]
     for polygon in mesh.polygons:
-        lines.append("f " + " ".join(str(v + 1) for v in polygon.vertices))
+        if uv_layer is not None:
+            lines.append("f " + " ".join(f"{mesh.loops[k].vertex_index + 1}/{k + 1}"
+                                         for k in polygon.loop_indices))
+        else:
+            lines.append("f " + " ".join(str(v + 1) for v in polygon.vertices))
     for edge in mesh.edges:
         if edge.is_loose:
             lines.append(f"l {edge.vertices[0] + 1} {edge.vertices[1] + 1}")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
+
+
+def base_colour_source(material):
+    """What gives a material its base colour: the Principled BSDF's (or Diffuse BSDF's) colour
+    input where the material uses nodes, else None."""
+    if material is None or not material.use_nodes or material.node_tree is None:
+        return None
+    for node in material.node_tree.nodes:
+        if node.type in ("BSDF_PRINCIPLED", "BSDF_DIFFUSE"):
+            return node.inputs.get("Base Color") or node.inputs.get("Color")
+    return None
+
+
+def object_look(obj, inputs, stem):
+    """The object's look as Blender shows it, for its scene entry: `color` (Blender's colours are
+    linear already), `texture` (its material's image texture, saved as a PNG into `inputs` under
+    `stem`, when it has a UV map) and `shading` (flat where no face is smooth; auto, with the
+    mesh's angle, where Auto Smooth is on; else smooth)."""
+    look = {}
+    material = obj.active_material
+    source = base_colour_source(material)
+    if source is not None and source.is_linked:
+        image_node = source.links[0].from_node
+        image = getattr(image_node, "image", None)
+        if image is not None and obj.data.uv_layers.active is not None:
+            path = os.path.join(inputs, stem + ".png")
+            copy = image.copy()
+            try:
+                copy.filepath_raw = path
+                copy.file_format = "PNG"
+                copy.save()
+            finally:
+                bpy.data.images.remove(copy)
+            look["texture"] = os.path.basename(path)
+    elif source is not None:
+        look["color"] = tuple(source.default_value)[:3]
+    elif material is not None:
+        look["color"] = tuple(material.diffuse_color)[:3]
+    mesh = obj.data
+    smooth = any(polygon.use_smooth for polygon in mesh.polygons)
+    if mesh.polygons and not smooth:
+        look["shading"] = "flat"
+    elif smooth and getattr(mesh, "use_auto_smooth", False):
+        look["shading"] = "auto"
+        look["sharp_angle"] = round(math.degrees(mesh.auto_smooth_angle), 3)  # a float32
+    return look
+
+
+def look_lines(look, collider=False):
+    """The scene lines of `look` (object_look); a collider smooth as modelled, not subdivided."""
+    lines = []
+    if "color" in look:
+        linear = ", ".join(repr(min(max(float(c), 0.0), 1.0)) for c in look["color"])
+        lines.append(f"    color: {{linear: [{linear}]}}")
+    if "texture" in look:
+        lines.append(f"    texture: {json.dumps(look['texture'])}")
+    if "shading" in look:
+        lines.append(f"    shading: {look['shading']}")
+    if "sharp_angle" in look:
+        lines.append(f"    sharp_angle: {look['sharp_angle']!r}")
+    elif collider and "shading" not in look:
+        lines.append("    subdivide: 0")
+    return lines
 
 
 def collider_track(context, obj):
@@ -161,14 +236,16 @@ def ground_height(settings):
     return max((floor.matrix_world @ mathutils.Vector(corner)).z for corner in floor.bound_box)
 
 
-def scene_text(settings, objects, frame_count, fps, colliders=()):
-    """The scene file for `objects` (each (name, obj file, pinned indices, its own preset or
-    None for the panel's)) and `colliders` (each (name, obj file, its track's PC2 file or None):
-    obstacles that push and that the cloth does not move); JSON's quoted strings are YAML's too."""
+def scene_text(settings, objects, frame_count, fps, colliders=(), name="untitled"):
+    """The scene file `name` (the .blend's) for `objects` (each a dict: name, obj (its file), pins
+    (vertex indices), preset (its own, or None for the panel's), look (object_look), attach (a
+    list of (vertex indices, target object's name))) and `colliders` (each a dict: name, obj,
+    track (its PC2 file or None), look: obstacles that push and that the cloth does not move);
+    JSON's quoted strings are YAML's too."""
     lines = [
         "# Written by the dinam Blender add-on.",
         "version: 1",
-        "name: blender",
+        f"name: {json.dumps(name)}",
         f"duration: {frame_count / fps!r}",
         f"fps: {fps!r}",
         "timestep: auto",
@@ -190,25 +267,31 @@ def scene_text(settings, objects, frame_count, fps, colliders=()):
     if colliders or settings.self_contact:
         lines.append(f"contact: {{objects: true, self: {'true' if settings.self_contact else 'false'}}}")
     lines.append("objects:")
-    for name, obj_file, pins, preset in objects:
+    for entry in objects:
         lines += [
-            f"  - name: {json.dumps(name)}",
-            f"    mesh: {{file: {json.dumps(os.path.basename(obj_file))}, up_axis: z}}",
-            f"    material: {material_text(settings, preset)}",
+            f"  - name: {json.dumps(entry['name'])}",
+            f"    mesh: {{file: {json.dumps(os.path.basename(entry['obj']))}, up_axis: z}}",
+            f"    material: {material_text(settings, entry['preset'])}",
         ]
         if settings.damping_ratio > 0:
             lines.append(f"    damping: {{axial_ratio: {settings.damping_ratio!r}}}")
-        if pins:
-            lines.append(f"    pinned: {{indices: [{', '.join(str(i) for i in pins)}]}}")
-    for name, obj_file, track_file in colliders:
+        if entry["pins"]:
+            lines.append(f"    pinned: {{indices: [{', '.join(str(i) for i in entry['pins'])}]}}")
+        if entry.get("attach"):
+            lines.append("    attach:")
+            for indices, target in entry["attach"]:
+                lines.append(f"      - {{nodes: {{indices: [{', '.join(str(i) for i in indices)}]}}, "
+                             f"to: {json.dumps(target)}}}")
+        lines += look_lines(entry.get("look", {}))
+    for entry in colliders:
         lines += [
-            f"  - name: {json.dumps(name)}",
-            f"    mesh: {{file: {json.dumps(os.path.basename(obj_file))}, up_axis: z}}",
-            f"    material: {material_text(settings)}",
-            "    pinned: {all: true}",
+            f"  - name: {json.dumps(entry['name'])}",
+            f"    mesh: {{file: {json.dumps(os.path.basename(entry['obj']))}, up_axis: z}}",
+            "    role: collider",
             f"    contact: {{radius: {settings.collider_radius!r}}}",
         ]
-        if track_file:
+        if entry["track"]:
             lines.append(
-                f"    pin_motion: {{point_cache: {json.dumps(os.path.basename(track_file))}}}")
+                f"    pin_motion: {{point_cache: {json.dumps(os.path.basename(entry['track']))}}}")
+        lines += look_lines(entry.get("look", {}), collider=True)
     return "\n".join(lines) + "\n"

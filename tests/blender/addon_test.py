@@ -25,7 +25,9 @@
 # Blender does not run; it calls what steps 3 and 6 check.
 # Prints "addon: PASS"; raises otherwise.
 import json
+import math
 import os
+import subprocess
 import sys
 import time
 
@@ -327,4 +329,133 @@ try:
 except RuntimeError as e:
     assert "youngs_modulus" in str(e), e
     print("addon: Estimate says what dinam refuses: " + str(e).strip().splitlines()[-1][:120])
+settings.preset, settings.youngs_modulus = "cotton", 2.0e7
+cape.dinam_preset = "denim"
+
+# The look travels: the banner's red material (Principled base colour, linear as Blender keeps
+# it), the cape's image texture (its UVs with it), and a collider as modelled (a cylinder, flat
+# shaded: no material, nothing subdivided). The scene is named after the .blend, whose run has a
+# folder of its own within //dinam.
+red = bpy.data.materials.new("Red")
+red.use_nodes = True
+red.node_tree.nodes["Principled BSDF"].inputs["Base Color"].default_value = (0.8, 0.1, 0.05, 1.0)
+banner.data.materials.append(red)
+checker = bpy.data.images.new("Checker", 4, 4)
+checker.pixels = [c for k in range(16) for c in ((1.0, 1.0, 1.0, 1.0) if (k + k // 4) % 2
+                                                  else (0.1, 0.2, 0.6, 1.0))]
+printed = bpy.data.materials.new("Printed")
+printed.use_nodes = True
+image_node = printed.node_tree.nodes.new("ShaderNodeTexImage")
+image_node.image = checker
+printed.node_tree.links.new(image_node.outputs["Color"],
+                            printed.node_tree.nodes["Principled BSDF"].inputs["Base Color"])
+cape.data.materials.append(printed)
+assert cape.data.uv_layers.active is not None
+bpy.ops.mesh.primitive_cylinder_add(vertices=24, radius=0.3, depth=0.6, location=(0.0, 2.0, 0.3))
+post = bpy.context.active_object
+post.name = "Post"
+post.dinam_collider = True
+bpy.ops.wm.save_as_mainfile(filepath=os.path.join(work, "shot.blend"))
+settings.folder = "//dinam"
+bpy.ops.object.select_all(action="DESELECT")
+banner.select_set(True)
+cape.select_set(True)
+assert bpy.ops.dinam.simulate() == {"FINISHED"}, settings.last_report
+shot = os.path.join(work, "dinam", "shot")
+with open(os.path.join(shot, "input", "scene.yaml")) as f:
+    written = f.read()
+banner_entry = written[written.index('name: "Banner"'):written.index('name: "Cape"')]
+cape_entry = written[written.index('name: "Cape"'):written.index('name: "Post"')]
+post_entry = written[written.index('name: "Post"'):]
+assert 'name: "shot"' in written, written[:200]
+colour = [float(c) for c in
+          banner_entry.split("color: {linear: [")[1].split("]")[0].split(",")]
+assert max(abs(a - b) for a, b in zip(colour, (0.8, 0.1, 0.05))) < 1e-6, banner_entry
+assert 'texture: "Cape.png"' in cape_entry, cape_entry
+assert os.path.getsize(os.path.join(shot, "input", "Cape.png")) > 0
+with open(os.path.join(shot, "input", "Cape.obj")) as f:
+    assert "\nvt " in f.read(), "the textured cape's OBJ has no UVs"
+assert "role: collider" in post_entry and "material" not in post_entry, post_entry
+assert "shading: flat" in post_entry, post_entry
+assert os.path.exists(os.path.join(shot, "cache", "manifest.json"))
+print(f"addon: the look travels: name \"shot\", the banner's colour {colour}, the cape's "
+      f"texture, the post a flat-shaded collider; the run in {os.path.relpath(shot, work)}")
+# dinam draws that scene from its cache: the movie is named after the .blend.
+movie = os.path.join(work, "movie")
+drawn = subprocess.run([dinam, "render", os.path.join(shot, "input", "scene.yaml"), "--cache",
+                        os.path.join(shot, "cache"), "-o", movie, "--size", "160x90", "--quiet"],
+                       capture_output=True, text=True)
+assert drawn.returncode == 0, drawn.stderr
+assert os.path.exists(os.path.join(movie, "shot.mp4")), os.listdir(movie)
+print("addon: dinam render of the add-on's scene writes shot.mp4")
+
+# Another .blend in the same folder has its run apart; the first's cache is left as it was. A
+# .blend of the same name elsewhere, sharing an absolute folder, is refused.
+with open(os.path.join(shot, "cache", "Banner.pc2"), "rb") as f:
+    shot_motion = f.read()
+bpy.ops.wm.save_as_mainfile(filepath=os.path.join(work, "take2.blend"))
+settings.wind = (0.0, -4.0, 0.0)
+# The post shaded smooth with Auto Smooth at 40°: smooth sides, sharp rims, as Blender draws it.
+for polygon in post.data.polygons:
+    polygon.use_smooth = True
+post.data.use_auto_smooth, post.data.auto_smooth_angle = True, math.radians(40.0)
+assert bpy.ops.dinam.simulate() == {"FINISHED"}, settings.last_report
+with open(os.path.join(work, "dinam", "take2", "input", "scene.yaml")) as f:
+    post_entry = f.read().split('name: "Post"')[1]
+assert "shading: auto" in post_entry and "sharp_angle: 40.0" in post_entry, post_entry
+with open(os.path.join(shot, "cache", "Banner.pc2"), "rb") as f:
+    assert f.read() == shot_motion, "another .blend's run changed the first's cache"
+assert os.path.exists(os.path.join(work, "dinam", "take2", "cache", "manifest.json"))
+os.makedirs(os.path.join(work, "elsewhere"))
+bpy.ops.wm.save_as_mainfile(filepath=os.path.join(work, "elsewhere", "shot.blend"))
+settings.folder = os.path.join(work, "dinam")
+try:
+    bpy.ops.dinam.simulate()
+    raise AssertionError("a folder holding another file's run was used")
+except RuntimeError as e:
+    assert "holds the run of" in str(e) and os.path.join(work, "shot.blend") in str(e), e
+    print("addon: refused: " + str(e).strip().splitlines()[-1][:150])
+with open(os.path.join(shot, "cache", "Banner.pc2"), "rb") as f:
+    assert f.read() == shot_motion
+print("addon: each .blend its own run: take2's apart, shot's cache as it was")
+settings.wind = (0.0, 4.0, 0.0)
+bpy.ops.wm.save_as_mainfile(filepath=os.path.join(work, "tie.blend"))
+settings.folder = "//dinam"
+
+# A tie: the cape's collar tied to a hook (a collider, keyed to rise 0.3 m) instead of pinned
+# moves up with it.
+collar_z = max((cape.matrix_world @ v.co).z for v in cape.data.vertices)
+bpy.ops.mesh.primitive_plane_add(size=1.0, location=(-2.0, 0.0, collar_z + 0.03))
+hook = bpy.context.active_object
+hook.name = "Hook"
+hook.dinam_collider = True
+hook.keyframe_insert("location", index=2, frame=scene.frame_start)
+hook.location.z += 0.3
+hook.keyframe_insert("location", index=2, frame=scene.frame_end)
+scene.frame_set(scene.frame_start)
+post.dinam_collider = False
+settings.pin_group, cape.dinam_pin_group = "", ""
+cape.dinam_attach_group, cape.dinam_attach_to = "collar", hook
+bpy.ops.object.select_all(action="DESELECT")
+cape.select_set(True)
+assert bpy.ops.dinam.simulate() == {"FINISHED"}, settings.last_report
+with open(os.path.join(work, "dinam", "tie", "input", "scene.yaml")) as f:
+    written = f.read()
+assert 'to: "Hook"' in written and "attach:" in written, written
+scene.frame_set(scene.frame_end)
+evaluated = cape.evaluated_get(bpy.context.evaluated_depsgraph_get())
+mesh = evaluated.to_mesh()
+rose = [(cape.matrix_world @ mesh.vertices[i].co).z - cape_rest[i].z for i in collar]
+evaluated.to_mesh_clear()
+print(f"addon: the collar tied to the hook rose {min(rose):.3f} to {max(rose):.3f} m with it "
+      "(0.3 m)")
+assert all(abs(r - 0.3) < 0.01 for r in rose), rose
+# A tie to an object that is neither simulated nor a collider is refused.
+hook.dinam_collider = False
+try:
+    bpy.ops.dinam.simulate()
+    raise AssertionError("a tie to an object dinam does not see was simulated")
+except RuntimeError as e:
+    assert "which is not simulated" in str(e), e
+    print("addon: refused: " + str(e).strip().splitlines()[-1])
 print("addon: PASS")

@@ -26,7 +26,8 @@ scene = bpy.context.scene
 settings = scene.dinam
 settings.program = dinam
 
-# 2. Save the .blend file (the add-on's folder, //dinam, is beside it).
+# 2. Save the .blend file (the add-on's folder, //dinam, is beside it: cape.blend's run in
+#    //dinam/cape).
 bpy.ops.wm.save_as_mainfile(filepath=os.path.join(work, "cape.blend"))
 
 # The character: a body 0.45 m wide, 0.25 m deep and 1.7 m tall standing on the floor at the
@@ -83,7 +84,7 @@ assert bpy.ops.dinam.simulate() == {"FINISHED"}
 print("cape: dinam said: " + settings.last_report.replace("\n", " | "))
 
 # 10. The movie: the Mesh Cache modifier plays the motion over the frame range.
-with open(os.path.join(work, "dinam", "cache", "manifest.json")) as f:
+with open(os.path.join(work, "dinam", "cape", "cache", "manifest.json")) as f:
     manifest = json.load(f)
 assert manifest["frame_count"] == 96 and manifest["fps"] == 24, manifest
 assert cape.modifiers and cape.modifiers[0].type == "MESH_CACHE", list(cape.modifiers)
