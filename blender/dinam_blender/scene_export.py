@@ -280,8 +280,8 @@ def scene_text(settings, objects, frame_count, fps, colliders=(), name="untitled
         if entry.get("attach"):
             lines.append("    attach:")
             for indices, target in entry["attach"]:
-                lines.append(f"      - {{nodes: {{indices: [{', '.join(str(i) for i in indices)}]}}, "
-                             f"to: {json.dumps(target)}}}")
+                listed = ", ".join(str(i) for i in indices)
+                lines.append(f"      - {{nodes: {{indices: [{listed}]}}, to: {json.dumps(target)}}}")
         lines += look_lines(entry.get("look", {}))
     for entry in colliders:
         lines += [
