@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -88,6 +89,19 @@ int run(int argc, char** argv) {
   } catch (const UserError& e) {
     fmt::print(stderr, "{}: error: {}\n", e.loc().known() ? e.loc().to_string() : "dinam",
                e.message());
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    // Every reader checks what a file claims before it allocates; what is left is a run larger
+    // than the machine, told with what it was given to read.
+    std::string given;
+    for (int k = 1; k < argc; ++k) {
+      given += std::string(" ") + argv[k];
+    }
+    fmt::print(stderr,
+               "dinam: error: out of memory: an allocation failed in 'dinam{}'; 'dinam info "
+               "SCENE' estimates what a scene needs and what the machine has (DINAM_MEMORY_LIMIT "
+               "sets the limit it holds to)\n",
+               given);
     return kExitBadInput;
   } catch (const std::exception& e) {
     fmt::print(stderr, "dinam: error: {}\n", e.what());

@@ -2,6 +2,8 @@
 
 #include <png.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -10,11 +12,16 @@
 #include <system_error>
 #include <vector>
 
+#include "core/byte_size.hpp"
 #include "core/error.hpp"
+#include "core/memory_budget.hpp"
 #include "core/output_file.hpp"
 
 namespace dinam {
 namespace {
+
+// The most deflate can pack into one byte: a run of one value costs 258 bytes per 2 bits.
+constexpr std::uint64_t kDeflateMostRatio = 1032;
 
 struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
@@ -109,7 +116,10 @@ namespace {
 // Like write_rows, no C++ object may be made between setjmp and a possible longjmp, which would
 // skip its destructor: the row pointers live in the caller (the sanitizer build caught the leak a
 // cut-off file caused).
-bool read_rows(std::FILE* file, Image& image, std::vector<png_bytep>& rows, std::string& error) {
+// `most_bytes` bounds the decoded pixels (8-bit RGBA) the header may claim: beyond it the rows are
+// never allocated, and `claimed` holds the width and height the header gave.
+bool read_rows(std::FILE* file, std::uint64_t most_bytes, Image& image, std::vector<png_bytep>& rows,
+               std::array<std::uint64_t, 2>& claimed, std::string& error) {
   png_structp png =
       png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
   if (png == nullptr) {
@@ -129,6 +139,11 @@ bool read_rows(std::FILE* file, Image& image, std::vector<png_bytep>& rows, std:
   png_set_gray_to_rgb(png);
   png_set_add_alpha(png, 0xff, PNG_FILLER_AFTER);
   png_read_update_info(png, info);
+  claimed = {png_get_image_width(png, info), png_get_image_height(png, info)};
+  if (claimed[0] * claimed[1] * 4 > most_bytes) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
   image.width = static_cast<int>(png_get_image_width(png, info));
   image.height = static_cast<int>(png_get_image_height(png, info));
   image.rgba.resize(static_cast<std::size_t>(image.width) * image.height * 4);
@@ -154,11 +169,30 @@ Image read_png(const std::filesystem::path& path) {
   if (std::fread(signature, 1, 8, file.get()) != 8 || png_sig_cmp(signature, 0, 8) != 0) {
     throw RuntimeError(fmt::format("{} is not a PNG file", path.string()));
   }
+  // What its header may claim: no more than its bytes can hold compressed (deflate packs at most
+  // 1032 bytes into one, for a picture of one colour), nor than half the memory available. A
+  // 16 kB file whose header says 65 535 × 65 535 would otherwise be given 17 GB before a row of
+  // it is read.
+  std::error_code ec;
+  const std::uint64_t file_bytes = std::filesystem::file_size(path, ec);
+  std::uint64_t most = kDeflateMostRatio * (ec ? 0 : file_bytes) + (1u << 20);
+  if (const MemoryBudget budget = available_memory(); budget.bytes > 0) {
+    most = std::min(most, budget.bytes / 2);
+  }
   Image image;
   std::vector<png_bytep> rows;
   std::string error;
+  std::array<std::uint64_t, 2> claimed{0, 0};
   std::rewind(file.get());
-  if (!read_rows(file.get(), image, rows, error)) {
+  if (!read_rows(file.get(), most, image, rows, claimed, error)) {
+    if (const std::uint64_t bytes = claimed[0] * claimed[1] * 4; bytes > most) {
+      throw UserError(FileLoc{path.string()},
+                      fmt::format("its header claims {} × {} pixels ({} decoded), more than its "
+                                  "{} bytes can hold or the memory allows ({} at most): a damaged "
+                                  "or forged PNG",
+                                  claimed[0], claimed[1], byte_size(bytes), file_bytes,
+                                  byte_size(most)));
+    }
     throw RuntimeError(fmt::format("cannot read {}: {}", path.string(), error));
   }
   return image;

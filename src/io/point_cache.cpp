@@ -153,6 +153,24 @@ PointCacheHeader read_point_cache_header(const std::filesystem::path& path, Poin
   if (header.point_count < 0 || header.sample_count < 0) {
     throw_bad_cache(path, "the header gives a negative count", remedy);
   }
+  // What the header claims is checked against the file's size before anything is made from it:
+  // a file of a few bytes that claims a billion frames would otherwise have its table of times
+  // (or a track) allocated first. The claim is reckoned in long double: 12 bytes × 2³¹ points ×
+  // 2³¹ samples overflows 64 bits.
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  const long double claimed =
+      static_cast<long double>(header.header_bytes()) +
+      static_cast<long double>(header.sample_count) * 12.0L *
+          static_cast<long double>(header.point_count);
+  if (ec || static_cast<long double>(size) != claimed) {
+    throw_bad_cache(path,
+                    fmt::format("the file has {} bytes where its header promises {:.0f} ({} "
+                                "samples of {} points)",
+                                ec ? 0 : size, static_cast<double>(claimed), header.sample_count,
+                                header.point_count),
+                    remedy);
+  }
   if (format == PointCacheFormat::kMdd) {
     std::vector<char> times(4 * static_cast<std::size_t>(header.sample_count));
     if (!in.read(times.data(), static_cast<std::streamsize>(times.size()))) {
@@ -162,14 +180,6 @@ PointCacheHeader read_point_cache_header(const std::filesystem::path& path, Poin
     for (std::size_t k = 0; k < header.times.size(); ++k) {
       header.times[k] = get_float(&times[4 * k], true);
     }
-  }
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec || size != header.file_bytes()) {
-    throw_bad_cache(path,
-                    fmt::format("the file has {} bytes where its header promises {}", ec ? 0 : size,
-                                header.file_bytes()),
-                    remedy);
   }
   return header;
 }

@@ -60,7 +60,7 @@ std::uint64_t scene_bytes(const SceneDescription& scene) {
   std::uint64_t bytes = 0;
   for (const ObjectDesc& object : scene.objects) {
     const RawMesh& mesh = object.mesh;
-    bytes += bytes_of(mesh.vertices) + bytes_of(mesh.uvs);
+    bytes += bytes_of(mesh.vertices) + bytes_of(mesh.uvs) + bytes_of(object.pin_motion.track);
     for (const auto* loops : {&mesh.faces, &mesh.lines}) {
       for (const std::vector<Index>& loop : *loops) {
         bytes += kLoopBytes + bytes_of(loop);
@@ -220,20 +220,6 @@ void refuse_if_over_budget(const std::filesystem::path& scene_path, const FileLo
                    "--force to run it anyway",
                    scene_path.string(), estimate.summary(), byte_size(budget.bytes), budget.source,
                    advice);
-}
-
-std::string byte_size(std::uint64_t bytes) {
-  const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
-  auto value = static_cast<double>(bytes);
-  int unit = 0;
-  while (value >= 999.5 && unit < 6) {
-    value /= 1000.0;
-    ++unit;
-  }
-  if (unit == 0) {
-    return fmt::format("{} bytes", bytes);
-  }
-  return fmt::format("{:.3g} {}", value, units[unit]);
 }
 
 }  // namespace dinam

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/byte_size.hpp"
 #include "core/memory_budget.hpp"
 
 namespace dinam {
@@ -51,8 +52,5 @@ std::uint64_t made_state_bytes(const Model& model, bool energy);
 // frames held are the whole run's) when the frames are the largest part.
 void refuse_if_over_budget(const std::filesystem::path& scene_path, const FileLoc& frames_key,
                            const MemoryEstimate& estimate, const MemoryBudget& budget, bool force);
-
-// "1.23 GB", "456 MB", "789 kB": decimal units, three significant figures.
-std::string byte_size(std::uint64_t bytes);
 
 }  // namespace dinam

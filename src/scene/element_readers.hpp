@@ -70,8 +70,9 @@ void read_image(YamlMap map, SceneDescription& scene);
 // An object's `finish`: a preset name or {roughness, metallic, sheen}.
 Finish read_finish(const YAML::Node& node, const std::string& file, const std::string& what);
 
-// One entry of `objects`, its mesh loaded.
+// One entry of `objects`, its mesh loaded; `frames` is the scene's duration × fps (a point cache
+// is read as far as the run reaches).
 ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder,
-                       std::vector<std::string>& warnings);
+                       double frames, std::vector<std::string>& warnings);
 
 }  // namespace dinam

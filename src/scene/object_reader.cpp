@@ -192,7 +192,7 @@ NodeSelection read_nodes(YamlMap map, const RawMesh& mesh, bool* clamped) {
 }
 
 ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scene_folder,
-                       std::vector<std::string>& warnings) {
+                       double frames, std::vector<std::string>& warnings) {
   ObjectDesc object;
   object.loc = map.loc();
   object.name = map.string("name", fmt::format("object{}", index));
@@ -231,7 +231,7 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
     YamlMap motion(map.get("pin_motion"), map.file(), map.path("pin_motion"));
     object.pin_motion.loc = motion.loc();
     if (motion.has("point_cache")) {
-      read_pin_track(motion, scene_folder, object, warnings);
+      read_pin_track(motion, scene_folder, frames, object, warnings);
     } else {
       object.pin_motion.displacement = motion.required_vec3("displacement");
       if (motion.has("profile")) {

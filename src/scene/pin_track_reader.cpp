@@ -8,7 +8,9 @@
 #include <fstream>
 #include <limits>
 
+#include "core/byte_size.hpp"
 #include "core/error.hpp"
+#include "core/memory_budget.hpp"
 #include "io/point_cache.hpp"
 
 namespace dinam {
@@ -34,8 +36,8 @@ std::pair<double, double> first_sample_offset(const PinMotionDesc& motion, const
 
 }  // namespace
 
-void read_pin_track(YamlMap& motion, const std::filesystem::path& scene_folder, ObjectDesc& object,
-                    std::vector<std::string>& warnings) {
+void read_pin_track(YamlMap& motion, const std::filesystem::path& scene_folder, double frames,
+                    ObjectDesc& object, std::vector<std::string>& warnings) {
   const FileLoc where = motion.loc("point_cache");
   const std::string key = motion.path("point_cache");
   if (motion.has("displacement") || motion.has("profile")) {
@@ -60,8 +62,17 @@ void read_pin_track(YamlMap& motion, const std::filesystem::path& scene_folder, 
     throw_user_error(where, "'{}': no file '{}' (a path relative to the scene's folder)", key,
                      file.string());
   }
-  const PointCacheHeader header = read_point_cache_header(
-      file, extension == ".pc2" ? PointCacheFormat::kPc2 : PointCacheFormat::kMdd, kExportAgain);
+  // The file's own errors are told at the key that names it.
+  const auto at_the_key = [&](const UserError& e) {
+    throw_user_error(where, "'{}': {}: {}", key, e.loc().to_string(), e.message());
+  };
+  PointCacheHeader header;
+  try {
+    header = read_point_cache_header(
+        file, extension == ".pc2" ? PointCacheFormat::kPc2 : PointCacheFormat::kMdd, kExportAgain);
+  } catch (const UserError& e) {
+    at_the_key(e);
+  }
   // The file's own list of vertices where dinam reads one (an OBJ's `v` lines: assimp splits a
   // vertex that faces share), else the mesh's, as `pinned: {indices}` counts them.
   const RawMesh& mesh = object.mesh;
@@ -97,11 +108,32 @@ void read_pin_track(YamlMap& motion, const std::filesystem::path& scene_folder, 
                      "that wrote the cache",
                      key, object.mesh_source);
   }
+  // The samples the run reaches (the last one within its frames, and the next, which the path
+  // leans towards), not those of a longer animation: a cache of ten million samples for a
+  // three-frame scene reads four.
+  const double reached = std::floor(frames / pin_motion.frames_per_sample) + 2.0;
+  const auto samples = static_cast<std::int32_t>(
+      std::min(static_cast<double>(header.sample_count), std::max(reached, 1.0)));
+  const std::uint64_t track_bytes =
+      static_cast<std::uint64_t>(samples) * mesh.vertices.size() * sizeof(Vec3);
+  if (const MemoryBudget budget = available_memory();
+      budget.bytes > 0 && track_bytes > budget.bytes / 2) {
+    throw_user_error(where,
+                     "'{}': the {} samples of '{}' the run reaches ({} points each) would take {} "
+                     "of memory, more than half of the {} available ({}); shorten the cache or "
+                     "the scene's duration",
+                     key, samples, file.filename().string(), header.point_count,
+                     byte_size(track_bytes), byte_size(budget.bytes), budget.source);
+  }
   std::ifstream in(file, std::ios::binary);
   std::vector<Vec3f> sample(vertices);
-  pin_motion.track.reserve(mesh.vertices.size() * static_cast<std::size_t>(header.sample_count));
-  for (std::int32_t s = 0; s < header.sample_count; ++s) {
-    read_point_cache_sample(in, file, header, s, sample.data(), kExportAgain);
+  pin_motion.track.reserve(mesh.vertices.size() * static_cast<std::size_t>(samples));
+  for (std::int32_t s = 0; s < samples; ++s) {
+    try {
+      read_point_cache_sample(in, file, header, s, sample.data(), kExportAgain);
+    } catch (const UserError& e) {
+      at_the_key(e);
+    }
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
       const Vec3f& p = sample[by_source ? static_cast<std::size_t>(mesh.source_vertex[v]) : v];
       pin_motion.track.push_back(object.placement(p.cast<double>()));

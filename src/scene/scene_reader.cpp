@@ -423,7 +423,8 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
   std::set<std::string> names;
   for (std::size_t i = 0; i < objects.size(); ++i) {
     ObjectDesc object = read_object(YamlMap(objects[i], file, fmt::format("objects[{}]", i)),
-                                    static_cast<int>(i), folder, scene.warnings);
+                                    static_cast<int>(i), folder, scene.duration * scene.fps,
+                                    scene.warnings);
     if (!names.insert(object.name).second) {
       throw_user_error(object.loc, "two objects are named '{}'; names must be unique", object.name);
     }

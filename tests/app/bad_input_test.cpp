@@ -219,6 +219,33 @@ TEST_F(BadPlace, OutputPathThatIsAFileIsNamedAndLeftAlone) {
   EXPECT_EQ(joined(files_under(folder_.path())), "rope.yaml, taken");
 }
 
+// A run larger than the memory it is given (an address-space limit of 700 MB, --force past the
+// estimate's refusal) ends with what ran out and what was given to read, exit 2: never a raw
+// std::bad_alloc. A sanitizer build reserves terabytes of address space for its shadow, so the
+// limit cannot be set there.
+TEST_F(BadPlace, AnAllocationThatFailsIsToldWithTheCommandAndExits2) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "the sanitizer's shadow memory needs more address space than the limit";
+#endif
+  const std::filesystem::path scene = write("big.yaml", R"(version: 1
+duration: 0.05
+fps: 20
+objects:
+  - name: cloth
+    mesh: {grid: {width: 10, height: 10, columns: 1500, rows: 1500}}
+    material: {preset: cotton}
+    pinned: {indices: [0]}
+)");
+  const test::CommandResult run = test::run_command(
+      "ulimit -v 700000 && " + test::dinam_command("simulate " + test::shell_quoted(scene) +
+                                                   " -o " + test::shell_quoted(path("cache")) +
+                                                   " --force --quiet"));
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  expect_message(run, {"out of memory", "big.yaml", "dinam info SCENE"});
+  EXPECT_EQ(run.output.find("bad_alloc"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(path("cache") / "manifest.json"));
+}
+
 TEST_F(BadPlace, SceneThatIsAFolderOrMissingIsNamed) {
   std::filesystem::create_directories(path("scenes"));
   const test::CommandResult folder = test::run_dinam({"render", path("scenes").string()});

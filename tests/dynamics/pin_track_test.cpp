@@ -138,6 +138,23 @@ TEST(PinTrack, SamplesSomeFramesApartAreTimedByTheScenesFps) {
             model.pin_motions[0].track[5 * 4 + 2]);
 }
 
+// A cache far longer than the scene (100 000 samples, one a frame, for a scene of 20 frames) is
+// read as far as the run reaches: sample 20 (t = 1 s, its last frame) and the next, not the rest,
+// which a header can claim by the billion; the path within the run is the same.
+TEST(PinTrack, ACacheLongerThanTheRunIsReadAsFarAsTheRunReaches) {
+  TrackScene scene;
+  write_track(scene.folder.path() / "track.pc2", 100000);
+  const Model model = build_model(scene.read("", "{point_cache: track.pc2}"));
+  ASSERT_EQ(model.pin_motions[0].track.size(), 22U * 4U);
+  const SceneDescription read = scene.read("", "{point_cache: track.pc2}");
+  EXPECT_EQ(read.objects[0].pin_motion.track.size(), 22U * read.objects[0].mesh.vertices.size());
+  for (int v = 0; v < 4; ++v) {
+    EXPECT_EQ(driven_position(model, model.pin_motions[0], v, 1.0),
+              sample_point(20, v).cast<double>())
+        << v;
+  }
+}
+
 TEST(PinTrack, ACacheThatIsNotOfTheMeshIsRefusedAtItsKey) {
   TrackScene scene;
   write_track(scene.folder.path() / "five.pc2", 3, 5);
