@@ -328,7 +328,18 @@ int run_snapshot(const SnapshotOptions& options) {
     if (report) {
       check_output_name(*report);
       check_output_place(*report, OutputPlace::kBeside, "the report");
+      make_parent_folder(*report, "the report");
     }
+  }
+  if (options.framing && !(*options.framing >= 0.0 && *options.framing <= 1.0)) {
+    throw_user_error({}, "--framing must be a fraction of the picture from 0 to 1, e.g. 0.5; got {}",
+                     *options.framing);
+  }
+  std::error_code ec;
+  if (std::filesystem::exists(options.golden, ec) &&
+      !std::filesystem::is_directory(options.golden, ec)) {
+    throw_user_error({}, "--golden {} is a file; give the folder that holds the golden images",
+                     options.golden.string());
   }
   if (options.update) {
     check_output_place(options.golden, OutputPlace::kInside, "--golden");

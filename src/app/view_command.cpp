@@ -189,6 +189,7 @@ int run_view(const ViewOptions& options) {
   const MotionCache cache(options.cache);
   const std::filesystem::path output = options.output.value_or(default_view_path(options.cache));
   check_output_place(output, OutputPlace::kBeside, options.output ? "-o" : "the page");
+  make_parent_folder(output, options.output ? "-o" : "the page");
   const CacheManifest& manifest = cache.manifest();
   std::vector<int> frames;
   for (int frame = 1; frame <= manifest.frame_count; frame += options.every) {

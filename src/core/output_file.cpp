@@ -124,6 +124,19 @@ void check_output_place(const std::filesystem::path& path, OutputPlace place, co
   }
 }
 
+void make_parent_folder(const std::filesystem::path& path, const char* what) {
+  const std::filesystem::path parent = path.parent_path();
+  std::error_code ec;
+  if (parent.empty() || std::filesystem::is_directory(parent, ec)) {
+    return;
+  }
+  std::filesystem::create_directories(parent, ec);
+  if (ec) {
+    throw_user_error({}, "{} {} cannot be written: the folder {} cannot be made ({})", what,
+                     path.string(), parent.string(), ec.message());
+  }
+}
+
 int create_exclusive_file(const std::filesystem::path& stem, std::filesystem::path& created) {
   // 48 random bits: a clash with a planted name is all but impossible, and harmless (O_EXCL
   // fails and the next name is tried).

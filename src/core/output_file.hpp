@@ -34,6 +34,11 @@ enum class OutputPlace { kInside, kBeside };
 // what to do.
 void check_output_place(const std::filesystem::path& path, OutputPlace place, const char* what);
 
+// Makes the folder that the file `path` is to go into, and those on its way, before any work
+// (check_output_place has found them writable): a report or a page named in a folder that does not
+// exist yet is written there, not lost at the end. Throws UserError naming `what` where it cannot.
+void make_parent_folder(const std::filesystem::path& path, const char* what);
+
 // A file being written: a new temporary beside the final name until commit() renames it there.
 class OutputFile {
  public:

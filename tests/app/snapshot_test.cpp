@@ -264,6 +264,31 @@ TEST_F(Snapshot, JUnitAndHtmlReportsHoldEveryFrame) {
   EXPECT_NE(read(junit).find(R"(tests="2" failures="0")"), std::string::npos) << read(junit);
 }
 
+// Reports named in folders that do not exist yet are written there (the folders made before any
+// frame is compared); options that cannot be right are refused before any work, exit 2: a
+// --golden that names a file, a --framing that is no fraction.
+TEST_F(Snapshot, ReportsIntoMissingFoldersAreWrittenAndImpossibleOptionsRefused) {
+  const std::filesystem::path junit = folder_.path() / "ci" / "reports" / "snapshots.xml";
+  const std::filesystem::path html = folder_.path() / "pages" / "snapshots.html";
+  const CommandResult passing = snapshot(
+      Banner{}, fmt::format("--junit {} --report {}", test::shell_quoted(junit),
+                            test::shell_quoted(html)));
+  EXPECT_EQ(passing.exit_code, 0) << passing.output;
+  EXPECT_NE(read(junit).find(R"(tests="2" failures="0")"), std::string::npos) << passing.output;
+  EXPECT_NE(read(html).find("frames"), std::string::npos);
+  const CommandResult file_golden = run_command(dinam_command(
+      fmt::format("snapshot {} --golden {}", test::shell_quoted(scene(Banner{})),
+                  test::shell_quoted(golden() / "banner_0001.png"))));
+  EXPECT_EQ(file_golden.exit_code, 2) << file_golden.output;
+  EXPECT_NE(file_golden.output.find("banner_0001.png is a file; give the folder"),
+            std::string::npos)
+      << file_golden.output;
+  for (const char* framing : {"nan", "inf", "1.5"}) {
+    const CommandResult refused = snapshot(Banner{}, fmt::format("--framing {}", framing));
+    EXPECT_EQ(refused.exit_code, 2) << framing << ": " << refused.output;
+  }
+}
+
 TEST_F(Snapshot, ABadToleranceFileStopsAtItsLine) {
   write_tolerances("version: 1\nscenes:\n  banner: {min_sim: 0.9}\n");
   const CommandResult result = snapshot(Banner{});

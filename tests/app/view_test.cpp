@@ -14,6 +14,7 @@
 #include <fstream>
 
 #include "app/browser.hpp"
+#include "app/output_checks.hpp"
 #include "core/image.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_file.hpp"
@@ -135,6 +136,21 @@ TEST(View, EveryNthFrameMakesASmallerPage) {
   EXPECT_LT(std::filesystem::file_size(tenth.page) + 20'000, std::filesystem::file_size(all.page));
   test::expect_contains(loaded_dom(tenth, "#frame=60"),
                         {"data-status=\"ready\"", "data-errors=\"0\"", "data-frame=\"61\""});
+}
+
+// -o naming a page in folders that do not exist yet: they are made, and the page written there.
+TEST(View, APageIntoAFolderThatDoesNotExistIsWrittenThere) {
+  const test::TemporaryFolder folder("view");
+  const std::filesystem::path scene = folder.path() / "rope.yaml";
+  std::ofstream(scene) << test::rope_scene();
+  const test::CommandResult simulated = test::run_dinam(
+      {"simulate", scene.string(), "-o", (folder.path() / "cache").string(), "--quiet"});
+  ASSERT_EQ(simulated.exit_code, 0) << simulated.output;
+  const std::filesystem::path page = folder.path() / "pages" / "today" / "rope.html";
+  const test::CommandResult viewed =
+      test::run_dinam({"view", (folder.path() / "cache").string(), "-o", page.string()});
+  EXPECT_EQ(viewed.exit_code, 0) << viewed.output;
+  EXPECT_GT(std::filesystem::file_size(page), 100'000U);
 }
 
 TEST(View, AFolderThatIsNotACacheIsRefusedAndNoPageWritten) {
