@@ -196,7 +196,7 @@ ObjectDesc read_object(YamlMap map, int index, const std::filesystem::path& scen
   ObjectDesc object;
   object.loc = map.loc();
   object.name = map.string("name", fmt::format("object{}", index));
-  require_utf8(object.name, map.loc("name"), map.path("name"));
+  require_plain_name(object.name, map.loc("name"), map.path("name"));
   object.mesh_loc = map.loc("mesh");
   read_mesh(YamlMap(map.required("mesh"), map.file(), map.path("mesh")), scene_folder, object,
             warnings);

@@ -287,8 +287,9 @@ SceneDescription read_root(const YAML::Node& root, const std::filesystem::path& 
                      scene.version, kSceneVersion);
   }
   scene.name = map.string("name", source.stem().string());
-  require_utf8(scene.name, map.loc("name"), map.path("name"));
-  if (scene.name.empty() || scene.name.find_first_of("/\\") != std::string::npos) {
+  require_plain_name(scene.name, map.has("name") ? map.loc("name") : FileLoc{source.string()},
+                     map.path("name"));
+  if (scene.name.find_first_of("/\\") != std::string::npos) {
     throw_user_error(map.loc("name"),
                      "'name' names the movie file: it must be a non-empty name "
                      "without slashes");

@@ -207,6 +207,30 @@ void require_utf8(const std::string& text, const FileLoc& loc, const std::string
   }
 }
 
+void require_plain_name(const std::string& text, const FileLoc& loc, const std::string& what) {
+  require_utf8(text, loc, what);
+  if (text.empty() || text == "." || text == "..") {
+    throw_user_error(loc,
+                     "'{}' is '{}', which names a folder, not a thing: it goes into file names; "
+                     "give it a name",
+                     what, text);
+  }
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    // C1 controls are U+0080–U+009F, in UTF-8 0xC2 followed by 0x80–0x9F.
+    const bool c1 = c == 0xC2 && i + 1 < text.size() &&
+                    static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(text[i + 1]) <= 0x9F;
+    if (c < 0x20 || c == 0x7F || c1) {
+      const unsigned code = c1 ? static_cast<unsigned char>(text[i + 1]) : c;
+      throw_user_error(loc,
+                       "'{}' holds a control character (U+{:04X}, at byte {}), which would break "
+                       "the files and reports it goes into; write the name in printable characters",
+                       what, code, i + 1);
+    }
+  }
+}
+
 void check_no_duplicate_keys(const YAML::Node& root, const std::string& file) {
   // Aliases can make a small file a huge tree (the "billion laughs"); a scene has far fewer
   // nodes than this, so a document beyond it is refused rather than walked.

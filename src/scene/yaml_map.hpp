@@ -36,6 +36,12 @@ Vec3 as_vec3(const YAML::Node& node, const std::string& file, const std::string&
 // web pages, which hold nothing else.
 void require_utf8(const std::string& text, const FileLoc& loc, const std::string& what);
 
+// A name that goes into file names and into every format dinam writes (the scene's, an
+// object's): UTF-8, not empty, not a path word ('.', '..'), and without control characters (C0,
+// DEL, C1), which would break a JUnit report's XML, reach a terminal as escape sequences, or end a
+// USD string. Throws UserError at `loc` naming `what` and the first offending character.
+void require_plain_name(const std::string& text, const FileLoc& loc, const std::string& what);
+
 // Throws UserError at the second occurrence of a key within one map, anywhere in the document,
 // naming the first: YAML forbids it, yet the parser keeps both and a reader would silently use one.
 void check_no_duplicate_keys(const YAML::Node& root, const std::string& file);
