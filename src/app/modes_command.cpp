@@ -145,10 +145,17 @@ int run_modes(const ModesOptions& options) {
   ForceSwitches quiet;
   quiet.fields = false;
   quiet.wind = false;
-  const std::vector<NaturalMode> modes = natural_modes(model, state, quiet, options.count);
+  // What the eigensolver cannot do is told at the scene, as every other error of the command is.
+  std::vector<NaturalMode> modes;
+  try {
+    modes = natural_modes(model, state, quiet, options.count);
+  } catch (const RuntimeError& e) {
+    throw UserError(FileLoc{options.scene.string()}, e.what());
+  }
   if (modes.empty()) {
-    throw_user_error({}, "{}: every node is pinned, so nothing can vibrate",
-                     options.scene.string());
+    throw_user_error(FileLoc{options.scene.string()},
+                     "every node is pinned, so nothing can vibrate; unpin some ('pinned'), or "
+                     "give an object 'role: flexible'");
   }
   if (!options.quiet) {
     fmt::print("dinam: {}\n", settle_summary(state.settled, timestep.dt));

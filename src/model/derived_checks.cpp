@@ -28,11 +28,16 @@ Index first_unusable(const std::vector<double>& values, Index first, Index end,
 
 [[noreturn]] void refuse(const ObjectDesc& desc, const FileLoc& where, const std::string& what,
                          double value) {
-  throw_user_error(where,
-                   "object '{}': {} is {:g}, which no step can use; the material's values combine "
-                   "beyond double precision (check density, youngs_modulus and the section "
-                   "against the mesh's size)",
-                   desc.name, what, value);
+  // A sheet's mass and stiffness are its faces': its keys, and the faces' areas, are to check.
+  const char* advice =
+      desc.material.sheet
+          ? "the sheet's values and its faces combine to nothing or beyond double precision "
+            "(check areal_density and stretch_stiffness against the mesh's size, and that its "
+            "faces have an area: a face whose corners lie on one line carries no cloth)"
+          : "the material's values combine beyond double precision (check density, "
+            "youngs_modulus and the section against the mesh's size)";
+  throw_user_error(where, "object '{}': {} is {:g}, which no step can use; {}", desc.name, what,
+                   value, advice);
 }
 
 }  // namespace

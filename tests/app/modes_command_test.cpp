@@ -212,3 +212,28 @@ TEST(ModesCommand, MotionsNothingResistsAreFreeNotUnstable) {
 
 }  // namespace
 }  // namespace dinam
+
+namespace dinam {
+namespace {
+
+// A structure with nothing free to vibrate (a collider alone) is told at the scene file, exit 2,
+// with what to change.
+TEST(ModesCommand, NothingFreeIsToldAtTheSceneFile) {
+  const test::TemporaryFolder folder("modes");
+  const auto scene = folder.path() / "post.yaml";
+  std::ofstream(scene) << R"(version: 1
+duration: 1
+objects:
+  - name: post
+    mesh: {polyline: {points: [[0, 0, 0], [0, 0, 1]], segments: 4}}
+    role: collider
+)";
+  const test::CommandResult modes =
+      test::run_dinam({"modes", scene.string(), "-o", (folder.path() / "modes").string()});
+  EXPECT_EQ(modes.exit_code, 2) << modes.output;
+  test::expect_contains(modes.output,
+                        {scene.string() + ": error: every node is pinned", "'pinned'"});
+}
+
+}  // namespace
+}  // namespace dinam
