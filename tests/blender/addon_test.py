@@ -256,14 +256,15 @@ with open(stubborn, "w") as f:
     f.write("#!/bin/sh\ntrap '' TERM\n: > \"$0.ready\"\nexec sleep 60\n")
 os.chmod(stubborn, 0o755)
 run = dinam_run.DinamRun(stubborn, long_scene, os.path.join(work, "never"))
-for _ in range(400):
+# Waits without a deadline that a busy machine could miss: a minute at most, never asserted on.
+for _ in range(1200):
     if os.path.exists(stubborn + ".ready"):
         break
     time.sleep(0.05)
 run.request_cancel(grace=0.5)
 assert run.poll() is None, "the stubborn program ended at once"
 code = None
-for _ in range(200):
+for _ in range(1200):
     code = run.poll()
     if code is not None:
         break

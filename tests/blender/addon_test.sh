@@ -17,8 +17,10 @@ if ! command -v blender >/dev/null; then
   exit 77
 fi
 work=$(mktemp -d /tmp/dinam-addon-XXXXXX)
-# Blender installs add-ons into the user's configuration: keep this test's apart.
-export BLENDER_USER_CONFIG="$work/config" BLENDER_USER_SCRIPTS="$work/scripts"
+# Blender installs add-ons into the user's configuration: keep this test's apart, every user
+# folder Blender reads (its configuration, scripts, data files) its own.
+export BLENDER_USER_CONFIG="$work/config" BLENDER_USER_SCRIPTS="$work/scripts" \
+  BLENDER_USER_DATAFILES="$work/datafiles" HOME="$work/home"
 trap 'rm -rf "$work"' EXIT
 blender -b --factory-startup --python-exit-code 1 --python "$source_dir/tests/blender/$script" \
   -- "$addon" "$dinam" "$work/run" >"$work/blender.log" 2>&1 || { cat "$work/blender.log"; exit 1; }
