@@ -15,6 +15,7 @@
 #include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
+#include "core/file_kind.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 #include "dynamics/stability.hpp"
@@ -254,6 +255,7 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
       result.detail =
           fmt::format("no golden image {}; run with --update to create it", golden.string());
     } else {
+      require_regular_file(golden, "the golden image");
       result.expected = read_png(golden);
       result.has_regions = !tolerance.regions.empty();
       const std::vector<float> weights =

@@ -21,6 +21,7 @@
 #include "cache/motion_cache.hpp"
 #include "core/base64.hpp"
 #include "core/counted.hpp"
+#include "core/file_kind.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 
@@ -59,6 +60,7 @@ Index parse_id(const std::filesystem::path& obj, int number, const std::string& 
 }
 
 ObjectElements read_elements(const std::filesystem::path& obj, Index first, Index count) {
+  require_regular_file(obj, "the cache's rest mesh");
   std::ifstream in(obj);
   if (!in) {
     throw_user_error(FileLoc{obj.string()}, "cannot read the cache's rest mesh: {}",
@@ -141,6 +143,7 @@ std::string deflated_base64(const void* data, std::size_t size) {
 
 // A texture of the cache as a data URL the page loads without the network.
 std::string texture_data_url(const std::filesystem::path& file) {
+  require_regular_file(file, "the cache's texture");
   std::ifstream in(file, std::ios::binary);
   if (!in) {
     throw_user_error(FileLoc{file.string()}, "cannot read the cache's texture: {}; simulate again",

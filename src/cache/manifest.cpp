@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/file_kind.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
 
@@ -181,6 +182,7 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
 }
 
 CacheManifest read_manifest(const std::filesystem::path& path) {
+  require_regular_file(path, "the cache's manifest");
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw UserError(FileLoc{path.string()},

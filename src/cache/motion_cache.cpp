@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "core/file_kind.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "model/model.hpp"
@@ -70,6 +71,7 @@ MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folde
     const bool pc2 = !entry.pc2.empty();
     ObjectCache cache;
     cache.path = folder_ / (pc2 ? entry.pc2 : entry.mdd);
+    require_regular_file(cache.path, "the cache's point cache");
     cache.header =
         read_point_cache_header(cache.path, pc2 ? PointCacheFormat::kPc2 : PointCacheFormat::kMdd);
     if (cache.header.point_count != entry.node_count ||
@@ -84,6 +86,7 @@ MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folde
   }
   if (manifest_.instants.per_frame > 0) {
     instants_.path = folder_ / manifest_.instants.pc2;
+    require_regular_file(instants_.path, "the cache's motion blur instants");
     instants_.header = read_point_cache_header(instants_.path, PointCacheFormat::kPc2);
     if (instants_.header.point_count != manifest_.node_count ||
         instants_.header.sample_count != manifest_.instants.per_frame * manifest_.frame_count) {

@@ -12,36 +12,10 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/file_kind.hpp"
 
 namespace dinam {
 namespace {
-
-// What a name that exists is, in the words of a message; empty for a regular file or no file.
-std::string unsafe_kind(const std::filesystem::path& path, bool folder_wanted) {
-  struct stat info {};
-  if (lstat(path.c_str(), &info) != 0) {
-    return {};  // missing (or unreadable: the write will say so)
-  }
-  if (S_ISLNK(info.st_mode)) {
-    return "a symbolic link";
-  }
-  if (folder_wanted) {
-    return S_ISDIR(info.st_mode) ? std::string() : std::string("not a folder");
-  }
-  if (S_ISREG(info.st_mode)) {
-    return {};
-  }
-  if (S_ISDIR(info.st_mode)) {
-    return "a folder";
-  }
-  if (S_ISFIFO(info.st_mode)) {
-    return "a FIFO";
-  }
-  if (S_ISSOCK(info.st_mode)) {
-    return "a socket";
-  }
-  return "a device or special file";
-}
 
 std::string random_suffix() {
   std::array<unsigned char, 6> bytes{};
@@ -66,7 +40,7 @@ std::string random_suffix() {
 }  // namespace
 
 void check_output_name(const std::filesystem::path& path) {
-  const std::string kind = unsafe_kind(path, false);
+  const std::string kind = file_kind_of(path, false);
   if (!kind.empty()) {
     throw_user_error({},
                      "{} exists and is {}; dinam writes only new or regular files and never "
@@ -76,7 +50,7 @@ void check_output_name(const std::filesystem::path& path) {
 }
 
 void check_output_folder_name(const std::filesystem::path& folder) {
-  const std::string kind = unsafe_kind(folder, true);
+  const std::string kind = file_kind_of(folder, true);
   if (!kind.empty()) {
     throw_user_error({},
                      "{} exists and is {}; dinam writes this folder only where it is a real "

@@ -104,6 +104,55 @@ TEST(HostileCache, AManifestNamingAFileOutsideTheCacheIsRefused) {
   }
 }
 
+// A file of the cache replaced by a symbolic link to a file of the machine (the manifest, the rest
+// mesh, the point cache, a texture the manifest names): `view` and `render --cache` refuse it,
+// naming it, exit 2, and embed or read nothing of the target.
+TEST(HostileCache, AFileOfTheCacheThatIsALinkIsRefused) {
+  for (const char* key : {"manifest", "obj", "pc2", "texture"}) {
+    SCOPED_TRACE(key);
+    const TinyCache tiny;
+    const std::filesystem::path secret = tiny.folder.path() / "secret.txt";
+    std::ofstream(secret) << "the machine's secret\n";
+    std::filesystem::path linked;
+    if (std::string(key) == "manifest") {
+      linked = tiny.cache / "manifest.json";
+      std::filesystem::copy_file(linked, tiny.folder.path() / "manifest.json");
+      std::filesystem::remove(linked);
+      std::filesystem::create_symlink(tiny.folder.path() / "manifest.json", linked);
+    } else if (std::string(key) == "texture") {
+      // A textured cloth's cache instead, its texture (copied into the cache) made a link.
+      std::ofstream(tiny.scene) << "version: 1\nduration: 0.2\nfps: 10\nobjects:\n"
+                                << "  - name: cloth\n"
+                                << "    mesh: {grid: {width: 1, height: 1, columns: 2, rows: 2}}\n"
+                                << "    material: {preset: cotton}\n    pinned: {all: true}\n"
+                                << "    texture: " << (test::data_dir() / "quad.png").string()
+                                << "\n";
+      std::filesystem::remove_all(tiny.cache);
+      const test::CommandResult made = test::run_dinam(
+          {"simulate", tiny.scene.string(), "-o", tiny.cache.string(), "--quiet"});
+      ASSERT_EQ(made.exit_code, 0) << made.output;
+      linked = tiny.cache / std::string(tiny.manifest()["objects"][0]["look"]["texture"]);
+      std::filesystem::remove(linked);
+      std::filesystem::create_symlink(secret, linked);
+    } else {
+      linked = tiny.cache / std::string(tiny.manifest()["objects"][0]["files"][key]);
+      std::filesystem::remove(linked);
+      std::filesystem::create_symlink(secret, linked);
+    }
+    const test::CommandResult viewed = tiny.view();
+    EXPECT_EQ(viewed.exit_code, 2) << viewed.output;
+    test::expect_contains(viewed.output, {linked.filename().string(), "is a symbolic link"});
+    EXPECT_FALSE(std::filesystem::exists(tiny.page));
+    if (std::string(key) != "texture" && std::string(key) != "obj") {
+      const test::CommandResult rendered =
+          test::run_dinam({"render", tiny.scene.string(), "--cache", tiny.cache.string(), "-o",
+                           (tiny.folder.path() / "frames").string(), "--movie", "none", "--quiet"});
+      EXPECT_EQ(rendered.exit_code, 2) << rendered.output;
+      test::expect_contains(rendered.output, {"is a symbolic link"});
+    }
+  }
+}
+
 // Names that would end the page's script ("</script>") or hide its end in a comment ("<!--"),
 // in the scene's and the object's name: the page holds no '<' in its data and plays.
 TEST(HostileCache, ThePagePlaysWithAnyName) {

@@ -289,6 +289,24 @@ TEST_F(Snapshot, ReportsIntoMissingFoldersAreWrittenAndImpossibleOptionsRefused)
   }
 }
 
+// A golden image or the tolerance file replaced by a symbolic link (to another picture, to a file
+// of the machine) is refused, naming it, exit 2: goldens are read only as files of their folder.
+TEST_F(Snapshot, AGoldenOrToleranceFileThatIsALinkIsRefused) {
+  for (const char* name : {"banner_0005.png", "tolerances.yaml"}) {
+    const std::filesystem::path file = golden() / name;
+    const std::filesystem::path elsewhere = folder_.path() / (std::string("kept-") + name);
+    std::filesystem::rename(file, elsewhere);
+    std::filesystem::create_symlink(elsewhere, file);
+    const CommandResult result = snapshot(Banner{});
+    EXPECT_EQ(result.exit_code, 2) << name << ": " << result.output;
+    EXPECT_NE(result.output.find(std::string(name) + ": error:"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("is a symbolic link"), std::string::npos) << result.output;
+    std::filesystem::remove(file);
+    std::filesystem::rename(elsewhere, file);
+  }
+}
+
 TEST_F(Snapshot, ABadToleranceFileStopsAtItsLine) {
   write_tolerances("version: 1\nscenes:\n  banner: {min_sim: 0.9}\n");
   const CommandResult result = snapshot(Banner{});
