@@ -6,7 +6,7 @@
 # (or, when assimp itself crashed or hung on it, in tests/fuzz/assimp-failures/), where CTest
 # replays it.
 #
-#   scripts/fuzz.sh [RUNS] [scene|mesh|mesh_wire|cache_manifest]
+#   scripts/fuzz.sh [RUNS] [scene|mesh|mesh_wire|cache_manifest|point_cache|png|tolerance_file]
 #
 # FUZZ_SECONDS=3600 stops each target after that long instead (whichever comes first).
 #
@@ -27,20 +27,26 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=cl
   -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined" \
   >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene_reader fuzz_mesh fuzz_mesh_wire \
-  fuzz_cache_manifest >/dev/null
+  fuzz_cache_manifest fuzz_point_cache fuzz_png fuzz_tolerance_file >/dev/null
 
 # The sanitizers' suppressions are the asan preset's: only leaks inside third-party libraries.
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 corpus=build-fuzz/corpus
-mkdir -p "$corpus/scene" "$corpus/mesh" "$corpus/mesh_wire" "$corpus/cache_manifest" \
-  build-fuzz/artifacts/scene build-fuzz/artifacts/mesh build-fuzz/artifacts/mesh_wire \
-  build-fuzz/artifacts/cache_manifest
+for target in scene mesh mesh_wire cache_manifest point_cache png tolerance_file; do
+  mkdir -p "$corpus/$target" "build-fuzz/artifacts/$target"
+done
 cp scenes/*.yaml tests/fuzz/regressions/scene/* "$corpus/scene/" 2>/dev/null || true
 cp assets/* tests/data/* tests/fuzz/regressions/mesh/* "$corpus/mesh/" 2>/dev/null || true
 cp tests/fuzz/mesh-wire-seeds/* tests/fuzz/regressions/mesh_wire/* "$corpus/mesh_wire/" 2>/dev/null ||
   true
 cp tests/fuzz/manifest-seeds/* tests/fuzz/regressions/cache_manifest/* "$corpus/cache_manifest/" \
   2>/dev/null || true
+cp tests/fuzz/point-cache-seeds/* tests/bad_input/files/billion_frames.mdd \
+  tests/fuzz/regressions/point_cache/* "$corpus/point_cache/" 2>/dev/null || true
+cp tests/data/quad.png tests/bad_input/files/*.png tests/golden/rope_0001.png \
+  tests/fuzz/regressions/png/* "$corpus/png/" 2>/dev/null || true
+cp tests/golden/tolerances.yaml tests/fuzz/tolerance-seeds/* tests/fuzz/regressions/tolerance_file/* \
+  "$corpus/tolerance_file/" 2>/dev/null || true
 
 common=(-runs="$runs" -max_total_time="${FUZZ_SECONDS:-0}" -max_len=65536 -timeout=20 -rss_limit_mb=4096 -print_final_stats=1)
 if [ -z "$only" ] || [ "$only" = scene ]; then
@@ -64,3 +70,10 @@ if [ -z "$only" ] || [ "$only" = cache_manifest ]; then
   build-fuzz/tests/fuzz/fuzz_cache_manifest "${common[@]}" \
     -artifact_prefix=build-fuzz/artifacts/cache_manifest/ "$corpus/cache_manifest"
 fi
+for target in point_cache png tolerance_file; do
+  if [ -z "$only" ] || [ "$only" = "$target" ]; then
+    echo "fuzz.sh: $target, $runs runs"
+    "build-fuzz/tests/fuzz/fuzz_$target" "${common[@]}" \
+      -artifact_prefix="build-fuzz/artifacts/$target/" "$corpus/$target"
+  fi
+done
