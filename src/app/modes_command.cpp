@@ -16,6 +16,7 @@
 #include "cache/motion_cache_writer.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
+#include "core/stop_request.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
 #include "run/frame_source.hpp"
@@ -139,6 +140,9 @@ int run_modes(const ModesOptions& options) {
   request.fps = kCycleFps;
   request.frame_count = kCycleFrames;
   const auto start = Clock::now();
+  // SIGINT and SIGTERM stop the settle and the eigensolver where they check; the cache is written
+  // whole (its temporary folder removed as the run unwinds) or not at all.
+  const StopOnSignals stop_on_signals;
 
   State state = make_state(model, false);
   settle_under_gravity(model, settling_step(model, timestep.dt), {}, state);
@@ -178,6 +182,7 @@ int run_modes(const ModesOptions& options) {
     writer.add_frame(positions);
   }
   write_modes_csv(writer.file_path("modes.csv"), modes, shown_amplitudes);
+  stop_if_asked();  // before the cache takes its name
   CacheManifest manifest;
   manifest.scene_path = canonical_scene_path(scene.source);
   manifest.scene_name = scene.name;

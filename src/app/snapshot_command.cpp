@@ -15,9 +15,10 @@
 #include "app/command_line.hpp"
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
-#include "core/file_kind.hpp"
 #include "core/error.hpp"
+#include "core/file_kind.hpp"
 #include "core/output_file.hpp"
+#include "core/stop_request.hpp"
 #include "dynamics/stability.hpp"
 #include "io/image_compare.hpp"
 #include "io/png_file.hpp"
@@ -205,6 +206,7 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
   }
 
   for (const int frame : chosen) {
+    stop_if_asked();  // between frames: a golden is written whole or not at all
     const auto start = std::chrono::steady_clock::now();
     FrameResult result;
     result.scene = scene.name;
@@ -334,7 +336,8 @@ int run_snapshot(const SnapshotOptions& options) {
     }
   }
   if (options.framing && !(*options.framing >= 0.0 && *options.framing <= 1.0)) {
-    throw_user_error({}, "--framing must be a fraction of the picture from 0 to 1, e.g. 0.5; got {}",
+    throw_user_error({},
+                     "--framing must be a fraction of the picture from 0 to 1, e.g. 0.5; got {}",
                      *options.framing);
   }
   std::error_code ec;
@@ -349,8 +352,24 @@ int run_snapshot(const SnapshotOptions& options) {
   const ToleranceFile tolerances = read_tolerance_file(options.golden);
   std::vector<FrameResult> results;
   std::vector<std::string> names;
-  for (const std::filesystem::path& scene : options.scenes) {
-    names.push_back(check_scene(options, tolerances, scene, results));
+  // SIGINT and SIGTERM stop it between frames: what it wrote is whole, the reports unwritten.
+  const StopOnSignals stop_on_signals;
+  try {
+    for (const std::filesystem::path& scene : options.scenes) {
+      names.push_back(check_scene(options, tolerances, scene, results));
+    }
+    stop_if_asked();
+  } catch (const Interrupted& e) {
+    const auto written = std::count_if(results.begin(), results.end(), [](const FrameResult& r) {
+      return r.outcome == FrameOutcome::kUpdated;
+    });
+    throw Interrupted(
+        e.signal(),
+        fmt::format("{} checked; {}no report written, no file half-written",
+                    counted(static_cast<long long>(results.size()), "frame"),
+                    options.update ? counted(static_cast<long long>(written), "golden image") +
+                                         " written, each whole, the tolerance file as it was; "
+                                   : ""));
   }
   if (options.update) {
     const std::string recorded =

@@ -15,15 +15,17 @@
 #include <string>
 
 #include "app/command_line.hpp"
+#include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "app/three_module.hpp"
 #include "app/viewer_page.hpp"
 #include "cache/motion_cache.hpp"
 #include "core/base64.hpp"
 #include "core/counted.hpp"
-#include "core/file_kind.hpp"
 #include "core/error.hpp"
+#include "core/file_kind.hpp"
 #include "core/output_file.hpp"
+#include "core/stop_request.hpp"
 
 namespace dinam {
 namespace {
@@ -125,13 +127,33 @@ ObjectElements read_elements(const std::filesystem::path& obj, Index first, Inde
 }
 
 // zlib's deflate of `size` bytes, as the browser's DecompressionStream("deflate") inflates them.
+// Fed a megabyte at a time, so that a request to stop is honoured within one (a large cache's
+// frames take seconds to deflate at level 9); the bytes are compress2's whatever the pieces.
 std::string deflated(const void* data, std::size_t size) {
-  uLongf bound = compressBound(static_cast<uLong>(size));
-  std::string out(bound, '\0');
-  const int status = compress2(reinterpret_cast<Bytef*>(out.data()), &bound,
-                               static_cast<const Bytef*>(data), static_cast<uLong>(size), 9);
-  DINAM_CHECK(status == Z_OK);
-  out.resize(bound);
+  constexpr std::size_t kPiece = std::size_t{1} << 20;
+  z_stream stream{};
+  DINAM_CHECK(deflateInit(&stream, 9) == Z_OK);
+  struct Ender {
+    z_stream& stream;
+    ~Ender() { deflateEnd(&stream); }
+  } ender{stream};
+  std::string out(deflateBound(&stream, static_cast<uLong>(size)), '\0');
+  stream.next_out = reinterpret_cast<Bytef*>(out.data());
+  stream.avail_out = static_cast<uInt>(out.size());
+  const auto* bytes = static_cast<const Bytef*>(data);
+  for (std::size_t at = 0;; at += kPiece) {
+    stop_if_asked();
+    const std::size_t piece = std::min(kPiece, size - std::min(at, size));
+    stream.next_in = const_cast<Bytef*>(bytes + std::min(at, size));
+    stream.avail_in = static_cast<uInt>(piece);
+    const bool last = at + piece >= size;
+    const int status = deflate(&stream, last ? Z_FINISH : Z_NO_FLUSH);
+    DINAM_CHECK(last ? status == Z_STREAM_END : status == Z_OK);
+    if (last) {
+      break;
+    }
+  }
+  out.resize(stream.total_out);
   return out;
 }
 
@@ -188,7 +210,10 @@ std::filesystem::path default_view_path(const std::filesystem::path& cache) {
   return folder.string() + ".html";
 }
 
-int run_view(const ViewOptions& options) {
+namespace {
+
+// The page, written whole; Interrupted between frames (run_view says what it left).
+int write_view_page(const ViewOptions& options) {
   const MotionCache cache(options.cache);
   const std::filesystem::path output = options.output.value_or(default_view_path(options.cache));
   check_output_place(output, OutputPlace::kBeside, options.output ? "-o" : "the page");
@@ -270,6 +295,7 @@ int run_view(const ViewOptions& options) {
   packed.reserve(frames.size() * n * 6);
   std::vector<std::uint16_t> before(3 * n, 0);
   for (const int frame : frames) {
+    stop_if_asked();
     const std::vector<std::vector<Vec3f>> read = cache.read_frames(frame, frame);
     const std::vector<Vec3f>& at = read.front();
     for (int c = 0; c < 3; ++c) {
@@ -286,6 +312,7 @@ int run_view(const ViewOptions& options) {
     }
   }
 
+  stop_if_asked();
   std::string page = viewer_page_template();
   // Each part deflated and in base64, which holds no '<' (so no "</script>" can end its element
   // early, whatever an object's name). Names not UTF-8 are shown with U+FFFD.
@@ -294,6 +321,7 @@ int run_view(const ViewOptions& options) {
   replace_once(page, "/*DINAM_FRAMES*/", deflated_base64(packed.data(), packed.size()));
   const std::string three = three_module_source();
   replace_once(page, "/*DINAM_THREE*/", deflated_base64(three.data(), three.size()));
+  stop_if_asked();  // the last chance before the page takes its name
   write_output_file(output, page, "the viewer page");
   if (!options.quiet) {
     fmt::print("dinam: {} of {} in {} ({:.1f} MB); open it in a web browser\n",
@@ -301,6 +329,18 @@ int run_view(const ViewOptions& options) {
                output.string(), static_cast<double>(page.size()) / 1e6);
   }
   return kExitOk;
+}
+
+}  // namespace
+
+int run_view(const ViewOptions& options) {
+  // SIGINT and SIGTERM stop it while it reads the cache: the page is written whole or not at all.
+  const StopOnSignals stop_on_signals;
+  try {
+    return write_view_page(options);
+  } catch (const Interrupted& e) {
+    throw Interrupted(e.signal(), "no page was written (a page there before is as it was)");
+  }
 }
 
 Command add_view_command(CLI::App& app) {

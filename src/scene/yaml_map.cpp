@@ -311,7 +311,11 @@ YAML::Node YamlMap::get(const std::string& key) {
   if (not_a_map_) {
     return YAML::Node(YAML::NodeType::Undefined);  // indexing a scalar would make it a map
   }
-  return node_[key];
+  // Looked up through a const node: yaml-cpp's non-const operator[] adds a pair for a key it lacks,
+  // which would invalidate an iteration over the same map (a tolerance file whose scene key is
+  // null, found by fuzzing, read freed memory).
+  const YAML::Node& map = node_;
+  return map[key];
 }
 
 YAML::Node YamlMap::required(const std::string& key) {

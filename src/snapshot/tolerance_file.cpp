@@ -116,6 +116,12 @@ ToleranceLevel read_level(YamlMap& map, std::map<int, ToleranceLevel>* frames) {
   }
   if (frames != nullptr && map.has("frames")) {
     const YAML::Node node = map.get("frames");
+    if (!node.IsMap()) {
+      throw UserError(map.loc("frames"),
+                      fmt::format("'{}' must be a map of frame numbers to their limits, e.g. "
+                                  "{{120: {{max_differing: 0.01}}}}",
+                                  map.path("frames")));
+    }
     YamlMap frame_map(node, file, map.path("frames"));
     for (const auto& entry : node) {
       const std::string key = entry.first.Scalar();
@@ -226,8 +232,18 @@ ToleranceFile read_tolerance_file(const std::filesystem::path& folder) {
   }
   if (top.has("scenes")) {
     const YAML::Node scenes = top.get("scenes");
+    if (!scenes.IsMap() && !scenes.IsNull()) {
+      throw UserError(top.loc("scenes"),
+                      "'scenes' must be a map of scene names to their limits, e.g. "
+                      "{flag: {min_ssim: 0.98}}");
+    }
     YamlMap scene_map(scenes, name, "scenes");
     for (const auto& entry : scenes) {
+      if (!entry.first.IsScalar() || entry.first.Scalar().empty()) {
+        throw UserError(loc_of(entry.first, name),
+                        "a scene under 'scenes' is named by its name as text (its 'name', or "
+                        "its file's name), not an empty key, a list or a map");
+      }
       const std::string scene = entry.first.Scalar();
       scene_map.get(scene);
       SceneTolerances& tolerances = file.scenes[scene];

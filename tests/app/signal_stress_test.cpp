@@ -1,8 +1,9 @@
-// SIGINT and SIGTERM at random instants: 200 signals (50 for each of simulate and render with
-// each integrator) land wherever a run happens to be — reading the scene, importing a mesh in
-// its child process, building the model, settling, stepping, drawing, encoding. Every run must
-// stop (none may go on to its end: each would take minutes), end by that signal, and leave no
-// final output, no temporary file and no process of its own behind.
+// SIGINT and SIGTERM at random instants: 300 signals (50 for each of simulate and render with
+// each integrator, snapshot --update and view) land wherever a run happens to be — reading the
+// scene, importing a mesh in its child process, building the model, settling, stepping, drawing,
+// encoding, writing goldens, reading a cache into a page. Every run must stop (none may go on to
+// its end: each would take minutes), end by that signal, and leave no final output it had not
+// finished, no temporary file and no process of its own behind.
 //
 // How soon it stops is not timed here (a clock in a test fails on a busy machine):
 // bench/signal_latency.cpp measures it. The hang bound below only tells a stopped run from one
@@ -20,6 +21,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/png_file.hpp"
 #include "test_support.hpp"
 
 namespace dinam {
@@ -135,12 +137,21 @@ class SignalStress : public ::testing::Test {
       const std::filesystem::path run = folder_.path() / (command + "_" + std::to_string(k));
       std::filesystem::create_directories(run);
       const std::filesystem::path output = run / (command == "simulate" ? "cache" : "out");
-      const std::vector<std::string> arguments =
+      const std::filesystem::path golden = run / "golden";
+      std::vector<std::string> arguments =
           command == "simulate"
               ? std::vector<std::string>{"simulate", scene.string(), "-o", output.string(),
                                          "--force"}
               : std::vector<std::string>{"render", scene.string(), "-o",     output.string(),
                                          "--size", "160x90",       "--force"};
+      if (command == "snapshot") {
+        arguments = {"snapshot", scene.string(), "--golden",     golden.string(),
+                     "--update", "--size",       "160x90",       "--frames",
+                     "1-8000",   "-o",           output.string()};
+      } else if (command == "view") {
+        arguments = {"view", (folder_.path() / "cache").string(), "-o",
+                     (output / "page.html").string()};
+      }
       const pid_t pid = test::spawn_dinam(arguments, run / "log");
       ASSERT_NE(pid, 0);
       std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
@@ -175,6 +186,30 @@ class SignalStress : public ::testing::Test {
         EXPECT_FALSE(std::filesystem::exists(output)) << "a cache was left; " << what;
         EXPECT_EQ(test::folder_entries(run), std::vector<std::string>{"log"})
             << "a temporary folder was left; " << what;
+      } else if (command == "snapshot") {
+        // The goldens written are whole pictures, none half-written; no report.
+        EXPECT_EQ(test::temporary_files_in(golden), std::vector<std::string>{}) << what;
+        EXPECT_EQ(test::temporary_files_in(output), std::vector<std::string>{}) << what;
+        std::error_code ec;
+        for (const auto& entry : std::filesystem::directory_iterator(golden, ec)) {
+          if (entry.path().extension() == ".png") {
+            EXPECT_NO_THROW(read_png(entry.path())) << entry.path() << "; " << what;
+          }
+        }
+        if (handled) {
+          EXPECT_NE(log.find(" written, each whole"), std::string::npos) << what;
+        }
+      } else if (command == "view") {
+        // A signal after the page took its name (the run's last moments) leaves it whole.
+        if (std::filesystem::exists(output / "page.html")) {
+          const std::string page = read_text(output / "page.html");
+          EXPECT_NE(page.rfind("</html>"), std::string::npos) << "a page cut short; " << what;
+        }
+        EXPECT_EQ(test::temporary_files_in(output), std::vector<std::string>{}) << what;
+        if (handled) {
+          EXPECT_NE(log.find("no page was written"), std::string::npos) << what;
+          EXPECT_FALSE(std::filesystem::exists(output / "page.html")) << what;
+        }
       } else {
         EXPECT_FALSE(std::filesystem::exists(output / "stress.mp4")) << what;
         EXPECT_EQ(test::temporary_files_in(output), std::vector<std::string>{}) << what;
@@ -209,6 +244,30 @@ TEST_F(SignalStress, RenderWithTheImplicitIntegrator) {
 
 TEST_F(SignalStress, RenderWhileDrawingAndEncoding) {
   stop_at_random("render", kLongDrawing);
+}
+
+// 8000 frames of a rope simulated in a moment, each drawn and written as a golden.
+TEST_F(SignalStress, SnapshotUpdateWhileWritingGoldens) {
+  stop_at_random("snapshot", kLongDrawing);
+}
+
+// A cache of a 60 × 60 cloth over 400 frames, which `view` takes seconds to read and pack.
+TEST_F(SignalStress, ViewWhileReadingTheCache) {
+  const std::filesystem::path scene = folder_.path() / "cloth.yaml";
+  std::ofstream(scene) << R"(version: 1
+name: big
+duration: 20
+fps: 20
+objects:
+  - name: cloth
+    mesh: {grid: {width: 1, height: 1, columns: 60, rows: 60}, rotation: [90, 0, 0]}
+    material: {density: 1000, youngs_modulus: 1.0e5, radius: 0.002}
+    pinned: {box: {min: [-1, -1, 0.49], max: [1, 1, 0.51]}}
+)";
+  const test::CommandResult made = test::run_dinam(
+      {"simulate", scene.string(), "-o", (folder_.path() / "cache").string(), "--quiet"});
+  ASSERT_EQ(made.exit_code, 0) << made.output;
+  stop_at_random("view", "");
 }
 
 }  // namespace

@@ -21,10 +21,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         format == dinam::PointCacheFormat::kPc2 ? "input.pc2" : "input.mdd", data, size);
     try {
       const dinam::PointCacheHeader header = dinam::read_point_cache_header(path, format);
-      std::ifstream in(path, std::ios::binary);
-      std::vector<dinam::Vec3f> points(static_cast<std::size_t>(header.point_count));
-      for (std::int32_t s = 0; s < std::min(header.sample_count, 64); ++s) {
-        dinam::read_point_cache_sample(in, path, header, s, points.data());
+      // A sample's points are made only where the file holds a sample (the header's claim is
+      // checked against its size): a header of no samples may claim any point count, as a
+      // reader that needs none never makes them.
+      if (header.sample_count > 0) {
+        std::ifstream in(path, std::ios::binary);
+        std::vector<dinam::Vec3f> points(static_cast<std::size_t>(header.point_count));
+        for (std::int32_t s = 0; s < std::min(header.sample_count, 64); ++s) {
+          dinam::read_point_cache_sample(in, path, header, s, points.data());
+        }
       }
     } catch (const dinam::UserError&) {
     }
