@@ -74,6 +74,9 @@ const std::map<std::string, std::pair<std::string, std::string>> kLookEdits = {
     {"objects[].style", {"style: surface", "style: both"}},
     {"objects[].joints", {"joints: true", "joints: false"}},
     {"objects[].subdivide", {"joints: true", "joints: true\n    subdivide: 3"}},
+    {"objects[].shading", {"joints: true", "joints: true\n    shading: flat"}},
+    {"objects[].sharp_angle",
+     {"joints: true", "joints: true\n    shading: auto\n    sharp_angle: 45"}},
     {"objects[].texture", {"    texture: quad.png\n", ""}},
     {"objects[].finish", {"finish: cloth", "finish: {like: metal, roughness: 0.2}"}},
 };
