@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <exception>
 #include <map>
@@ -121,7 +122,10 @@ std::optional<double> in_si_units(const std::string& text) {
   } else {
     return std::nullopt;
   }
-  return std::stod(match[1].str()) * scale;
+  // strtod, not stod: a number past double's range ("6666666666666E66666 m", found by fuzzing)
+  // is no number here, rather than an exception nothing catches.
+  const double value = std::strtod(match[1].str().c_str(), nullptr) * scale;
+  return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
 }
 
 double as_double(const YAML::Node& node, const std::string& file, const std::string& what) {
