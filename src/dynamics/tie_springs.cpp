@@ -53,11 +53,16 @@ std::array<Vec3, 4> positions_of(const Model& model, const std::vector<Vec3>& x,
   return {x[nodes[0]], x[nodes[1]], x[nodes[2]], x[nodes[3]]};
 }
 
-double stretch(const Model& model, const std::vector<Vec3>& x, Index t) {
-  const std::array<Vec3, 4> at = positions_of(model, x, t);
+// d = x − p − o of tie t at positions `x`: the node's way from where the tie holds it.
+Vec3 separation(const Model& model, const std::vector<Vec3>& x, Index t) {
+  const Index* nodes = &model.ties.nodes[4 * static_cast<std::size_t>(t)];
   const double* w = &model.ties.weights[3 * static_cast<std::size_t>(t)];
-  const Vec3 d = at[0] - (w[0] * at[1] + w[1] * at[2] + w[2] * at[3]) - model.ties.offset[t];
-  return d.norm() - model.ties.rest_length[t];
+  return x[nodes[0]] - (w[0] * x[nodes[1]] + w[1] * x[nodes[2]] + w[2] * x[nodes[3]]) -
+         model.ties.offset[t];
+}
+
+double stretch(const Model& model, const std::vector<Vec3>& x, Index t) {
+  return separation(model, x, t).norm() - model.ties.rest_length[t];
 }
 
 double tie_energy(const Model& model, const State& state) {
@@ -111,8 +116,7 @@ void project_ties(const Model& model, double h, int sweep, State& state) {
     }
     const Index* nodes = &ties.nodes[4 * static_cast<std::size_t>(t)];
     const double* w = &ties.weights[3 * static_cast<std::size_t>(t)];
-    const Vec3 d = x[nodes[0]] - (w[0] * x[nodes[1]] + w[1] * x[nodes[2]] + w[2] * x[nodes[3]]) -
-                   ties.offset[t];
+    const Vec3 d = separation(model, x, t);
     const double r = d.norm();
     if (!(r > 0.0)) {
       continue;
