@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -79,6 +80,11 @@ inline void expect_contains(const std::string& text, std::initializer_list<std::
   for (const std::string& fragment : fragments) {
     EXPECT_NE(text.find(fragment), std::string::npos) << "lacks '" << fragment << "': " << text;
   }
+}
+
+// Writes `text` as the whole of the file `path`.
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
 }
 
 // The names of everything directly in `folder`, sorted.

@@ -16,7 +16,6 @@
 #include "app/command_support.hpp"
 #include "app/commands.hpp"
 #include "core/error.hpp"
-#include "core/file_kind.hpp"
 #include "core/output_file.hpp"
 #include "core/stop_request.hpp"
 #include "dynamics/stability.hpp"
@@ -257,8 +256,7 @@ std::string check_scene(const SnapshotOptions& options, const ToleranceFile& tol
       result.detail =
           fmt::format("no golden image {}; run with --update to create it", golden.string());
     } else {
-      require_regular_file(golden, "the golden image");
-      result.expected = read_png(golden);
+      result.expected = read_regular_png(golden, "the golden image");
       result.has_regions = !tolerance.regions.empty();
       const std::vector<float> weights =
           region_weights(tolerance.regions, result.actual.width, result.actual.height,

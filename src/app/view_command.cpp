@@ -23,8 +23,8 @@
 #include "core/base64.hpp"
 #include "core/counted.hpp"
 #include "core/error.hpp"
-#include "core/file_kind.hpp"
 #include "core/output_file.hpp"
+#include "core/regular_file.hpp"
 #include "core/stop_request.hpp"
 
 namespace dinam {
@@ -62,11 +62,10 @@ Index parse_id(const std::filesystem::path& obj, int number, const std::string& 
 }
 
 ObjectElements read_elements(const std::filesystem::path& obj, Index first, Index count) {
-  require_regular_file(obj, "the cache's rest mesh");
-  std::ifstream in(obj);
+  RegularFileIn in(obj, "the cache's rest mesh");
   if (!in) {
     throw_user_error(FileLoc{obj.string()}, "cannot read the cache's rest mesh: {}",
-                     std::strerror(errno));
+                     std::strerror(in.open_error()));
   }
   ObjectElements elements;
   bool every_corner_has_uv = true;
@@ -165,11 +164,10 @@ std::string deflated_base64(const void* data, std::size_t size) {
 
 // A texture of the cache as a data URL the page loads without the network.
 std::string texture_data_url(const std::filesystem::path& file) {
-  require_regular_file(file, "the cache's texture");
-  std::ifstream in(file, std::ios::binary);
+  RegularFileIn in(file, "the cache's texture");
   if (!in) {
     throw_user_error(FileLoc{file.string()}, "cannot read the cache's texture: {}; simulate again",
-                     std::strerror(errno));
+                     std::strerror(in.open_error()));
   }
   const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   return "data:image/png;base64," + base64(bytes.data(), bytes.size());

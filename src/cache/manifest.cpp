@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/file_kind.hpp"
 #include "core/error.hpp"
 #include "core/output_file.hpp"
+#include "core/regular_file.hpp"
 
 namespace dinam {
 namespace {
@@ -182,8 +182,7 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
 }
 
 CacheManifest read_manifest(const std::filesystem::path& path) {
-  require_regular_file(path, "the cache's manifest");
-  std::ifstream in(path, std::ios::binary);
+  RegularFileIn in(path, "the cache's manifest");
   if (!in) {
     throw UserError(FileLoc{path.string()},
                     "there is no manifest.json here, so this folder is not a complete motion "

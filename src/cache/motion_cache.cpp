@@ -2,11 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <cstring>
 #include <fstream>
 #include <map>
 
-#include "core/file_kind.hpp"
 #include "core/error.hpp"
+#include "core/regular_file.hpp"
 #include "core/version.hpp"
 #include "model/model.hpp"
 
@@ -49,6 +50,17 @@ std::string settings_difference(const std::vector<MotionSetting>& cached,
   return text;
 }
 
+// A point cache of the cache's folder, opened without following a link.
+PointCacheHeader read_cache_header(const std::filesystem::path& path, PointCacheFormat format,
+                                   const std::string& what) {
+  RegularFileIn in(path, what);
+  if (!in) {
+    throw UserError(FileLoc{path.string()}, fmt::format("cannot open {}: {}; simulate again", what,
+                                                        std::strerror(in.open_error())));
+  }
+  return read_point_cache_header(in, in.size(), path, format);
+}
+
 }  // namespace
 
 MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folder)) {
@@ -71,9 +83,9 @@ MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folde
     const bool pc2 = !entry.pc2.empty();
     ObjectCache cache;
     cache.path = folder_ / (pc2 ? entry.pc2 : entry.mdd);
-    require_regular_file(cache.path, "the cache's point cache");
     cache.header =
-        read_point_cache_header(cache.path, pc2 ? PointCacheFormat::kPc2 : PointCacheFormat::kMdd);
+        read_cache_header(cache.path, pc2 ? PointCacheFormat::kPc2 : PointCacheFormat::kMdd,
+                          "the cache's point cache");
     if (cache.header.point_count != entry.node_count ||
         cache.header.sample_count != manifest_.frame_count) {
       throw UserError(FileLoc{cache.path.string()},
@@ -86,8 +98,8 @@ MotionCache::MotionCache(std::filesystem::path folder) : folder_(std::move(folde
   }
   if (manifest_.instants.per_frame > 0) {
     instants_.path = folder_ / manifest_.instants.pc2;
-    require_regular_file(instants_.path, "the cache's motion blur instants");
-    instants_.header = read_point_cache_header(instants_.path, PointCacheFormat::kPc2);
+    instants_.header = read_cache_header(instants_.path, PointCacheFormat::kPc2,
+                                         "the cache's motion blur instants");
     if (instants_.header.point_count != manifest_.node_count ||
         instants_.header.sample_count != manifest_.instants.per_frame * manifest_.frame_count) {
       throw UserError(FileLoc{instants_.path.string()},
@@ -160,7 +172,7 @@ std::vector<std::vector<Vec3f>> MotionCache::read_frames(int first, int last) co
                                          std::vector<Vec3f>(manifest_.node_count));
   for (std::size_t o = 0; o < objects_.size(); ++o) {
     const ObjectCache& cache = objects_[o];
-    std::ifstream in(cache.path, std::ios::binary);
+    RegularFileIn in(cache.path, "the cache's point cache");
     for (int frame = first; frame <= last; ++frame) {
       std::vector<Vec3f>& positions = frames[static_cast<std::size_t>(frame - first)];
       read_point_cache_sample(in, cache.path, cache.header, frame - 1,
@@ -176,7 +188,7 @@ std::vector<std::vector<Vec3f>> MotionCache::read_instants(int first, int last) 
   const int per_frame = manifest_.instants.per_frame;
   std::vector<std::vector<Vec3f>> instants(static_cast<std::size_t>((last - first + 1) * per_frame),
                                            std::vector<Vec3f>(manifest_.node_count));
-  std::ifstream in(instants_.path, std::ios::binary);
+  RegularFileIn in(instants_.path, "the cache's motion blur instants");
   for (std::size_t i = 0; i < instants.size(); ++i) {
     read_point_cache_sample(in, instants_.path, instants_.header,
                             (first - 1) * per_frame + static_cast<std::int32_t>(i),

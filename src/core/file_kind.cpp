@@ -2,8 +2,6 @@
 
 #include <sys/stat.h>
 
-#include "core/error.hpp"
-
 namespace dinam {
 
 // What a name that exists is, in the words of a message; empty for a regular file or no file.
@@ -31,17 +29,6 @@ std::string file_kind_of(const std::filesystem::path& path, bool folder_wanted) 
     return "a socket";
   }
   return "a device or special file";
-}
-
-void require_regular_file(const std::filesystem::path& path, const std::string& what) {
-  const std::string kind = file_kind_of(path, false);
-  if (kind.empty()) {
-    return;
-  }
-  throw_user_error(FileLoc{path.string()},
-                   "{} is {}: dinam reads it only as a regular file of its folder, never through a "
-                   "link, which could lead to any file of the machine; put the file itself there",
-                   what, kind);
 }
 
 }  // namespace dinam

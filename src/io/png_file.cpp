@@ -1,6 +1,8 @@
 #include "io/png_file.hpp"
 
 #include <png.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +18,7 @@
 #include "core/error.hpp"
 #include "core/memory_budget.hpp"
 #include "core/output_file.hpp"
+#include "core/regular_file.hpp"
 
 namespace dinam {
 namespace {
@@ -118,8 +121,9 @@ namespace {
 // cut-off file caused).
 // `most_bytes` bounds the decoded pixels (8-bit RGBA) the header may claim: beyond it the rows are
 // never allocated, and `claimed` holds the width and height the header gave.
-bool read_rows(std::FILE* file, std::uint64_t most_bytes, Image& image, std::vector<png_bytep>& rows,
-               std::array<std::uint64_t, 2>& claimed, std::string& error) {
+bool read_rows(std::FILE* file, std::uint64_t most_bytes, Image& image,
+               std::vector<png_bytep>& rows, std::array<std::uint64_t, 2>& claimed,
+               std::string& error) {
   png_structp png =
       png_create_read_struct(PNG_LIBPNG_VER_STRING, &error, on_png_error, on_png_warning);
   if (png == nullptr) {
@@ -158,10 +162,8 @@ bool read_rows(std::FILE* file, std::uint64_t most_bytes, Image& image, std::vec
   return true;
 }
 
-}  // namespace
-
-Image read_png(const std::filesystem::path& path) {
-  FilePtr file(std::fopen(path.c_str(), "rb"));
+// Reads the PNG `file` (null where it could not be opened) that `path` names.
+Image read_png_file(FilePtr file, const std::filesystem::path& path) {
   if (!file) {
     throw RuntimeError(fmt::format("cannot open {}: {}", path.string(), std::strerror(errno)));
   }
@@ -173,9 +175,10 @@ Image read_png(const std::filesystem::path& path) {
   // 1032 bytes into one, for a picture of one colour), nor than half the memory available. A
   // 16 kB file whose header says 65 535 × 65 535 would otherwise be given 17 GB before a row of
   // it is read.
-  std::error_code ec;
-  const std::uint64_t file_bytes = std::filesystem::file_size(path, ec);
-  std::uint64_t most = kDeflateMostRatio * (ec ? 0 : file_bytes) + (1u << 20);
+  struct stat info {};
+  const std::uint64_t file_bytes =
+      ::fstat(::fileno(file.get()), &info) == 0 ? static_cast<std::uint64_t>(info.st_size) : 0;
+  std::uint64_t most = kDeflateMostRatio * file_bytes + (1u << 20);
   if (const MemoryBudget budget = available_memory(); budget.bytes > 0) {
     most = std::min(most, budget.bytes / 2);
   }
@@ -186,16 +189,31 @@ Image read_png(const std::filesystem::path& path) {
   std::rewind(file.get());
   if (!read_rows(file.get(), most, image, rows, claimed, error)) {
     if (const std::uint64_t bytes = claimed[0] * claimed[1] * 4; bytes > most) {
-      throw UserError(FileLoc{path.string()},
-                      fmt::format("its header claims {} × {} pixels ({} decoded), more than its "
-                                  "{} bytes can hold or the memory allows ({} at most): a damaged "
-                                  "or forged PNG",
-                                  claimed[0], claimed[1], byte_size(bytes), file_bytes,
-                                  byte_size(most)));
+      throw UserError(
+          FileLoc{path.string()},
+          fmt::format("its header claims {} × {} pixels ({} decoded), more than its "
+                      "{} bytes can hold or the memory allows ({} at most): a damaged "
+                      "or forged PNG",
+                      claimed[0], claimed[1], byte_size(bytes), file_bytes, byte_size(most)));
     }
     throw RuntimeError(fmt::format("cannot read {}: {}", path.string(), error));
   }
   return image;
+}
+
+}  // namespace
+
+Image read_png(const std::filesystem::path& path) {
+  return read_png_file(FilePtr(std::fopen(path.c_str(), "rb")), path);
+}
+
+Image read_regular_png(const std::filesystem::path& path, const std::string& what) {
+  const int fd = open_regular_file(path, what);
+  FilePtr file(fd < 0 ? nullptr : ::fdopen(fd, "rb"));
+  if (fd >= 0 && !file) {
+    ::close(fd);
+  }
+  return read_png_file(std::move(file), path);
 }
 
 }  // namespace dinam

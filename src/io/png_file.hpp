@@ -25,4 +25,8 @@ std::string png_bytes(const Image& image, const PngOptions& options = {});
 // Reads any 8-bit PNG as RGBA. Throws RuntimeError naming the path on failure.
 Image read_png(const std::filesystem::path& path);
 
+// The same for a file read only as a regular file of its folder, never through a link (a golden
+// image): `what` names it in the message that refuses a link or a special file.
+Image read_regular_png(const std::filesystem::path& path, const std::string& what);
+
 }  // namespace dinam

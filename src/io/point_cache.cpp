@@ -127,6 +127,14 @@ PointCacheHeader read_point_cache_header(const std::filesystem::path& path, Poin
     throw_bad_cache(path, fmt::format("cannot open the point cache: {}", std::strerror(errno)),
                     remedy);
   }
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  return read_point_cache_header(in, ec ? 0 : size, path, format, remedy);
+}
+
+PointCacheHeader read_point_cache_header(std::istream& in, std::uintmax_t size,
+                                         const std::filesystem::path& path, PointCacheFormat format,
+                                         const char* remedy) {
   PointCacheHeader header;
   header.format = format;
   std::array<char, kPc2HeaderBytes> bytes{};
@@ -157,19 +165,16 @@ PointCacheHeader read_point_cache_header(const std::filesystem::path& path, Poin
   // a file of a few bytes that claims a billion frames would otherwise have its table of times
   // (or a track) allocated first. The claim is reckoned in long double: 12 bytes × 2³¹ points ×
   // 2³¹ samples overflows 64 bits.
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  const long double claimed =
-      static_cast<long double>(header.header_bytes()) +
-      static_cast<long double>(header.sample_count) * 12.0L *
-          static_cast<long double>(header.point_count);
-  if (ec || static_cast<long double>(size) != claimed) {
-    throw_bad_cache(path,
-                    fmt::format("the file has {} bytes where its header promises {:.0f} ({} "
-                                "samples of {} points)",
-                                ec ? 0 : size, static_cast<double>(claimed), header.sample_count,
-                                header.point_count),
-                    remedy);
+  const long double claimed = static_cast<long double>(header.header_bytes()) +
+                              static_cast<long double>(header.sample_count) * 12.0L *
+                                  static_cast<long double>(header.point_count);
+  if (static_cast<long double>(size) != claimed) {
+    throw_bad_cache(
+        path,
+        fmt::format("the file has {} bytes where its header promises {:.0f} ({} "
+                    "samples of {} points)",
+                    size, static_cast<double>(claimed), header.sample_count, header.point_count),
+        remedy);
   }
   if (format == PointCacheFormat::kMdd) {
     std::vector<char> times(4 * static_cast<std::size_t>(header.sample_count));
@@ -184,7 +189,7 @@ PointCacheHeader read_point_cache_header(const std::filesystem::path& path, Poin
   return header;
 }
 
-void read_point_cache_sample(std::ifstream& in, const std::filesystem::path& path,
+void read_point_cache_sample(std::istream& in, const std::filesystem::path& path,
                              const PointCacheHeader& header, std::int32_t sample, Vec3f* points,
                              const char* remedy) {
   DINAM_CHECK(sample >= 0 && sample < header.sample_count);

@@ -72,9 +72,15 @@ inline constexpr const char* kExportAgain =
 PointCacheHeader read_point_cache_header(const std::filesystem::path& path, PointCacheFormat format,
                                          const char* remedy = kSimulateAgain);
 
+// The same from a stream already open on `path`, the file being `size` bytes long: a cache's file,
+// opened without following a link (core/regular_file.hpp).
+PointCacheHeader read_point_cache_header(std::istream& in, std::uintmax_t size,
+                                         const std::filesystem::path& path, PointCacheFormat format,
+                                         const char* remedy = kSimulateAgain);
+
 // Reads sample `sample` (0-based) into `points` (header.point_count positions). Throws UserError
 // naming the file, and then `remedy`, when it cannot be read.
-void read_point_cache_sample(std::ifstream& in, const std::filesystem::path& path,
+void read_point_cache_sample(std::istream& in, const std::filesystem::path& path,
                              const PointCacheHeader& header, std::int32_t sample, Vec3f* points,
                              const char* remedy = kSimulateAgain);
 

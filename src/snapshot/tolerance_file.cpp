@@ -6,8 +6,8 @@
 #include <sstream>
 #include <system_error>
 
-#include "core/file_kind.hpp"
 #include "core/output_file.hpp"
+#include "core/regular_file.hpp"
 #include "scene/yaml_map.hpp"
 
 namespace dinam {
@@ -153,8 +153,7 @@ void apply(const ToleranceLevel& level, FrameTolerance& tolerance) {
 }
 
 std::string read_text(const std::filesystem::path& path) {
-  require_regular_file(path, "the tolerance file");
-  std::ifstream in(path);
+  RegularFileIn in(path, "the tolerance file");
   if (!in) {
     throw UserError(FileLoc{path.string()}, "cannot open the tolerance file");
   }

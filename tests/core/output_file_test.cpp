@@ -18,10 +18,6 @@ std::string contents(const std::filesystem::path& path) {
   return text.str();
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
-
 TEST(OutputFile, AFinishedFileIsRenamedIntoPlaceAndNothingElseIsLeft) {
   const test::TemporaryFolder folder("output-file");
   const std::filesystem::path path = folder.path() / "energy.csv";
@@ -48,7 +44,7 @@ TEST(OutputFile, AnUnfinishedFileLeavesNothing) {
 TEST(OutputFile, NeverWritesThroughALinkPlantedUnderATemporaryName) {
   const test::TemporaryFolder folder("output-file");
   const std::filesystem::path victim = folder.path() / "victim.txt";
-  write_text(victim, "precious");
+  test::write_text(victim, "precious");
   const std::filesystem::path out = folder.path() / "out";
   std::filesystem::create_directory(out);
   for (const char* name : {"frame.png.tmp", "frame.png.part", "frame.png.tmp-1"}) {
@@ -66,7 +62,7 @@ TEST(OutputFile, NeverWritesThroughALinkPlantedUnderATemporaryName) {
 TEST(OutputFile, AFinalNameThatIsALinkOrASpecialFileIsRefusedNeverFollowed) {
   const test::TemporaryFolder folder("output-file");
   const std::filesystem::path victim = folder.path() / "victim.txt";
-  write_text(victim, "precious");
+  test::write_text(victim, "precious");
   const std::filesystem::path link = folder.path() / "movie.mp4";
   std::filesystem::create_symlink(victim, link);
   test::expect_user_error([&] { write_output_file(link, "movie"); }, 0,
@@ -88,7 +84,7 @@ TEST(OutputFile, AFinalNameThatIsALinkOrASpecialFileIsRefusedNeverFollowed) {
 TEST(OutputFile, AFinalNameMadeALinkWhileWritingIsRefusedAtTheRename) {
   const test::TemporaryFolder folder("output-file");
   const std::filesystem::path victim = folder.path() / "victim.txt";
-  write_text(victim, "precious");
+  test::write_text(victim, "precious");
   const std::filesystem::path path = folder.path() / "manifest.json";
   OutputFile file(path);
   std::fputs("{}", file.stream());
