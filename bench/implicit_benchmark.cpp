@@ -26,9 +26,9 @@
 #include "core/thread_team.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/stability.hpp"
+#include "estimate/implicit_cost.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/implicit_cost.hpp"
 #include "solver/implicit_integrator.hpp"
 #include "solver/positive_definite_solver.hpp"
 #include "solver/potential.hpp"
@@ -85,8 +85,8 @@ double seconds_each(const Work& work) {
   return seconds_since(start) / repeats;
 }
 
-// What the implicit integrator's cost estimate (src/solver/implicit_cost.hpp) is made of, measured
-// at the scene's initial state, one thread.
+// What the implicit integrator's cost estimate (src/estimate/implicit_cost.hpp) is made of,
+// measured at the scene's initial state, one thread.
 void print_costs(SceneDescription scene) {
   scene.integrator = IntegratorKind::kImplicit;
   const Model model = build_model(scene);

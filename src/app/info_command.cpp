@@ -18,15 +18,16 @@
 #include "core/counted.hpp"
 #include "core/thread_governor.hpp"
 #include "dynamics/stability.hpp"
+#include "estimate/integrator_choice.hpp"
+#include "estimate/integrator_estimates.hpp"
+#include "estimate/memory_estimate.hpp"
+#include "estimate/run_estimate.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
-#include "run/memory_estimate.hpp"
 #include "scene/material_presets.hpp"
 #include "scene/scene_description.hpp"
 #include "solver/implicit_damping.hpp"
 #include "stepping/central_difference_stepper.hpp"
-#include "stepping/integrator_choice.hpp"
-#include "stepping/run_estimate.hpp"
 #include "stepping/stepper_kind.hpp"
 #include "stepping/time_step.hpp"
 
@@ -302,11 +303,12 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
         "machine as busy as it is; on an idle one, {}\n",
         duration_text(run.measured.seconds_per_step * static_cast<double>(run.estimate.steps)),
         1e3 * run.measured.seconds_per_step,
-        stepper_kind(model).run_time_note(model, run.estimate));
+        integrator_estimate(stepper_kind(model)).run_time_note(model, run.estimate));
   } else {
-    fmt::print("run time         {}\n", stepper_kind(model).run_time_note(model, run.estimate));
+    fmt::print("run time         {}\n",
+               integrator_estimate(stepper_kind(model)).run_time_note(model, run.estimate));
   }
-  if (stepper_kind(model).step_can_be_timed) {
+  if (integrator_estimate(stepper_kind(model)).step_can_be_timed) {
     if (run.measured.steps > 0) {
       fmt::print(
           "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "
@@ -345,8 +347,9 @@ int run_info(const std::filesystem::path& scene_path, bool json, const ThreadCho
   // step) does not measure.
   const RunFigures run{
       estimate_run(scene, model, timestep, thread_policy().most),
-      !stepper_kind(model).step_can_be_timed || !room_for_a_run ? MeasuredStep{}
-                                                                : measure_step_now(model, timestep),
+      !integrator_estimate(stepper_kind(model)).step_can_be_timed || !room_for_a_run
+          ? MeasuredStep{}
+          : measure_step_now(model, timestep),
       threads, compare_integrators(scene, model, thread_policy().most, room_for_another_model)};
   Index pinned = 0;
   for (Index i = 0; i < model.node_count(); ++i) {

@@ -8,10 +8,10 @@
 #include "app/command_support.hpp"
 #include "core/error.hpp"
 #include "core/thread_governor.hpp"
+#include "estimate/memory_estimate.hpp"
+#include "estimate/run_estimate.hpp"
 #include "run/energy_csv.hpp"
-#include "run/memory_estimate.hpp"
 #include "run/progress.hpp"
-#include "stepping/run_estimate.hpp"
 #include "stepping/time_step.hpp"
 #include "visual/draw_list_from_model.hpp"
 

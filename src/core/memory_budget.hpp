@@ -1,6 +1,6 @@
 #pragma once
 // How much memory this process may still take, from what the system and its cgroup say (and the
-// user's own limit): the budget the memory estimate (run/memory_estimate.hpp) is held to.
+// user's own limit): the budget the memory estimate (estimate/memory_estimate.hpp) is held to.
 #include <cstdint>
 #include <string>
 

@@ -8,6 +8,7 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/spring_block.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -91,8 +92,8 @@ const SpringKind kAxialSprings{
     .plastic_set = &State::bar_plastic_set,
     .flow = &EnergyWorkspace::bar_flow,
     .broken = &State::bar_broken,
-    .ns_per_item = 5.5,
-    .ns_per_item_yielding = 6.6,
+    .ns_per_item = measured::kNsPerAxialSpring,
+    .ns_per_item_yielding = measured::kNsPerAxialSpringYielding,
     .constraint = {.held = true,
                    .project = project_bars,
                    .finish = flow_bars,
@@ -101,12 +102,9 @@ const SpringKind kAxialSprings{
                          sink.add_unshared(
                              "the bars' projection",
                              kConstraintSweeps * static_cast<double>(model.bar_count()),
-                             kNsPerBarProjection);
+                             measured::kNsPerBarProjection);
                        }},
 };
-
-// Nanoseconds per bar's damper on one thread (bench_force_costs; step_cost.hpp).
-constexpr double kNsPerDamper = 5.3;
 
 // The bars' axial dampers, along each bar.
 const ForceKind kAxialDampers{
@@ -136,7 +134,7 @@ const ForceKind kAxialDampers{
         [](const Model& model, StepCostSink& sink) {
           sink.add("axial dampers",
                    model.any_bar_damping ? static_cast<double>(model.bar_count()) : 0.0,
-                   kNsPerDamper);
+                   measured::kNsPerDamper);
         },
     .constraint = {.held = true,
                    .project = nullptr,  // the bars' projection takes their dampers in

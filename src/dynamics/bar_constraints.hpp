@@ -35,10 +35,6 @@ struct State;
 inline constexpr double kLoadStretchShare = 5e-4;
 double bar_constraint_step_cap(const Model& model);
 
-// One bar's projection in a sweep, ns on one thread: the windy flag's 3 434 bars, four sweeps a
-// step, in its xpbd run (bench/notes/stiff-threads.md); only the run-time estimate reads it.
-inline constexpr double kNsPerBarProjection = 6.0;
-
 // One sweep of the bars' projection (ConstraintHold::project, spring_kind.hpp): each bar in turn,
 // in bar order on even sweeps and backwards on odd ones, its multiplier in state.bar_lambda.
 void project_bars(const Model& model, double h, int sweep, State& state);

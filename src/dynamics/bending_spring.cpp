@@ -3,6 +3,7 @@
 #include "dynamics/broken.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/spring_block.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -54,8 +55,8 @@ const SpringKind kBendingSprings{
     .plastic_set = &State::bend_plastic_set,
     .flow = &EnergyWorkspace::bend_flow,
     .broken = &State::bend_broken,
-    .ns_per_item = 14.5,
-    .ns_per_item_yielding = 18.2,
+    .ns_per_item = measured::kNsPerBendingSpring,
+    .ns_per_item_yielding = measured::kNsPerBendingSpringYielding,
     .constraint = {},
 };
 

@@ -6,6 +6,7 @@
 #include "dynamics/broken.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/parallel_loops.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -81,8 +82,8 @@ const SpringKind kClampSprings{
     .plastic_set = &State::clamp_plastic_set,
     .flow = &EnergyWorkspace::clamp_flow,
     .broken = &State::clamp_broken,
-    .ns_per_item = 20.0,  // serial: one loop in clamp order
-    .ns_per_item_yielding = 20.0,
+    .ns_per_item = measured::kNsPerClampSpring,
+    .ns_per_item_yielding = measured::kNsPerClampSpringYielding,
     .constraint = {},
 };
 

@@ -3,6 +3,7 @@
 #include "dynamics/energy.hpp"
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -25,7 +26,7 @@ void add_field_forces(ForceContext& context) {
   }
 }
 
-// Gravity: a potential, −Σ m g·x; its cost is in the nodes' own (step_cost.cpp).
+// Gravity: a potential, −Σ m g·x; its cost is in the nodes' own (estimate/step_cost.cpp).
 const ForceKind kGravity{
     .label = "gravity",
     .spring = nullptr,
@@ -60,9 +61,6 @@ const ForceKind kGravity{
     .constraint = {},
 };
 
-// Nanoseconds per node a field acts on, on one thread (bench_force_costs; step_cost.hpp).
-constexpr double kNsPerFieldNode = 0.8;
-
 // The scene's fields: loads of the time alone.
 const ForceKind kFields{
     .label = "fields",
@@ -91,7 +89,7 @@ const ForceKind kFields{
           for (const FieldForce& field : model.fields) {
             nodes += static_cast<double>(field.nodes.size());
           }
-          sink.add("fields", nodes, kNsPerFieldNode);
+          sink.add("fields", nodes, measured::kNsPerFieldNode);
         },
     .constraint = {},
 };

@@ -19,8 +19,8 @@
 #include "dynamics/free_dofs.hpp"
 #include "dynamics/spring_kind.hpp"
 #include "dynamics/state.hpp"
-#include "dynamics/step_cost.hpp"
 #include "dynamics/stiffness.hpp"
+#include "estimate/step_cost_sink.hpp"
 
 namespace dinam {
 
@@ -123,8 +123,8 @@ struct ForceKind {
   // (integrator.hpp), and their bytes, `energy` while the energy is tracked; null where none.
   void (*prepare_state)(const Model&, State&);
   std::uint64_t (*state_bytes)(const Model&, bool energy);
-  // Its share of a step's time (step_cost.hpp), per item it loops over; null where the nodes'
-  // own cost covers it.
+  // Its share of a step's time (estimate/step_cost.hpp): the items it loops over, at their figure
+  // in estimate/measured_costs.hpp; null where the nodes' own cost covers it.
   void (*add_cost)(const Model&, StepCostSink&);
   // How `integrator: xpbd` takes it: as forces (nulls), or held as a constraint.
   ConstraintHold constraint;

@@ -2,6 +2,7 @@
 
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -15,9 +16,6 @@ void add_global_damping_forces(ForceContext& context, double alpha) {
     context.add(i, -(alpha * model.node_mass[i]) * context.state.velocity[i]);
   });
 }
-
-// Nanoseconds per node on one thread (bench_force_costs; step_cost.hpp).
-constexpr double kNsPerDampedNode = 1.3;
 
 const ForceKind kGlobalDamping{
     .label = "global damping",
@@ -47,7 +45,7 @@ const ForceKind kGlobalDamping{
         [](const Model& model, StepCostSink& sink) {
           sink.add("global damping",
                    model.global_damping != 0.0 ? static_cast<double>(model.node_count()) : 0.0,
-                   kNsPerDampedNode);
+                   measured::kNsPerDampedNode);
         },
     .constraint = {},
 };

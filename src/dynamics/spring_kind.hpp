@@ -12,8 +12,8 @@
 #include "core/types.hpp"
 #include "dynamics/force_context.hpp"
 #include "dynamics/state.hpp"
-#include "dynamics/step_cost.hpp"
 #include "dynamics/stiffness.hpp"
+#include "estimate/step_cost_sink.hpp"
 #include "model/model.hpp"
 #include "model/model_spring_kinds.hpp"
 
@@ -39,7 +39,8 @@ struct ConstraintHold {
   // After the step's last sweep: what flowed plastically moved into the plastic sets (and its
   // work into the ledger's flow, while the energy is tracked); null where nothing can.
   void (*finish)(const Model&, double h, State&);
-  // Its projection's share of a step's time (step_cost.hpp): all its sweeps, on one thread.
+  // Its projection's share of a step's time (estimate/step_cost.hpp): all its sweeps, on one
+  // thread.
   void (*add_cost)(const Model&, StepCostSink&);
 };
 
@@ -62,10 +63,8 @@ struct SpringKind {
   std::vector<double> State::*plastic_set;     // (count, or empty when none yields)
   std::vector<double> EnergyWorkspace::*flow;  // J its flow dissipated in the last step
   std::vector<std::uint8_t> State::*broken;    // tearing: 1 for a broken one (empty: cannot)
-  // Nanoseconds per spring on one thread, elastic and of a kind that can yield, from
-  // `build/bench/bench_force_costs` (bench/notes/performance.md, "Every force kind against the
-  // springs"); only the run-time estimate (step_cost.hpp) reads them. Measure again when a kernel
-  // changes.
+  // Nanoseconds per spring on one thread, elastic and of a kind that can yield: its figures in
+  // estimate/measured_costs.hpp, which only the run-time estimate reads.
   double ns_per_item;
   double ns_per_item_yielding;
   ConstraintHold constraint;  // for `integrator: xpbd`

@@ -8,6 +8,7 @@
 #include "dynamics/bar_constraints.hpp"
 #include "dynamics/broken.hpp"
 #include "dynamics/parallel_loops.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -207,7 +208,7 @@ const ForceKind kTies{
     },
     .add_cost =
         [](const Model& model, StepCostSink& sink) {
-          sink.add("ties", static_cast<double>(model.ties.count()), kNsPerTie);
+          sink.add("ties", static_cast<double>(model.ties.count()), measured::kNsPerTie);
         },
     .constraint = {.held = true,
                    .project = project_ties,
@@ -216,7 +217,7 @@ const ForceKind kTies{
                        [](const Model& model, StepCostSink& sink) {
                          sink.add("ties' projection",
                                   static_cast<double>(kConstraintSweeps * model.ties.count()),
-                                  kNsPerBarProjection);
+                                  measured::kNsPerBarProjection);
                        }},
 };
 

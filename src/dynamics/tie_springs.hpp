@@ -15,10 +15,6 @@ namespace dinam {
 struct Model;
 struct State;
 
-// A tie's forces, serial: ns each on every thread (each thread takes every tie, adding to its own
-// nodes); only the run-time estimate reads it.
-inline constexpr double kNsPerTie = 15.0;
-
 // The tie's tension at the state's positions, N (≥ 0 in tension, < 0 pushed): k (|d| − L), or
 // under `integrator: xpbd` what its last projection held (the spring's before the first).
 double tie_tension(const Model& model, const State& state, Index tie);

@@ -3,6 +3,7 @@
 #include "dynamics/broken.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/spring_block.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -55,8 +56,8 @@ const SpringKind kTorsionSprings{
     .plastic_set = &State::torsion_plastic_set,
     .flow = &EnergyWorkspace::torsion_flow,
     .broken = &State::torsion_broken,
-    .ns_per_item = 23.2,
-    .ns_per_item_yielding = 25.0,
+    .ns_per_item = measured::kNsPerTorsionSpring,
+    .ns_per_item_yielding = measured::kNsPerTorsionSpringYielding,
     .constraint = {},
 };
 

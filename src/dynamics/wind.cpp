@@ -8,6 +8,7 @@
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/vector_lanes.hpp"
 #include "dynamics/wind_field.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -211,12 +212,6 @@ void add_wind_forces(ForceContext& context) {
   }
 }
 
-// Nanoseconds per item on one thread (bench_force_costs; step_cost.hpp).
-constexpr double kNsPerWindFace = 15.1;
-constexpr double kNsPerWindFaceTurbulent = 25.3;
-constexpr double kNsPerWindBar = 10.1;  // a bare bar in the wind
-constexpr double kNsPerWindBarTurbulent = 17.6;
-
 // The wind's drag: a load that depends on the motion, found per face and bar before the nodes'
 // totals are cleared, then added node by node.
 const ForceKind kWind{
@@ -255,9 +250,9 @@ const ForceKind kWind{
           }
           const bool turbulent = model.wind.field.turbulence != 0.0;
           sink.add("wind on faces", static_cast<double>(model.wind.faces.size()),
-                   turbulent ? kNsPerWindFaceTurbulent : kNsPerWindFace);
+                   turbulent ? measured::kNsPerWindFaceTurbulent : measured::kNsPerWindFace);
           sink.add("wind on bars", static_cast<double>(model.wind.bars.size()),
-                   turbulent ? kNsPerWindBarTurbulent : kNsPerWindBar);
+                   turbulent ? measured::kNsPerWindBarTurbulent : measured::kNsPerWindBar);
         },
     .constraint = {},
 };

@@ -1,7 +1,7 @@
 #pragma once
 // The pieces of a model's mesh: the sets of nodes its bars join, across objects. A piece that no
 // pin holds moves as a body of its own; what it does where it lands sets how hard its steps are
-// for the implicit integrator (solver/implicit_cost.hpp, solver/landing_balance.hpp).
+// for the implicit integrator (estimate/implicit_cost.hpp, solver/landing_balance.hpp).
 #include <cstdint>
 #include <vector>
 

@@ -9,10 +9,8 @@
 #include "dynamics/integrator.hpp"
 #include "dynamics/spring_kind.hpp"
 #include "dynamics/stability.hpp"
-#include "dynamics/step_cost.hpp"
 #include "model/frequency_bound.hpp"
 #include "model/model.hpp"
-#include "stepping/run_estimate.hpp"
 #include "stepping/stepper_kind.hpp"
 #include "stepping/time_step.hpp"
 
@@ -32,19 +30,6 @@ constexpr double kReferenceBalance = 0.023;
 std::string leapfrog_timestep_note(const Model&, const TimeStep& timestep) {
   return timestep.automatic ? fmt::format("auto: at most {} × the limit", kAutoTimestepSafety)
                             : "from the scene, fitted to whole steps per frame";
-}
-
-std::string leapfrog_run_time_note(const Model&, const RunEstimate& estimate) {
-  const StepCost& cost = estimate.step;
-  return fmt::format(
-      "about {} to simulate ({:.3g} ms a step on {} thread{}, estimated from the model's springs "
-      "and nodes; drawing comes on top){}",
-      duration_text(estimate.seconds), 1e3 * cost.seconds, cost.threads,
-      cost.threads == 1 ? "" : "s",
-      estimate.long_run() ? fmt::format("; over {}, so render and simulate refuse it without "
-                                        "--force",
-                                        duration_text(kLongRunSeconds))
-                          : "");
 }
 
 std::string leapfrog_energy_balance_note(const Model& model, const TimeStep& timestep) {
@@ -97,14 +82,7 @@ const StepperKind kCentralDifferences = {
       return std::make_unique<CentralDifferenceStepper>(model, timestep);
     },
     .copies_model = [](const Model&) { return false; },
-    .workspace_bytes = [](const Model&) { return std::uint64_t{0}; },  // the state is all
-    .estimate_steps =
-        [](const SceneDescription&, const Model& model, int threads, RunEstimate& estimate) {
-          estimate.step = estimate_step_cost(model, threads);
-        },
-    .step_can_be_timed = true,
     .timestep_note = leapfrog_timestep_note,
-    .run_time_note = leapfrog_run_time_note,
     .energy_balance_note = leapfrog_energy_balance_note,
     .numerical_damping = nullptr,
 };
@@ -195,14 +173,7 @@ const StepperKind kBarConstraints = {
       return std::make_unique<CentralDifferenceStepper>(model, timestep);
     },
     .copies_model = [](const Model&) { return false; },
-    .workspace_bytes = [](const Model&) { return std::uint64_t{0}; },
-    .estimate_steps =
-        [](const SceneDescription&, const Model& model, int threads, RunEstimate& estimate) {
-          estimate.step = estimate_step_cost(model, threads, true);
-        },
-    .step_can_be_timed = true,
     .timestep_note = constrained_timestep_note,
-    .run_time_note = leapfrog_run_time_note,
     .energy_balance_note = constrained_energy_balance_note,
     .numerical_damping = nullptr,
 };

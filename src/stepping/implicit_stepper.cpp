@@ -7,14 +7,9 @@
 #include <cmath>
 #include <memory>
 
-#include "dynamics/contact/object_contact_implicit.hpp"
-#include "dynamics/step_cost.hpp"
 #include "model/model.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/implicit_cost.hpp"
 #include "solver/implicit_damping.hpp"
-#include "solver/solver_memory.hpp"
-#include "stepping/run_estimate.hpp"
 #include "stepping/stepper_kind.hpp"
 #include "stepping/time_step.hpp"
 
@@ -30,30 +25,6 @@ TimeStep implicit_timestep(const Model& model, std::optional<double> requested, 
   step.critical = critical_timestep(model);
   step.automatic = !requested.has_value();
   return step;
-}
-
-// A Newton solve a step (solver/implicit_cost.hpp), on one thread: the factorisation is.
-void implicit_estimate_steps(const SceneDescription& scene, const Model& model, int /*threads*/,
-                             RunEstimate& estimate) {
-  estimate.implicit = estimate_implicit_step(model, estimate_step_cost(model, 1));
-  double seconds = estimate.implicit.seconds;
-  // Contact between objects splits the steps where a node would pass its speed envelope; the
-  // steps split off are short, and cost what a short step does.
-  const double frames_seconds = static_cast<double>(scene.frame_count()) / scene.fps;
-  const auto envelope_steps =
-      static_cast<long long>(std::ceil(contact_envelope_steps(model, frames_seconds)));
-  const long long split_off = envelope_steps + estimate.settle_steps - estimate.steps;
-  if (split_off > 0) {
-    const auto steps = static_cast<double>(estimate.steps);
-    seconds =
-        (steps * seconds + static_cast<double>(split_off) * estimate.implicit.short_step_seconds) /
-        (steps + static_cast<double>(split_off));
-    estimate.steps += split_off;
-  }
-  estimate.step = {.parts = {{"Newton iterations and factorisations", 1.0, 1e9 * seconds}},
-                   .serial_ns = 1e9 * seconds,
-                   .threads = 1,
-                   .seconds = seconds};
 }
 
 // The implicit integrator's numerical damping at the scene's step, for modes resolved by these
@@ -80,13 +51,6 @@ std::string implicit_timestep_note(const Model& model, const TimeStep& timestep)
       "implicit, {}: stable at any step; {}, halved where a step needs it", scheme_name(model),
       timestep.automatic ? fmt::format("auto: 1/{} of a frame", kImplicitStepsPerFrame)
                          : "from the scene");
-}
-
-std::string implicit_run_time_note(const Model&, const RunEstimate& estimate) {
-  return fmt::format(
-      "about {} to simulate ({:.3g} ms a step, a Newton solve, estimated from the model's "
-      "springs and the size of its Hessian's factor; drawing comes on top)",
-      duration_text(estimate.seconds), 1e3 * estimate.step.seconds);
 }
 
 std::string implicit_energy_balance_note(const Model& model, const TimeStep& timestep) {
@@ -133,11 +97,7 @@ const StepperKind kImplicitSchemes = {
       return std::make_unique<ImplicitStepper>(model, timestep);
     },
     .copies_model = ImplicitIntegrator::copies_model,
-    .workspace_bytes = implicit_integrator_bytes,
-    .estimate_steps = implicit_estimate_steps,
-    .step_can_be_timed = false,
     .timestep_note = implicit_timestep_note,
-    .run_time_note = implicit_run_time_note,
     .energy_balance_note = implicit_energy_balance_note,
     .numerical_damping = mode_damping,
 };

@@ -1,12 +1,12 @@
 #pragma once
 // An integrator, described once (as dynamics/force_kind.hpp describes a kind of force): what a
-// run, the estimates and `dinam info` need of it — its stepper, the step it takes, where it
-// starts, a run's cost and the notes `info` prints. Each kind's entry sits in its stepper's file
-// (central_difference_stepper.cpp, implicit_stepper.cpp); stepper_kinds.cpp alone maps the scene's
-// `integrator` to its entry, so that nothing else branches on the integrator.
+// run and `dinam info` need of it — its stepper, the step it takes, where it starts and the notes
+// `info` prints (its estimates: estimate/integrator_estimates.hpp). Each kind's entry sits in its
+// stepper's file (central_difference_stepper.cpp, implicit_stepper.cpp); stepper_kinds.cpp alone
+// maps the scene's `integrator` to its entry, so that nothing else branches on the integrator.
 //
-// A new integrator is its stepper, its entry and one case in stepper_kinds.cpp (beside its reader
-// and its tests).
+// A new integrator is its stepper, its entry, one case in stepper_kinds.cpp and its estimates
+// (estimate/integrator_estimates.cpp), beside its reader and its tests.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -22,7 +22,6 @@
 namespace dinam {
 
 struct Model;
-struct RunEstimate;
 struct SceneDescription;
 
 // The share of a mode's amplitude each implicit scheme keeps over a period, for a mode resolved
@@ -49,22 +48,11 @@ struct StepperKind {
   std::unique_ptr<Stepper> (*make_stepper)(const Model&, const TimeStep&);
   // Whether its stepper holds a copy of the model, which a memory estimate counts.
   bool (*copies_model)(const Model&);
-  // Bytes its stepper holds beside the state at its peak (the implicit schemes' Hessian and
-  // factor: solver/solver_memory.hpp), which a memory estimate counts.
-  std::uint64_t (*workspace_bytes)(const Model&);
-
-  // A run's cost (run_estimate.hpp): a step's, into `estimate.step`, and any steps it expects to
-  // add to `estimate.steps` (the implicit schemes' split steps), for `threads` threads.
-  void (*estimate_steps)(const SceneDescription&, const Model&, int threads, RunEstimate&);
-  // Whether measure_step_now (run_estimate.hpp) times its step: central differences' step is
-  // cheap and regular; an implicit step is a Newton solve, which the probe does not measure.
-  bool step_can_be_timed;
 
   // What `dinam info` says, each after its line's label: how the step was chosen ("time step");
-  // the estimate and what it is made of ("run time"); what the energy report's balance holds to
-  // ("energy balance").
+  // what the energy report's balance holds to ("energy balance"). What the estimates need of an
+  // integrator is in estimate/integrator_estimates.hpp.
   std::string (*timestep_note)(const Model&, const TimeStep&);
-  std::string (*run_time_note)(const Model&, const RunEstimate&);
   std::string (*energy_balance_note)(const Model&, const TimeStep&);
   // The amplitude each implicit scheme keeps of a mode a period at the run's step; null where the
   // kind damps no mode numerically.

@@ -1,4 +1,4 @@
-// `dinam info`'s choice of integrator (stepping/integrator_choice.hpp): the implicit integrator
+// `dinam info`'s choice of integrator (estimate/integrator_choice.hpp): the implicit integrator
 // where its estimate is under half of central differences', even ten times over for a free
 // structure, which bench_implicit and bench/estimate_check.py confirm for the scenes used here
 // (bench/notes/implicit-integrator.md, "Which integrator").

@@ -16,7 +16,7 @@
 
 #include "model/mesh_pieces.hpp"
 #include "model/model.hpp"
-#include "solver/implicit_cost.hpp"
+#include "estimate/implicit_cost.hpp"
 #include "test_support.hpp"
 
 namespace dinam {

@@ -5,6 +5,7 @@
 #include "dynamics/force_kinds.hpp"
 #include "dynamics/parallel_loops.hpp"
 #include "dynamics/vector_lanes.hpp"
+#include "estimate/measured_costs.hpp"
 
 namespace dinam {
 
@@ -186,9 +187,6 @@ void add_ground_contact_stiffness(const Model& model, const State& state, Stiffn
   }
 }
 
-// Nanoseconds per node, half of them touching, on one thread (bench_force_costs; step_cost.hpp).
-constexpr double kNsPerGroundNode = 9.2;
-
 // The ground: its normal penalty a potential, its damper and friction booked on their lines.
 // Under the implicit step the penalty is a term of the step's potential and the friction the
 // stick springs of dynamics/contact/ground_friction_implicit.hpp.
@@ -242,7 +240,7 @@ const ForceKind kGroundContact{
     .add_cost =
         [](const Model& model, StepCostSink& sink) {
           sink.add("ground", model.ground.enabled ? static_cast<double>(model.node_count()) : 0.0,
-                   kNsPerGroundNode);
+                   measured::kNsPerGroundNode);
         },
     .constraint = {},
 };

@@ -12,6 +12,7 @@
 #include "dynamics/contact/contact_grid.hpp"
 #include "dynamics/contact/contact_pairs.hpp"
 #include "dynamics/force_kinds.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/model.hpp"
 
 namespace dinam {
@@ -275,17 +276,6 @@ void add_object_contact_stiffness(const Model& model, const State& state, Stiffn
   }
 }
 
-// Nanoseconds per bar or node watched for contact, on one thread (bench_force_costs;
-// step_cost.hpp).
-constexpr double kNsPerWatched = 30.0;
-// And per bar or node of a surface in contact with itself: a cloth that folds lies on itself or on
-// what it lands on for most of a run, where its searches and candidates cost far more than
-// watching. bench_contact's two sheets lying on each other (130 000 bars and nodes, one thread):
-// 42.5 ms a step against 6.1 ms without contact (bench/notes/performance.md). The paper's
-// draped cloth, counted at watching's cost, ran eleven times its estimate. Its searches are not
-// shortened by a second thread at that size (8.7 s on one thread and on two).
-constexpr double kNsPerPressed = 280.0;
-
 namespace {
 
 // The bars and nodes of contact that belong to a surface in contact with itself (an object with
@@ -355,8 +345,8 @@ const ForceKind kObjectContact{
         [](const Model& model, StepCostSink& sink) {
           if (model.contact.enabled) {
             const auto [pressed, watched] = pressed_and_watched(model);
-            sink.add("contact between objects", watched, kNsPerWatched);
-            sink.add_unshared("a surface's contact with itself", pressed, kNsPerPressed);
+            sink.add("contact between objects", watched, measured::kNsPerWatched);
+            sink.add_unshared("a surface's contact with itself", pressed, measured::kNsPerPressed);
           }
         },
     .constraint = {},

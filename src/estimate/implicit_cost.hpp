@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/types.hpp"
-#include "dynamics/step_cost.hpp"
+#include "estimate/step_cost.hpp"
 
 namespace dinam {
 
@@ -66,7 +66,7 @@ enum class ImplicitMotion {
 // structure, which lands or tumbles, where runs of the real-mesh sweep took up to ten times and
 // more their estimate (E-AT-AT.q3o folding, over 10; MotionCaptureROM.ase's 26 tumbling shells,
 // 10 at the counts of a structure that lies still, 3.2 at a rocking one's;
-// bench/notes/implicit-integrator.md). The recommendation (stepping/integrator_choice.hpp)
+// bench/notes/implicit-integrator.md). The recommendation (estimate/integrator_choice.hpp)
 // weighs the estimate by it.
 double estimate_margin(ImplicitMotion motion);
 
@@ -119,7 +119,7 @@ struct ImplicitStepCost {
 };
 
 // `forces`: the cost of one evaluation of the model's forces (central differences' step cost,
-// dynamics/step_cost.hpp), on one thread.
+// estimate/step_cost.hpp), on one thread.
 ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forces);
 
 }  // namespace dinam

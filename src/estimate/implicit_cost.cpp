@@ -1,4 +1,4 @@
-#include "solver/implicit_cost.hpp"
+#include "estimate/implicit_cost.hpp"
 
 #include <cholmod.h>
 #include <fmt/format.h>
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "estimate/measured_costs.hpp"
 #include "model/mesh_pieces.hpp"
 #include "model/model.hpp"
 #include "solver/landing_balance.hpp"
@@ -23,27 +24,6 @@
 namespace dinam {
 
 namespace {
-
-// Measured by `bench_implicit --costs` (bench/implicit_benchmark.cpp) on the Wuson, the paper's
-// flag and the end-to-end flag, one thread, 2026-11-26, with CHOLMOD's supernodal factor through
-// the single-threaded OpenBLAS (positive_definite_solver.hpp):
-// - a factorisation 0.27, 0.34 and 0.65 ns a flop of CHOLMOD's count (the larger the model, the
-//   larger its dense blocks and the less a flop costs);
-// - an assembly 0.9 to 1.3 µs a spring with the exact Hessians, 2.7 to 5.2 µs with each
-//   element's projected; a factorisation whose exact Hessian is indefinite takes both, so about
-//   3 µs is taken;
-// - a solve 0.35, 0.47 and 0.61 ns a nonzero of the factor, forward and back each;
-// - a Newton iteration evaluates the forces once and the energy once or twice (the line
-//   search), each about a step of central differences' forces: 3 in all; each iteration of its
-//   linear solve, a solve with the factor and one force evaluation (the Hessian's product);
-// - a solve with a small factor costs more than its nonzeros: 6.2 and 8.7 µs for factors of 1 701
-//   and 2 373 nonzeros (the paper's rope and a steel cable, 2026-11-28), where 0.4 ns a nonzero
-//   each way predicts 1.4 and 1.9 µs: a call's own cost, about 5 µs, which a large factor hides.
-constexpr double kNsPerFlop = 0.3;
-constexpr double kAssemblyNsPerSpring = 3000.0;
-constexpr double kForceEvaluationsPerIteration = 3.0;
-constexpr double kNsPerFactorNonzero = 0.4;
-constexpr double kNsPerSolveCall = 5000.0;
 
 // How many times short a free structure's implicit estimate may be (estimate_margin).
 constexpr double kFreeStructureMargin = 10.0;
@@ -335,10 +315,11 @@ ImplicitStepCost estimate_implicit_step(const Model& model, const StepCost& forc
   const auto springs =
       static_cast<double>(model.bar_count() + model.bend_count() + model.torsion_count());
   cost.factorization_seconds =
-      1e-9 * (kNsPerFlop * cost.factor.flops + kAssemblyNsPerSpring * springs);
-  cost.iteration_seconds = 1e-9 * kForceEvaluationsPerIteration * forces.serial_ns;
-  cost.solve_iteration_seconds = 1e-9 * (forces.serial_ns + kNsPerSolveCall +
-                                         2.0 * kNsPerFactorNonzero * cost.factor.nonzeros);
+      1e-9 * (measured::kNsPerFlop * cost.factor.flops + measured::kAssemblyNsPerSpring * springs);
+  cost.iteration_seconds = 1e-9 * measured::kForceEvaluationsPerIteration * forces.serial_ns;
+  cost.solve_iteration_seconds =
+      1e-9 * (forces.serial_ns + measured::kNsPerSolveCall +
+              2.0 * measured::kNsPerFactorNonzero * cost.factor.nonzeros);
   std::tie(cost.motion, cost.off_balance_node) = expected_motion_and_node(model);
   cost.counts = assumed_step_counts(cost.motion);
   cost.seconds = cost.counts.iterations * cost.iteration_seconds +

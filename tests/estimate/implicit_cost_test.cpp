@@ -1,8 +1,8 @@
-// The implicit integrator's cost estimate (solver/implicit_cost.hpp) rests on the size of its
+// The implicit integrator's cost estimate (estimate/implicit_cost.hpp) rests on the size of its
 // Hessian's Cholesky factor, which CHOLMOD's analysis gives, and on the counts a step takes, which
 // it assumes from how the structure will move: checked against a pattern whose factor is known in
 // closed form, and Maxwell's count of bar frameworks whose free motions are known.
-#include "solver/implicit_cost.hpp"
+#include "estimate/implicit_cost.hpp"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

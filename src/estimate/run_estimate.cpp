@@ -1,6 +1,6 @@
-#include "stepping/run_estimate.hpp"
+#include "estimate/run_estimate.hpp"
 
-#include "stepping/integrator_choice.hpp"
+#include "estimate/integrator_choice.hpp"
 
 #include <fmt/format.h>
 
@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "dynamics/integrator.hpp"
 #include "dynamics/relaxation.hpp"
+#include "estimate/integrator_estimates.hpp"
 #include "model/model.hpp"
 #include "model/step_limits.hpp"
 #include "scene/scene_description.hpp"
@@ -51,7 +52,7 @@ RunEstimate estimate_run(const SceneDescription& scene, const Model& model, cons
   estimate.settle_steps = expected_settle_steps(model, timestep);
   estimate.steps =
       steps_in_all(scene, model, timestep) - settle_steps(model, timestep) + estimate.settle_steps;
-  kind.estimate_steps(scene, model, threads, estimate);
+  integrator_estimate(kind).estimate_steps(scene, model, threads, estimate);
   estimate.seconds = estimate.step.seconds * static_cast<double>(estimate.steps);
   return estimate;
 }

@@ -1,11 +1,11 @@
-#include "solver/solver_memory.hpp"
+#include "estimate/solver_memory.hpp"
 
 #include <Eigen/SparseCore>
 #include <algorithm>
 
 #include "dynamics/stiffness.hpp"
+#include "estimate/implicit_cost.hpp"
 #include "model/model.hpp"
-#include "solver/implicit_cost.hpp"
 
 namespace dinam {
 namespace {

@@ -1,4 +1,4 @@
-#include "run/memory_estimate.hpp"
+#include "estimate/memory_estimate.hpp"
 
 #include <fmt/format.h>
 
@@ -12,11 +12,12 @@
 #include "dynamics/contact/contact_grid.hpp"
 #include "dynamics/contact/object_contact_state.hpp"
 #include "dynamics/force_kinds.hpp"
+#include "estimate/implicit_cost.hpp"
+#include "estimate/integrator_estimates.hpp"
+#include "estimate/solver_memory.hpp"
 #include "model/model.hpp"
 #include "model/model_arrays.hpp"
 #include "scene/scene_description.hpp"
-#include "solver/implicit_cost.hpp"
-#include "solver/solver_memory.hpp"
 #include "stepping/stepper_kind.hpp"
 #include "visual/draw_list_from_model.hpp"
 
@@ -152,7 +153,7 @@ MemoryEstimate estimate_memory(const SceneDescription& scene, const Model& model
   // Twice where the stepper steps a copy of its own (the implicit schemes' softened ground).
   estimate.model = model_bytes(model) * (stepper_kind(model).copies_model(model) ? 2 : 1);
   estimate.dynamics = state_bytes(model, use.energy);
-  estimate.solver = stepper_kind(model).workspace_bytes(model);
+  estimate.solver = integrator_estimate(stepper_kind(model)).workspace_bytes(model);
   if (model.settle.enabled) {
     // settle.cpp relaxes the model (no driving forces) in a state of its own, by Newton's method
     // where it converges (its matrices freed before the run's are made).

@@ -1,14 +1,14 @@
 #pragma once
 // How long a run will take: the steps it needs times the cost of one step, estimated from what
-// the model holds (dynamics/step_cost.hpp), so that the answer is the same on a quiet machine and
+// the model holds (estimate/step_cost.hpp), so that the answer is the same on a quiet machine and
 // on a busy one. Contact that starts later, tearing and plastic flow change the cost as the run
 // goes, so the figure is an estimate of the simulation, not a promise; drawing the frames comes
 // on top.
 #include <string>
 
 #include "dynamics/stability.hpp"
-#include "dynamics/step_cost.hpp"
-#include "solver/implicit_cost.hpp"
+#include "estimate/implicit_cost.hpp"
+#include "estimate/step_cost.hpp"
 
 namespace dinam {
 
@@ -40,9 +40,9 @@ RunEstimate estimate_run(const SceneDescription& scene, const Model& model, cons
                          const TimeStep& timestep, int threads);
 
 // Central differences' step's time on this machine as busy as it is now (where the model's kind
-// says its step can be timed: StepperKind::step_can_be_timed): the model stepped from its mesh
-// positions (no settling) for about `probe_seconds` or `max_probe_steps` steps, whichever comes
-// first. For `info` to print beside the estimate; nothing is decided on it.
+// says its step can be timed: IntegratorEstimate::step_can_be_timed): the model stepped from its
+// mesh positions (no settling) for about `probe_seconds` or `max_probe_steps` steps, whichever
+// comes first. For `info` to print beside the estimate; nothing is decided on it.
 struct MeasuredStep {
   double seconds_per_step = 0.0;
   int steps = 0;

@@ -1,7 +1,7 @@
 // A step's cost is estimated from what the model holds, not from a clock: the same scene gets the
 // same estimate however busy the machine is, each kind counts its items, and threads shorten it
 // only where the step shares its work.
-#include "dynamics/step_cost.hpp"
+#include "estimate/step_cost.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The memory estimate against what a run really holds (its peak resident memory, from the
 // kernel), and the refusal of a run that would not fit.
-#include "run/memory_estimate.hpp"
+#include "estimate/memory_estimate.hpp"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "stepping/integrator_choice.hpp"
+#include "estimate/integrator_choice.hpp"
 
 #include <fmt/format.h>
 
@@ -19,7 +19,7 @@ namespace {
 constexpr double kStretchCrossingShare = 0.25;
 
 // Why holding the bars as constraints would change what a user sees of `model`, or empty: a
-// structure free to land (`free_to_land`: nothing holds it, solver/implicit_cost.hpp); contact
+// structure free to land (`free_to_land`: nothing holds it, estimate/implicit_cost.hpp); contact
 // within an object, which fights the projection (model_builder refuses it); a structure whose bars
 // stretch visibly moves by its stretch (a rubber net the ball dips into: its stretch waves cross
 // it in 15 ms at c = √(E/ρ) = 130 m/s, where cotton's do in 5 ms at 290 m/s): each bar's wave

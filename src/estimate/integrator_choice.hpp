@@ -1,6 +1,6 @@
 #pragma once
 // Which integrator fits a scene (`dinam info`): the steps each would take and an estimate of its
-// time, both from counts (stepping/run_estimate.hpp, solver/implicit_cost.hpp), and the one
+// time, both from counts (estimate/run_estimate.hpp, estimate/implicit_cost.hpp), and the one
 // recommended. Central differences are exact and cheap per step, so another is recommended only
 // where its estimate is under half of theirs: the bars as constraints (`xpbd`) where the bars
 // bound central differences' step (real cloth, rope and cable: its estimate is of explicit
@@ -8,8 +8,8 @@
 // those two even were it as far short as the worst measured for structures that move alike.
 #include <string>
 
+#include "estimate/run_estimate.hpp"
 #include "scene/scene_description.hpp"
-#include "stepping/run_estimate.hpp"
 #include "stepping/stepper_kind.hpp"
 
 namespace dinam {
@@ -24,7 +24,7 @@ struct IntegratorChoice {
   RunEstimate xpbd;                // the bars as constraints, at its automatic step
   bool central_difference_unscaled = false;  // estimated without its mass scaling (no room)
   bool contact_envelope = false;             // the implicit steps count contact's speed envelope
-  // How many times short the implicit estimate may be (solver/implicit_cost.hpp,
+  // How many times short the implicit estimate may be (estimate/implicit_cost.hpp,
   // estimate_margin): 1 where the structure swings, 10 where it is free to land, fold or tumble.
   double implicit_margin = 1.0;
   // Why the bars as constraints are not recommended whatever their estimate: empty where they may

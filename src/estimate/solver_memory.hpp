@@ -1,8 +1,8 @@
 #pragma once
 // The memory Newton's method holds beside the state, for the memory estimate
-// (run/memory_estimate.hpp): an implicit run's Hessian and its Cholesky factor grow faster than
-// the model (a cloth of 40 000 nodes: 0.8 GB, where its explicit run holds 116 MB), and an estimate
-// without them let a run pass that the machine could not hold.
+// (estimate/memory_estimate.hpp): an implicit run's Hessian and its Cholesky factor grow faster
+// than the model (a cloth of 40 000 nodes: 0.8 GB, where its explicit run holds 116 MB), and an
+// estimate without them let a run pass that the machine could not hold.
 #include <cstdint>
 
 namespace dinam {

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "core/error.hpp"
 #include "core/byte_size.hpp"
+#include "core/error.hpp"
 #include "core/memory_budget.hpp"
 
 namespace dinam {
