@@ -12,7 +12,7 @@
 // (kinetic, springs, gravity, the ground's penalty and the fields' potential, which a field
 // constant in time has) beside central differences' at the same frame, which are then run
 // through: the numerical damping of an undamped scene. --costs measures, instead of the run, what
-// src/solver/implicit_cost.cpp's estimate is made of: an assembly and factorisation of the
+// src/estimate/implicit_cost.cpp's estimate is made of: an assembly and factorisation of the
 // Hessian, a solve, a force evaluation and an energy, against the factor's size. --threads runs
 // both integrators on a team of N threads (default 1).
 #include <fmt/format.h>

@@ -26,8 +26,10 @@ namespace {
 
 // The figures that are not counted from the model were measured as peak resident memory
 // (/usr/bin/time -f %M, Debian 12, Mesa 22.3 llvmpipe); bench/notes/performance.md has the runs.
-//  - `dinam info` on a 121-node scene: 63 MB, the program, its libraries and their start-up.
-constexpr std::uint64_t kProgramBytes = 64'000'000;
+//  - `dinam info` and `dinam simulate` of a rope of two bars: 70 MB, the program, its libraries
+//    and their start-up (`python3 bench/estimate_check.py` found every small run 8–10 % over an
+//    estimate that took 64 MB, what `dinam --version` alone holds).
+constexpr std::uint64_t kProgramBytes = 70'000'000;
 //  - OSMesa's context, llvmpipe's threads and compiled shaders, beside the per-pixel buffers:
 //    a 121-node scene drawn at 640×360, 1920×1080 and 3840×2160 took 61, 155 and 473 MB over
 //    `info`, i.e. 49 MB + 51 bytes a pixel with 4 samples, of which the shadow map is 17 MB.
