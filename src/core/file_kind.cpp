@@ -16,17 +16,24 @@ std::string file_kind_of(const std::filesystem::path& path, bool folder_wanted) 
   if (folder_wanted) {
     return S_ISDIR(info.st_mode) ? std::string() : std::string("not a folder");
   }
-  if (S_ISREG(info.st_mode)) {
+  return file_kind_of_mode(info.st_mode);
+}
+
+std::string file_kind_of_mode(unsigned mode) {
+  if (S_ISREG(mode)) {
     return {};
   }
-  if (S_ISDIR(info.st_mode)) {
+  if (S_ISDIR(mode)) {
     return "a folder";
   }
-  if (S_ISFIFO(info.st_mode)) {
+  if (S_ISFIFO(mode)) {
     return "a FIFO";
   }
-  if (S_ISSOCK(info.st_mode)) {
+  if (S_ISSOCK(mode)) {
     return "a socket";
+  }
+  if (S_ISLNK(mode)) {
+    return "a symbolic link";
   }
   return "a device or special file";
 }

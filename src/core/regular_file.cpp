@@ -7,9 +7,9 @@
 #include <cerrno>
 
 #include "core/error.hpp"
+#include "core/file_kind.hpp"
 
 namespace dinam {
-
 namespace {
 
 [[noreturn]] void refuse(const std::filesystem::path& path, const std::string& what,
@@ -18,23 +18,6 @@ namespace {
                    "{} is {}: dinam reads it only as a regular file of its folder, never through a "
                    "link, which could lead to any file of the machine; put the file itself there",
                    what, kind);
-}
-
-// What an open file is, in the words of a message; empty for a regular file.
-std::string kind_of_open_file(const struct stat& info) {
-  if (S_ISREG(info.st_mode)) {
-    return {};
-  }
-  if (S_ISDIR(info.st_mode)) {
-    return "a folder";
-  }
-  if (S_ISFIFO(info.st_mode)) {
-    return "a FIFO";
-  }
-  if (S_ISSOCK(info.st_mode)) {
-    return "a socket";
-  }
-  return "a device or special file";
 }
 
 }  // namespace
@@ -59,7 +42,7 @@ int open_regular_file(const std::filesystem::path& path, const std::string& what
     errno = saved;
     return -1;
   }
-  if (const std::string kind = kind_of_open_file(info); !kind.empty()) {
+  if (const std::string kind = file_kind_of_mode(info.st_mode); !kind.empty()) {
     ::close(fd);
     refuse(path, what, kind);
   }
