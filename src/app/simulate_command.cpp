@@ -67,6 +67,8 @@ std::vector<ObjectLook> object_looks(const SceneDescription& scene) {
     look.wires = object.style != DrawStyle::kSurface;
     look.texture = look.surface ? object.texture : std::filesystem::path();
     look.finish = object.finish;
+    look.shading = object.shading;
+    look.sharp_angle = object.sharp_angle;
   }
   return looks;
 }

@@ -6,11 +6,13 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 
@@ -26,6 +28,7 @@
 #include "core/output_file.hpp"
 #include "core/regular_file.hpp"
 #include "core/stop_request.hpp"
+#include "visual/sharp_edges.hpp"
 
 namespace dinam {
 namespace {
@@ -156,6 +159,36 @@ std::string deflated(const void* data, std::size_t size) {
   return out;
 }
 
+// Each face corner's point as the page shares it between faces, for a surface shaded with sharp
+// edges (`shading: auto`): the corners on either side of an edge whose faces meet at more than
+// its sharp angle get points of their own (visual/sharp_edges.hpp, at the first frame's
+// positions `x`), numbered from `x.size()`; the page keys its vertices, and so its normals, by
+// them. The faces are fanned into triangles as the page fans them.
+Json corner_keys(const ObjectElements& elements, double sharp_angle, const std::vector<Vec3>& x) {
+  std::vector<Index> triangles;
+  std::vector<Index> triangle_face;
+  std::vector<std::size_t> triangle_corner;  // each triangle corner's face corner
+  std::size_t at = 0;
+  for (std::size_t f = 0; f < elements.face_sizes.size(); ++f) {
+    const auto size = elements.face_sizes[f].get<std::size_t>();
+    for (std::size_t k = 1; k + 1 < size; ++k) {
+      for (const std::size_t corner : {at, at + k, at + k + 1}) {
+        triangles.push_back(elements.faces[corner].get<Index>());
+        triangle_corner.push_back(corner);
+      }
+      triangle_face.push_back(static_cast<Index>(f));
+    }
+    at += size;
+  }
+  split_at_sharp_edges(triangles, triangle_face, x, sharp_angle * std::numbers::pi / 180.0,
+                       static_cast<Index>(x.size()));
+  Json keys = elements.faces;
+  for (std::size_t c = 0; c < triangles.size(); ++c) {
+    keys[triangle_corner[c]] = triangles[c];
+  }
+  return keys;
+}
+
 // A part of the page: deflated, then in base64 (which holds no '<').
 std::string deflated_base64(const void* data, std::size_t size) {
   const std::string packed = deflated(data, size);
@@ -231,6 +264,17 @@ int write_view_page(const ViewOptions& options) {
                      options.every * ((bytes + kMostPageBytes - 1) / kMostPageBytes));
   }
 
+  // The first frame's positions, where a surface's sharp edges are found.
+  std::vector<Vec3> rest;
+  if (std::any_of(manifest.objects.begin(), manifest.objects.end(),
+                  [](const CacheObjectEntry& entry) {
+                    return entry.look.surface && entry.look.shading == Shading::kAuto;
+                  })) {
+    const std::vector<std::vector<Vec3f>> first = cache.read_frames(1, 1);
+    for (const Vec3f& p : first.front()) {
+      rest.push_back(p.cast<double>());
+    }
+  }
   Json objects = Json::array();
   for (const CacheObjectEntry& entry : manifest.objects) {
     ObjectElements elements =
@@ -257,6 +301,12 @@ int write_view_page(const ViewOptions& options) {
     if (!entry.look.texture.empty() && !elements.face_uvs.empty()) {
       object["texture"] = texture_data_url(cache.folder() / entry.look.texture);
     }
+    object["shading"] = entry.look.shading == Shading::kFlat   ? "flat"
+                        : entry.look.shading == Shading::kAuto ? "auto"
+                                                               : "smooth";
+    object["corner_keys"] = entry.look.shading == Shading::kAuto && !elements.faces.empty()
+                                ? corner_keys(elements, entry.look.sharp_angle, rest)
+                                : Json::array();
     objects.push_back(std::move(object));
   }
   Vec3f low = manifest.frame_bounds.front().min;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -121,6 +122,10 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
                       {"color", {o.look.color.x(), o.look.color.y(), o.look.color.z()}}};
     if (!o.look.texture.empty()) {
       object["look"]["texture"] = o.look.texture.string();
+    }
+    if (o.look.shading != Shading::kSmooth) {
+      object["look"]["shading"] = o.look.shading == Shading::kFlat ? "flat" : "auto";
+      object["look"]["sharp_angle"] = o.look.sharp_angle;
     }
     if (o.source_vertex_count > 0) {
       object["source_vertex_count"] = o.source_vertex_count;
@@ -250,6 +255,24 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
         const auto color = look.at("color").get<std::array<float, 3>>();
         entry.look.color = Vec3f(color[0], color[1], color[2]);
         entry.look.texture = look.value("texture", "");
+        // Smooth where the manifest says nothing (as dinam writes it, and as caches made before
+        // `shading` were).
+        const std::string shading = look.value("shading", "smooth");
+        if (shading != "smooth" && shading != "flat" && shading != "auto") {
+          throw UserError(loc, fmt::format("object '{}' has shading '{}', not smooth, flat or "
+                                           "auto; simulate again",
+                                           entry.name, shading));
+        }
+        entry.look.shading = shading == "flat"   ? Shading::kFlat
+                             : shading == "auto" ? Shading::kAuto
+                                                 : Shading::kSmooth;
+        entry.look.sharp_angle = look.value("sharp_angle", kDefaultSharpAngle);
+        if (!std::isfinite(entry.look.sharp_angle) || entry.look.sharp_angle < 0.0 ||
+            entry.look.sharp_angle > 180.0) {
+          throw UserError(loc, fmt::format("object '{}' has a sharp_angle of {}, not 0 to 180 "
+                                           "degrees; simulate again",
+                                           entry.name, entry.look.sharp_angle));
+        }
       }
       m.objects.push_back(std::move(entry));
     }

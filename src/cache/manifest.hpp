@@ -33,6 +33,9 @@ struct ObjectLook {
   // manifest its copy, a file of the cache's own folder, which the USD stage and `dinam view` use.
   std::filesystem::path texture;
   Finish finish;  // how its surface takes the light (the USD stage's materials; not kept)
+  // How its surface is shaded across its edges (`dinam view` draws it so).
+  Shading shading = Shading::kSmooth;
+  double sharp_angle = kDefaultSharpAngle;  // degrees, for Shading::kAuto
 };
 
 // One object's files, each a name inside the cache folder; pc2 or mdd is empty when that format

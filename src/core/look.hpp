@@ -13,6 +13,13 @@ struct Finish {
   bool operator==(const Finish&) const = default;
 };
 
+// How a drawn surface takes the light across its edges (`shading`): smooth everywhere (normals
+// shared by the faces at each node, and the surface subdivided), flat (each face its own normal,
+// drawn as modelled), or smooth but for the edges whose faces meet at more than `sharp_angle`
+// (a cylinder's rim: Blender's Auto Smooth), drawn as modelled.
+enum class Shading { kSmooth, kFlat, kAuto };
+inline constexpr double kDefaultSharpAngle = 30.0;  // degrees, Blender's Auto Smooth default
+
 // Picture-wide features, each off or on.
 struct LookSettings {
   // Percentage-closer soft shadows: a penumbra that widens with the distance from the occluder,

@@ -164,13 +164,6 @@ enum class FaceRole { kSheet, kNet };
 // How an object is drawn: its faces as a surface, its bars as wires, or both.
 enum class DrawStyle { kSurface, kWire, kBoth };
 
-// How a drawn surface takes the light across its edges (`shading`): smooth everywhere (normals
-// shared by the faces at each node, and the surface subdivided), flat (each face its own normal,
-// drawn as modelled), or smooth but for the edges whose faces meet at more than `sharp_angle`
-// (a cylinder's rim: Blender's Auto Smooth), drawn as modelled.
-enum class Shading { kSmooth, kFlat, kAuto };
-inline constexpr double kDefaultSharpAngle = 30.0;  // degrees, Blender's Auto Smooth default
-
 // The default `mesh: {weld}`: bars shorter than a tenth of the object's median bar are collapsed.
 // Such a bar, a sliver left by a modelling tool, would alone set a time step hundreds of times
 // shorter than the rest of the mesh needs: the bending and torsion springs at its ends vibrate as

@@ -5,13 +5,14 @@
 #include <unistd.h>
 
 #include <fstream>
+#include <regex>
 #include <sstream>
 
-#include "run/frame_source.hpp"
 #include "cache/motion_cache.hpp"
 #include "cache/motion_cache_writer.hpp"
 #include "dynamics/stability.hpp"
 #include "model/model.hpp"
+#include "run/frame_source.hpp"
 #include "stepping/time_step.hpp"
 #include "test_support.hpp"
 
@@ -52,9 +53,13 @@ CacheRequest request_for(const Simulated& s, const std::filesystem::path& folder
   return {folder, true, true, s.scene.fps, s.scene.frame_count(), {}, 0.0, 1, false, {}};
 }
 
-// Writes the whole cache of `s` into `folder`.
-void write_cache(const Simulated& s, const std::filesystem::path& folder) {
-  MotionCacheWriter writer(request_for(s, folder), s.model);
+// Writes the whole cache of `s` into `folder`, its objects drawn as `looks` says (empty: as the
+// model's own look).
+void write_cache(const Simulated& s, const std::filesystem::path& folder,
+                 std::vector<ObjectLook> looks = {}) {
+  CacheRequest request = request_for(s, folder);
+  request.looks = std::move(looks);
+  MotionCacheWriter writer(request, s.model);
   for (const auto& positions : s.frames.positions) {
     writer.add_frame(positions);
   }
@@ -236,6 +241,32 @@ TEST(MotionCache, ACacheOfAnotherVersionOrAnIncompleteOneIsRefused) {
   test::expect_user_error([&] { MotionCache{path}; }, 0, {"not a complete motion cache"});
   test::expect_user_error([&] { MotionCache{folder.path() / "absent"}; }, 0,
                           {"no such folder", "dinam simulate"});
+}
+
+// How a surface is shaded travels in the manifest for `dinam view`: written only where it is not
+// smooth (a cache made before `shading` reads as smooth), and a value dinam does not write is
+// refused by name.
+TEST(MotionCache, TheManifestKeepsHowASurfaceIsShaded) {
+  const Simulated s = simulate(kRope);
+  const test::TemporaryFolder folder("shading");
+  const auto path = folder.path() / "cache";
+  ObjectLook look;
+  look.shading = Shading::kAuto;
+  look.sharp_angle = 40.0;
+  write_cache(s, path, {look});
+  EXPECT_EQ(MotionCache(path).manifest().objects[0].look.shading, Shading::kAuto);
+  EXPECT_EQ(MotionCache(path).manifest().objects[0].look.sharp_angle, 40.0);
+
+  std::stringstream text;
+  text << std::ifstream(path / "manifest.json").rdbuf();
+  std::ofstream(path / "manifest.json")
+      << replaced(text.str(), "\"shading\": \"auto\"", "\"shading\": \"bumpy\"");
+  test::expect_user_error([&] { MotionCache{path}; }, 0,
+                          {"shading 'bumpy'", "smooth, flat or auto", "simulate again"});
+  // As a cache made before `shading` holds it: no such keys.
+  std::ofstream(path / "manifest.json") << std::regex_replace(
+      text.str(), std::regex(R"(,\s*"shading": "auto",\s*"sharp_angle": 40\.0)"), "");
+  EXPECT_EQ(MotionCache(path).manifest().objects[0].look.shading, Shading::kSmooth);
 }
 
 }  // namespace
