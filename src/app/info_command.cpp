@@ -295,6 +295,7 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
                  : std::string());
   // On a busy machine a step takes longer than the model's counts say (they are an idle
   // machine's): the headline is then what the step measured now makes of the run.
+  const IntegratorEstimate& integrator = integrator_estimate(stepper_kind(model));
   const bool busy = run.measured.steps > 0 &&
                     run.measured.seconds_per_step > kBusyShare * run.estimate.step.seconds;
   if (busy) {
@@ -302,13 +303,11 @@ void print_text(const SceneDescription& scene, const Model& model, const TimeSte
         "run time         about {} to simulate now, at the {:.3g} ms a step measured on this "
         "machine as busy as it is; on an idle one, {}\n",
         duration_text(run.measured.seconds_per_step * static_cast<double>(run.estimate.steps)),
-        1e3 * run.measured.seconds_per_step,
-        integrator_estimate(stepper_kind(model)).run_time_note(model, run.estimate));
+        1e3 * run.measured.seconds_per_step, integrator.run_time_note(model, run.estimate));
   } else {
-    fmt::print("run time         {}\n",
-               integrator_estimate(stepper_kind(model)).run_time_note(model, run.estimate));
+    fmt::print("run time         {}\n", integrator.run_time_note(model, run.estimate));
   }
-  if (integrator_estimate(stepper_kind(model)).step_can_be_timed) {
+  if (integrator.step_can_be_timed) {
     if (run.measured.steps > 0) {
       fmt::print(
           "measured now     {:.3g} ms a step, {} steps timed on this machine as busy as it is "

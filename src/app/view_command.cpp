@@ -301,9 +301,7 @@ int write_view_page(const ViewOptions& options) {
     if (!entry.look.texture.empty() && !elements.face_uvs.empty()) {
       object["texture"] = texture_data_url(cache.folder() / entry.look.texture);
     }
-    object["shading"] = entry.look.shading == Shading::kFlat   ? "flat"
-                        : entry.look.shading == Shading::kAuto ? "auto"
-                                                               : "smooth";
+    object["shading"] = shading_name(entry.look.shading);
     object["corner_keys"] = entry.look.shading == Shading::kAuto && !elements.faces.empty()
                                 ? corner_keys(elements, entry.look.sharp_angle, rest)
                                 : Json::array();

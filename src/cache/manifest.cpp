@@ -124,7 +124,7 @@ void write_manifest(const std::filesystem::path& path, const CacheManifest& m) {
       object["look"]["texture"] = o.look.texture.string();
     }
     if (o.look.shading != Shading::kSmooth) {
-      object["look"]["shading"] = o.look.shading == Shading::kFlat ? "flat" : "auto";
+      object["look"]["shading"] = shading_name(o.look.shading);
       object["look"]["sharp_angle"] = o.look.sharp_angle;
     }
     if (o.source_vertex_count > 0) {
@@ -258,14 +258,13 @@ CacheManifest parse_manifest(const std::string& text, const std::filesystem::pat
         // Smooth where the manifest says nothing (as dinam writes it, and as caches made before
         // `shading` were).
         const std::string shading = look.value("shading", "smooth");
-        if (shading != "smooth" && shading != "flat" && shading != "auto") {
+        const std::optional<Shading> named = shading_named(shading);
+        if (!named) {
           throw UserError(loc, fmt::format("object '{}' has shading '{}', not smooth, flat or "
                                            "auto; simulate again",
                                            entry.name, shading));
         }
-        entry.look.shading = shading == "flat"   ? Shading::kFlat
-                             : shading == "auto" ? Shading::kAuto
-                                                 : Shading::kSmooth;
+        entry.look.shading = *named;
         entry.look.sharp_angle = look.value("sharp_angle", kDefaultSharpAngle);
         if (!std::isfinite(entry.look.sharp_angle) || entry.look.sharp_angle < 0.0 ||
             entry.look.sharp_angle > 180.0) {

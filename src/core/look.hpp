@@ -2,6 +2,9 @@
 // How a frame is lit and finished, beside what is drawn (render/draw_list.hpp): the finish of
 // each surface, and the picture-wide features that each cost time and can be switched off. In
 // core/ because the scene states them and the renderer uses them.
+#include <optional>
+#include <string_view>
+
 namespace dinam {
 
 // A surface's finish, for a microfacet (GGX) highlight over a diffuse base.
@@ -19,6 +22,28 @@ struct Finish {
 // (a cylinder's rim: Blender's Auto Smooth), drawn as modelled.
 enum class Shading { kSmooth, kFlat, kAuto };
 inline constexpr double kDefaultSharpAngle = 30.0;  // degrees, Blender's Auto Smooth default
+
+// The word a scene and a cache's manifest write for each shading, and back (none for another
+// word).
+inline const char* shading_name(Shading shading) {
+  switch (shading) {
+    case Shading::kFlat:
+      return "flat";
+    case Shading::kAuto:
+      return "auto";
+    case Shading::kSmooth:
+      break;
+  }
+  return "smooth";
+}
+inline std::optional<Shading> shading_named(std::string_view name) {
+  for (const Shading shading : {Shading::kSmooth, Shading::kFlat, Shading::kAuto}) {
+    if (name == shading_name(shading)) {
+      return shading;
+    }
+  }
+  return std::nullopt;
+}
 
 // Picture-wide features, each off or on.
 struct LookSettings {

@@ -22,7 +22,8 @@ namespace {
 
 }  // namespace
 
-int open_regular_file(const std::filesystem::path& path, const std::string& what) {
+int open_regular_file(const std::filesystem::path& path, const std::string& what,
+                      std::uintmax_t* size) {
   // O_NONBLOCK: opening a FIFO for reading would otherwise wait for a writer before fstat could
   // refuse it. It changes nothing for a regular file.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
@@ -46,20 +47,19 @@ int open_regular_file(const std::filesystem::path& path, const std::string& what
     ::close(fd);
     refuse(path, what, kind);
   }
+  if (size != nullptr) {
+    *size = static_cast<std::uintmax_t>(info.st_size);
+  }
   return fd;
 }
 
 RegularFileIn::RegularFileIn(const std::filesystem::path& path, const std::string& what)
     : std::istream(nullptr) {
-  const int fd = open_regular_file(path, what);
+  const int fd = open_regular_file(path, what, &size_);
   if (fd < 0) {
     open_error_ = errno;
     setstate(std::ios::failbit);
     return;
-  }
-  struct stat info {};
-  if (::fstat(fd, &info) == 0) {
-    size_ = static_cast<std::uintmax_t>(info.st_size);
   }
   // The buffer owns the descriptor from here and closes it.
   buffer_ = std::make_unique<__gnu_cxx::stdio_filebuf<char>>(fd, std::ios::in | std::ios::binary);

@@ -17,8 +17,10 @@ namespace dinam {
 // The file descriptor of `path` opened for reading, or -1 with errno set where the file is missing
 // or unreadable (its reader says so in its own words). Throws UserError naming `path` where it is
 // a symbolic link or anything but a regular file; `what` ("the cache's texture", "the golden
-// image") says which file the message is about.
-int open_regular_file(const std::filesystem::path& path, const std::string& what);
+// image") says which file the message is about. `size`, where given, is set to the size of the
+// file opened.
+int open_regular_file(const std::filesystem::path& path, const std::string& what,
+                      std::uintmax_t* size = nullptr);
 
 // The same open as an input stream. `open_error()` is the errno of an open that failed (the stream
 // is then in its failed state, as std::ifstream would be); `size()` is the size of the file

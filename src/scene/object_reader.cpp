@@ -72,18 +72,14 @@ MaterialDesc collider_material(double shell) {
 // beside them is refused.
 void read_shading(YamlMap& map, ObjectDesc& object) {
   const std::string shading = map.string("shading", "smooth");
-  if (shading == "smooth") {
-    object.shading = Shading::kSmooth;
-  } else if (shading == "flat") {
-    object.shading = Shading::kFlat;
-  } else if (shading == "auto") {
-    object.shading = Shading::kAuto;
-  } else {
+  const std::optional<Shading> named = shading_named(shading);
+  if (!named) {
     throw_user_error(map.loc("shading"),
                      "'{}' must be smooth, flat or auto (smooth but for edges sharper than "
                      "'sharp_angle'); got '{}'",
                      map.path("shading"), shading);
   }
+  object.shading = *named;
   if (map.has("sharp_angle")) {
     object.sharp_angle = map.number("sharp_angle", kDefaultSharpAngle);
     if (!(object.sharp_angle > 0.0 && object.sharp_angle < 180.0) ||
